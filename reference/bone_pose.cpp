@@ -1,0 +1,61 @@
+// bone_pose.cpp — see bone_pose.h.
+#include "bone_pose.h"
+
+#include <cmath>
+#include <vector>
+
+namespace vgc {
+
+std::array<double, 4> quat_multiply(const std::array<double, 4>& a, const std::array<double, 4>& b) {
+  const double ax = a[0], ay = a[1], az = a[2], aw = a[3];
+  const double bx = b[0], by = b[1], bz = b[2], bw = b[3];
+  return {aw * bx + ax * bw + ay * bz - az * by, aw * by - ax * bz + ay * bw + az * bx,
+          aw * bz + ax * by - ay * bx + az * bw, aw * bw - ax * bx - ay * by - az * bz};
+}
+
+std::array<double, 4> quat_normalize(const std::array<double, 4>& q) {
+  const double n = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
+  if (!(n > 0) || !std::isfinite(n)) return {0, 0, 0, 1};
+  std::array<double, 4> r{q[0] / n, q[1] / n, q[2] / n, q[3] / n};
+  if (r[3] < 0)
+    for (double& c : r) c = -c;
+  return r;
+}
+
+std::array<double, 3> quat_rotate(const std::array<double, 4>& q, const std::array<double, 3>& v) {
+  const std::array<double, 4> p{v[0], v[1], v[2], 0};
+  const std::array<double, 4> conj{-q[0], -q[1], -q[2], q[3]};
+  const auto r = quat_multiply(quat_multiply(q, p), conj);
+  return {r[0], r[1], r[2]};
+}
+
+std::map<std::uint16_t, BonePose> bone_world_poses(const Node& node) {
+  std::map<std::uint16_t, BonePose> poses;
+  const auto& bones = node.bones();
+  for (const auto& [id, unused] : bones) {
+    // Walk up to the nearest ancestor already posed (or a root), then come
+    // back down. The forest invariant bounds the walk by the bone count.
+    std::vector<std::uint16_t> chain;
+    for (std::uint16_t b = id; bones.count(b) && !poses.count(b) && chain.size() <= bones.size();
+         b = bones.at(b).parent)
+      chain.push_back(b);
+    for (auto it = chain.rbegin(); it != chain.rend(); ++it) {
+      const Bone& bone = bones.at(*it);
+      BonePose pose;
+      auto parent = poses.find(bone.parent);
+      if (parent == poses.end() || !bones.count(bone.parent)) {
+        pose.pos = bone.pos;
+        pose.rot = quat_normalize(bone.rot);
+      } else {
+        const BonePose& P = parent->second;
+        pose.rot = quat_normalize(quat_multiply(P.rot, quat_normalize(bone.rot)));
+        const auto d = quat_rotate(P.rot, bone.pos);
+        pose.pos = {P.pos[0] + d[0], P.pos[1] + d[1], P.pos[2] + d[2]};
+      }
+      poses[*it] = pose;
+    }
+  }
+  return poses;
+}
+
+}  // namespace vgc

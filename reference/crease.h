@@ -1,0 +1,37 @@
+// crease.h — effective creases after interpretation.
+//
+// Spec: 000 section 2.6.2; README "Crease values" and the corner-to-edge rule.
+//
+// A crease setting is a constant or a named layer. The layer "must be of type
+// VN_G_LAYER_VERTEX_UINT32 for vertex creases, and
+// VN_G_LAYER_POLYGON_CORNER_UINT32 for edges". Edge creases: "each corner
+// holds the crease data for the edge that starts in that corner", the edge
+// from corner i to corner i+1, wrapping to 0 (a triangle's corner 2 wraps).
+//
+// Decision: a setting that names no layer, or a layer of another type, falls
+// back to its constant def_crease, so every vertex and edge always has a
+// crease. Names are resolved when read, so a crease layer may be created,
+// destroyed or re-typed after the crease names it.
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <utility>
+
+#include "node.h"
+
+namespace vgc {
+
+inline constexpr std::uint32_t kCreaseSmooth = 0;
+inline constexpr std::uint32_t kCreaseMax = 0xFFFFFFFFu;
+
+// Crease of a live vertex. Precondition: `vertex_id` is live.
+std::uint32_t vertex_crease(const Node& node, std::uint32_t vertex_id);
+// Crease of the edge starting at `corner` of a live polygon. Precondition:
+// the polygon is live and corner < its corner count (3 or 4).
+std::uint32_t edge_crease(const Node& node, std::uint32_t polygon_id, int corner);
+
+// Number of used corners of a polygon slot: 3 or 4.
+int corner_count(const Slot& polygon);
+
+}  // namespace vgc

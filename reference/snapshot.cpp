@@ -1,0 +1,90 @@
+// snapshot.cpp — see snapshot.h.
+#include "snapshot.h"
+
+#include "bone_pose.h"
+#include "crease.h"
+#include "number_text.h"
+
+namespace vgc {
+namespace {
+
+std::string u32(std::uint32_t v) { return format_uint(v, 32); }
+std::string u16(std::uint16_t v) { return format_uint(v, 16); }
+
+// The values one slot of `type` holds, space-separated (2.6.1 Table 2-1:
+// "Values per Index").
+std::string slot_values(LayerType type, const Slot& s) {
+  std::string out;
+  auto reals = [&](int n) {
+    for (int i = 0; i < n; ++i) out += " " + format_f64(s.r[i]);
+  };
+  auto uints = [&](int n, int bits) {
+    for (int i = 0; i < n; ++i) out += " " + format_uint(s.u[i], bits);
+  };
+  switch (type) {
+    case LayerType::VertexXyz: reals(3); break;
+    case LayerType::VertexUint32: uints(1, 32); break;
+    case LayerType::VertexReal: reals(1); break;
+    case LayerType::PolygonCornerUint32: uints(4, 32); break;
+    case LayerType::PolygonCornerReal: reals(4); break;
+    case LayerType::PolygonFaceUint8: uints(1, 8); break;
+    case LayerType::PolygonFaceUint32: uints(1, 32); break;
+    case LayerType::PolygonFaceReal: reals(1); break;
+  }
+  return out;
+}
+
+}  // namespace
+
+std::string print_snapshot(const Node& node) {
+  std::string out = "vgc-snapshot 1\n";
+  for (const auto& [id, layer] : node.layers()) {
+    out += "layer " + u16(id) + " " + format_quoted(layer.name) + " " +
+           std::string(layer_type_name(static_cast<std::uint8_t>(layer.type))) + " " +
+           u32(layer.def_uint) + " " + format_f64(layer.def_real) + " " +
+           (!layer.subscription ? "-" : *layer.subscription == RealFormat::Real32 ? "REAL32" : "REAL64") +
+           "\n";
+  }
+  out += "crease_vertex " + format_quoted(node.vertex_crease().layer) + " " +
+         u32(node.vertex_crease().def_crease) + "\n";
+  out += "crease_edge " + format_quoted(node.edge_crease().layer) + " " +
+         u32(node.edge_crease().def_crease) + "\n";
+  for (const auto& [id, slot] : node.vertices())
+    out += "vertex " + u32(id) + slot_values(LayerType::VertexXyz, slot) + "\n";
+  for (const auto& [id, slot] : node.polygons())
+    out += "polygon " + u32(id) + slot_values(LayerType::PolygonCornerUint32, slot) + "\n";
+  for (const auto& [lid, layer] : node.layers()) {
+    if (lid == Node::kVertexLayer || lid == Node::kPolygonLayer) continue;
+    for (const auto& [element, slot] : layer.slots)
+      out += "slot " + u16(lid) + " " + u32(element) + slot_values(layer.type, slot) + "\n";
+  }
+  for (const auto& [id, b] : node.bones()) {
+    out += "bone " + u16(id) + " " + format_quoted(b.weight) + " " + format_quoted(b.reference) + " " +
+           u16(b.parent);
+    for (double v : b.pos) out += " " + format_f64(v);
+    out += " " + format_quoted(b.pos_label);
+    for (double v : b.rot) out += " " + format_f64(v);
+    out += " " + format_quoted(b.rot_label) + "\n";
+  }
+  out += "end\n";
+  return out;
+}
+
+std::string print_derived(const Node& node) {
+  std::string out = "vgc-derived 1\n";
+  for (const auto& [id, slot] : node.vertices())
+    out += "vertex_crease " + u32(id) + " " + u32(vertex_crease(node, id)) + "\n";
+  for (const auto& [id, slot] : node.polygons())
+    for (int c = 0; c < corner_count(slot); ++c)
+      out += "edge_crease " + u32(id) + " " + std::to_string(c) + " " + u32(edge_crease(node, id, c)) + "\n";
+  for (const auto& [id, pose] : bone_world_poses(node)) {
+    out += "bone_pose " + u16(id);
+    for (double v : pose.pos) out += " " + format_f64(v);
+    for (double v : pose.rot) out += " " + format_f64(v);
+    out += "\n";
+  }
+  out += "end\n";
+  return out;
+}
+
+}  // namespace vgc
