@@ -8,13 +8,14 @@
 #include <fmt/core.h>
 
 #include <fstream>
+#include <iostream>
 #include <memory>
 #include <sstream>
 
 #include "command_text.h"
-#include "commands.h"
 #include "node.h"
 #include "snapshot.h"
+#include "subcommand.h"
 
 namespace vgc::cli {
 namespace {
@@ -66,8 +67,6 @@ int run_apply(const ApplyOptions& o) {
   return o.strict && rejected > 0 ? 1 : 0;
 }
 
-}  // namespace
-
 void add_apply(CLI::App& app, int* exit_code) {
   auto opts = std::make_shared<ApplyOptions>();
   CLI::App* sub = app.add_subcommand("apply", "Run a command file on a fresh reference node and print the result");
@@ -76,5 +75,9 @@ void add_apply(CLI::App& app, int* exit_code) {
   sub->add_flag("--strict", opts->strict, "Exit 1 when any command is rejected");
   sub->callback([opts, exit_code] { *exit_code = run_apply(*opts); });
 }
+
+const Subcommand kApply{add_apply};
+
+}  // namespace
 
 }  // namespace vgc::cli

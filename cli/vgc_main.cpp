@@ -1,14 +1,32 @@
-// vgc_main.cpp — the vgc command line: certify, apply, serve, replay, fuzz, ...
-// Each subcommand lives in its own cmd_*.cpp; this file only wires them up.
+// vgc_main.cpp — the vgc command line. Each subcommand lives in its own
+// cmd_*.cpp and registers itself (subcommand.h); this file only runs them.
 #include <CLI/CLI.hpp>
 
-#include "commands.h"
+#include <vector>
+
+#include "subcommand.h"
+
+namespace vgc::cli {
+namespace {
+std::vector<AddSubcommand>& registry() {
+  static std::vector<AddSubcommand> r;
+  return r;
+}
+}  // namespace
+
+Subcommand::Subcommand(AddSubcommand add) { registry().push_back(add); }
+
+void add_all_subcommands(CLI::App& app, int* exit_code) {
+  for (AddSubcommand add : registry()) add(app, exit_code);
+}
+
+}  // namespace vgc::cli
 
 int main(int argc, char** argv) {
   CLI::App app{"vgc: the Verse geometry conformance and fuzz suite"};
   app.require_subcommand(1);
   int exit_code = 0;
-  vgc::cli::add_apply(app, &exit_code);
+  vgc::cli::add_all_subcommands(app, &exit_code);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

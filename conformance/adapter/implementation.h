@@ -1,0 +1,67 @@
+// implementation.h — the adapter boundary as the suite sees it.
+//
+// Spec: every command of ../shared/spec/README.md, judged by the clauses of
+// conformance/clauses (docs/clauses.md). docs/adapters.md is the contract for
+// the two ways in from outside: exec:CMD (a program speaking the text
+// command language on stdin/stdout) and plugin:PATH (the C ABI of
+// vgc_plugin.h). "reference" is our own node, in process.
+//
+// Rationale: properties talk to an implementation only through this
+// interface, so one property certifies every route the same way. Every
+// call reports how the call itself went (CallStatus) separately from what
+// the implementation answered, so a crash or a hang of the implementation
+// under test is a result the suite records, never an exception or an abort.
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include "command.h"
+
+namespace vgc {
+
+enum class CallStatus {
+  Ok,             // the implementation answered
+  Crash,          // it died (signal or exit) while answering
+  Timeout,        // it did not answer within the time limit
+  ProtocolError,  // it answered something the contract does not allow
+};
+const char* call_status_name(CallStatus s);
+
+struct Answer {
+  CallStatus status = CallStatus::Ok;
+  bool applied = false;  // meaningful when status == Ok
+  std::string reason;    // the reason name it gave for a rejection ("NO_SUCH_LAYER", ...)
+  std::string detail;    // for a non-Ok status: what happened, for the report
+};
+
+// The text documents of snapshot.h, as the implementation printed them.
+struct Document {
+  CallStatus status = CallStatus::Ok;
+  std::string text;      // whole document including the final "end\n"
+  std::string detail;
+};
+
+class Implementation {
+ public:
+  virtual ~Implementation() = default;
+  // "reference", "exec:./my-host --serve", "plugin:/path/libx.so".
+  virtual std::string name() const = 0;
+  // Starts over with a fresh node (restarting a crashed process if need be).
+  virtual Answer reset() = 0;
+  virtual Answer apply(const Command& c) = 0;
+  virtual Document snapshot() = 0;
+  virtual Document derived() = 0;
+};
+
+struct OpenOptions {
+  double timeout_seconds = 5.0;  // per call, for out-of-process implementations
+  bool isolate_plugin = true;    // plugin: run it in a child process (vgc serve)
+};
+
+// Opens "reference", "exec:CMD" or "plugin:PATH". Returns nullptr and sets
+// *error for a malformed spec or one that cannot be started.
+std::unique_ptr<Implementation> open_implementation(const std::string& spec, const OpenOptions& options,
+                                                    std::string* error);
+
+}  // namespace vgc

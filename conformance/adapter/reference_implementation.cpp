@@ -1,0 +1,36 @@
+// reference_implementation.cpp — see reference_implementation.h.
+#include "reference_implementation.h"
+
+#include "snapshot.h"
+
+namespace vgc {
+
+const char* call_status_name(CallStatus s) {
+  switch (s) {
+    case CallStatus::Ok: return "ok";
+    case CallStatus::Crash: return "crash";
+    case CallStatus::Timeout: return "timeout";
+    case CallStatus::ProtocolError: return "protocol-error";
+  }
+  return "?";
+}
+
+Answer ReferenceImplementation::reset() {
+  node_ = Node{};
+  Answer a;
+  a.applied = true;
+  return a;
+}
+
+Answer ReferenceImplementation::apply(const Command& c) {
+  Answer a;
+  const Reason r = node_.apply(c);
+  a.applied = r == Reason::Ok;
+  if (!a.applied) a.reason = std::string(reason_name(r));
+  return a;
+}
+
+Document ReferenceImplementation::snapshot() { return {CallStatus::Ok, print_snapshot(node_), {}}; }
+Document ReferenceImplementation::derived() { return {CallStatus::Ok, print_derived(node_), {}}; }
+
+}  // namespace vgc

@@ -1,0 +1,25 @@
+// reference_implementation.h — the reference node behind the adapter boundary.
+// Spec: as node.h. The in-process route ("--impl reference").
+#pragma once
+
+#include <memory>
+
+#include "implementation.h"
+#include "node.h"
+
+namespace vgc {
+
+class ReferenceImplementation final : public Implementation {
+ public:
+  std::string name() const override { return "reference"; }
+  Answer reset() override;
+  Answer apply(const Command& c) override;
+  Document snapshot() override;
+  Document derived() override;
+  const Node& node() const { return node_; }
+
+ private:
+  Node node_;
+};
+
+}  // namespace vgc

@@ -1,0 +1,51 @@
+/* vgc_plugin.h — the C ABI of a vgc plugin (plugin:PATH), version 1.
+ *
+ * Spec: docs/adapters.md "plugin:PATH". A plugin is a shared library that
+ * exports one function, vgc_plugin_v1(), returning a table of functions.
+ * Commands and documents are the text forms of docs/commands.md, so a
+ * plugin and an exec program answer alike. All strings are NUL-terminated
+ * UTF-8/bytes; the plugin owns what it returns until the next call on the
+ * same node. Plain C, no exceptions across the boundary.
+ */
+#ifndef VGC_PLUGIN_H
+#define VGC_PLUGIN_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+#define VGC_PLUGIN_ABI_VERSION 1u
+
+typedef struct vgc_node vgc_node; /* opaque, the plugin's own */
+
+/* Results of apply. */
+#define VGC_APPLIED 1
+#define VGC_REJECTED 0
+#define VGC_MALFORMED (-1)
+
+typedef struct vgc_plugin_v1_table {
+  uint32_t abi_version; /* VGC_PLUGIN_ABI_VERSION */
+  const char* name;     /* e.g. "acme-host 2.3" */
+  vgc_node* (*create)(void);
+  void (*destroy)(vgc_node* node);
+  /* One command line of the text language, without the newline. Returns
+   * VGC_APPLIED, VGC_REJECTED (and sets *reason to a reason name such as
+   * "NO_SUCH_LAYER"), or VGC_MALFORMED (and sets *reason to a message). */
+  int (*apply)(vgc_node* node, const char* line, const char** reason);
+  /* The snapshot and derived documents, each ending in "end\n". */
+  const char* (*snapshot)(vgc_node* node);
+  const char* (*derived)(vgc_node* node);
+} vgc_plugin_v1_table;
+
+/* The one symbol a plugin exports. */
+typedef const vgc_plugin_v1_table* (*vgc_plugin_v1_fn)(void);
+#define VGC_PLUGIN_ENTRY "vgc_plugin_v1"
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* VGC_PLUGIN_H */
