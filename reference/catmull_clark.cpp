@@ -1,0 +1,248 @@
+// catmull_clark.cpp — see catmull_clark.h.
+#include "catmull_clark.h"
+
+#include <cstdint>
+#include <unordered_map>
+
+#include "crease_sharpness.h"
+
+namespace vgc {
+namespace {
+
+using Vec3 = std::array<double, 3>;
+
+std::uint64_t edge_key(int a, int b) {
+  if (a > b) std::swap(a, b);
+  return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) | static_cast<std::uint32_t>(b);
+}
+
+void add_scaled(Vec3& acc, const Vec3& p, double w) {
+  acc[0] += w * p[0];
+  acc[1] += w * p[1];
+  acc[2] += w * p[2];
+}
+
+// Incident edges and faces of every vertex, in no particular order.
+struct Incidence {
+  std::vector<std::vector<int>> vertex_edges;
+  std::vector<std::vector<int>> vertex_faces;
+  std::vector<std::vector<int>> edge_faces;
+};
+
+Incidence incidence_of(const SubdivisionLevel& l) {
+  Incidence in;
+  in.vertex_edges.resize(static_cast<std::size_t>(l.vertex_count()));
+  in.vertex_faces.resize(static_cast<std::size_t>(l.vertex_count()));
+  in.edge_faces.resize(static_cast<std::size_t>(l.edge_count()));
+  for (int e = 0; e < l.edge_count(); ++e)
+    for (int end = 0; end < 2; ++end) in.vertex_edges[static_cast<std::size_t>(l.edges[e][end])].push_back(e);
+  for (int f = 0; f < l.face_count(); ++f)
+    for (int c = 0; c < l.face_sizes[f]; ++c) {
+      const int corner = l.face_offsets[f] + c;
+      in.vertex_faces[static_cast<std::size_t>(l.face_vertices[corner])].push_back(f);
+      in.edge_faces[static_cast<std::size_t>(l.face_edges[corner])].push_back(f);
+    }
+  return in;
+}
+
+int other_end(const std::array<int, 2>& e, int v) { return e[0] == v ? e[1] : e[0]; }
+
+}  // namespace
+
+void build_level_edges(SubdivisionLevel* level) {
+  SubdivisionLevel& l = *level;
+  std::unordered_map<std::uint64_t, int> index;
+  l.edges.clear();
+  l.edge_face_count.clear();
+  l.face_edges.assign(l.face_vertices.size(), -1);
+  for (int f = 0; f < l.face_count(); ++f) {
+    const int n = l.face_sizes[f], o = l.face_offsets[f];
+    for (int c = 0; c < n; ++c) {
+      const int a = l.face_vertices[o + c], b = l.face_vertices[o + (c + 1) % n];
+      auto [it, inserted] = index.emplace(edge_key(a, b), l.edge_count());
+      if (inserted) {
+        l.edges.push_back({a, b});
+        l.edge_face_count.push_back(0);
+      }
+      l.face_edges[o + c] = it->second;
+      ++l.edge_face_count[static_cast<std::size_t>(it->second)];
+    }
+  }
+}
+
+bool build_base_level(const MeshArrays& mesh, SubdivisionLevel* out) {
+  const int nv = mesh.vertex_count();
+  if (static_cast<int>(mesh.vertex_creases.size()) != nv) return false;
+  if (mesh.face_offsets.size() != mesh.face_sizes.size()) return false;
+  if (mesh.corner_edge_creases.size() != mesh.face_vertices.size()) return false;
+  SubdivisionLevel l;
+  l.positions = mesh.positions;
+  for (std::uint32_t c : mesh.vertex_creases) l.vertex_sharpness.push_back(crease_to_sharpness(c));
+  l.face_sizes = mesh.face_sizes;
+  int offset = 0;
+  for (int f = 0; f < mesh.face_count(); ++f) {
+    const int n = mesh.face_sizes[f];
+    if (n < 3 || mesh.face_offsets[f] < 0 ||
+        mesh.face_offsets[f] + n > static_cast<int>(mesh.face_vertices.size()))
+      return false;
+    l.face_offsets.push_back(offset);
+    for (int c = 0; c < n; ++c) {
+      const int v = mesh.face_vertices[mesh.face_offsets[f] + c];
+      if (v < 0 || v >= nv) return false;
+      for (int d = 0; d < c; ++d)
+        if (mesh.face_vertices[mesh.face_offsets[f] + d] == v) return false;  // repeated corner
+      l.face_vertices.push_back(v);
+    }
+    offset += n;
+  }
+  build_level_edges(&l);
+  // Shared edges: the maximum of the creases stored for them.
+  std::vector<std::vector<std::uint32_t>> stored(l.edges.size());
+  for (int f = 0; f < mesh.face_count(); ++f)
+    for (int c = 0; c < mesh.face_sizes[f]; ++c)
+      stored[static_cast<std::size_t>(l.face_edges[l.face_offsets[f] + c])].push_back(
+          mesh.corner_edge_creases[static_cast<std::size_t>(mesh.face_offsets[f] + c)]);
+  for (int e = 0; e < l.edge_count(); ++e)
+    l.edge_sharpness.push_back(edge_sharpness_for(combine_edge_creases(stored[e]), l.edge_face_count[e]));
+  l.face_hole.assign(l.face_sizes.size(), 0);
+  *out = std::move(l);
+  return true;
+}
+
+SubdivisionLevel refine_catmull_clark(const SubdivisionLevel& p, const CatmullClarkFaults& faults) {
+  const int nv = p.vertex_count(), nf = p.face_count(), ne = p.edge_count();
+  const Incidence in = incidence_of(p);
+  SubdivisionLevel c;
+  c.positions.assign(static_cast<std::size_t>(nv + nf + ne), Vec3{0, 0, 0});
+  c.vertex_sharpness.assign(c.positions.size(), kSharpnessSmooth);
+  for (int v = 0; v < nv; ++v) c.child_of_parent_vertex.push_back(v);
+  for (int f = 0; f < nf; ++f) c.child_of_parent_face.push_back(nv + f);
+  for (int e = 0; e < ne; ++e) c.child_of_parent_edge.push_back(nv + nf + e);
+
+  // Face points: the average of the face's vertices.
+  for (int f = 0; f < nf; ++f) {
+    Vec3& fp = c.positions[static_cast<std::size_t>(nv + f)];
+    const double w = 1.0 / p.face_sizes[f];
+    for (int k = 0; k < p.face_sizes[f]; ++k) add_scaled(fp, p.positions[p.face_vertices[p.face_offsets[f] + k]], w);
+  }
+
+  // Edge points.
+  for (int e = 0; e < ne; ++e) {
+    const float s = p.edge_sharpness[e];
+    const auto& faces = in.edge_faces[e];
+    double vw = 0.25;
+    double fw = faces.size() == 2 ? 0.25 : 0.5 / static_cast<double>(faces.size());
+    if (is_sharp(s)) {
+      if (s > 1.0f) {  // child edges still sharp: the crease rule
+        vw = 0.5;
+        fw = 0.0;
+      } else if (!faults.no_fractional_blend) {  // s in (0, 1]: blend by s
+        const double pw = s, cw = 1.0f - pw;
+        vw = pw * 0.5 + cw * vw;
+        fw *= cw;
+      }
+    }
+    Vec3& ep = c.positions[static_cast<std::size_t>(nv + nf + e)];
+    for (int f : faces) add_scaled(ep, c.positions[static_cast<std::size_t>(nv + f)], fw);
+    add_scaled(ep, p.positions[p.edges[e][0]], vw);
+    add_scaled(ep, p.positions[p.edges[e][1]], vw);
+  }
+
+  // Vertex points.
+  for (int v = 0; v < nv; ++v) {
+    const auto& vedges = in.vertex_edges[v];
+    const auto& vfaces = in.vertex_faces[v];
+    std::vector<float> es, ces;
+    bool on_boundary = false;
+    for (int e : vedges) {
+      es.push_back(p.edge_sharpness[e]);
+      ces.push_back(subdivide_sharpness(p.edge_sharpness[e]));
+      on_boundary = on_boundary || p.edge_face_count[e] == 1;
+    }
+    const float vs = p.vertex_sharpness[v], cvs = subdivide_sharpness(vs);
+    c.vertex_sharpness[static_cast<std::size_t>(v)] = cvs;
+    CreaseRule prule = determine_vertex_rule(vs, es), crule = determine_vertex_rule(cvs, ces);
+    if (vedges.empty() || (faults.pin_boundary_vertices && on_boundary)) prule = crule = CreaseRule::Corner;
+
+    Vec3 acc{0, 0, 0};
+    auto apply_rule = [&](CreaseRule rule, const std::vector<float>& sharp, double weight) {
+      if (rule == CreaseRule::Smooth || rule == CreaseRule::Dart) {
+        const double n = static_cast<double>(vedges.size());
+        const double fw = 1.0 / (n * n);
+        for (int f : vfaces) add_scaled(acc, c.positions[static_cast<std::size_t>(nv + f)], weight * fw);
+        for (int e : vedges) add_scaled(acc, p.positions[other_end(p.edges[e], v)], weight * fw);
+        add_scaled(acc, p.positions[v], weight * ((n - 2.0) / n));
+      } else if (rule == CreaseRule::Crease) {
+        const double ew = faults.wrong_crease_weights ? 1.0 / 6.0 : 0.125;
+        for (std::size_t i = 0; i < vedges.size(); ++i)
+          if (is_sharp(sharp[i])) add_scaled(acc, p.positions[other_end(p.edges[vedges[i]], v)], weight * ew);
+        add_scaled(acc, p.positions[v], weight * (1.0 - 2.0 * ew));
+      } else {
+        add_scaled(acc, p.positions[v], weight);
+      }
+    };
+    if (prule == crule) {
+      apply_rule(prule, es, 1.0);
+    } else {
+      const double w = faults.no_fractional_blend ? 0.0 : fractional_weight_at_vertex(vs, cvs, es);
+      if (prule == CreaseRule::Smooth || prule == CreaseRule::Dart)  // Sdc: a smooth parent is never blended
+        apply_rule(prule, es, 1.0);
+      else {
+        apply_rule(prule, es, w);
+        apply_rule(crule, ces, 1.0 - w);
+      }
+    }
+    c.positions[static_cast<std::size_t>(v)] = acc;
+  }
+
+  // Child faces.
+  for (int f = 0; f < nf; ++f) {
+    const int n = p.face_sizes[f], o = p.face_offsets[f];
+    const int fp = nv + f;
+    c.first_child_of_parent_face.push_back(c.face_count());
+    for (int i = 0; i < n; ++i) {
+      const int vi = p.face_vertices[o + i];
+      const int ei = nv + nf + p.face_edges[o + i];
+      const int eprev = nv + nf + p.face_edges[o + (i + n - 1) % n];
+      std::array<int, 4> q{vi, ei, fp, eprev};
+      if (n == 4) {  // regular: the child of parent vertex i keeps index i (spec 001)
+        std::array<int, 4> r{};
+        for (int k = 0; k < 4; ++k) r[static_cast<std::size_t>((i + k) % 4)] = q[static_cast<std::size_t>(k)];
+        q = r;
+      }
+      c.face_offsets.push_back(static_cast<int>(c.face_vertices.size()));
+      c.face_sizes.push_back(4);
+      c.face_vertices.insert(c.face_vertices.end(), q.begin(), q.end());
+      c.parent_face.push_back(f);
+      c.face_hole.push_back(p.face_hole[f]);
+    }
+  }
+  build_level_edges(&c);
+
+  // Child edge sharpness: each half of a parent edge inherits the parent's
+  // subdivided sharpness; edges inside a parent face are smooth.
+  std::unordered_map<std::uint64_t, int> cindex;
+  for (int e = 0; e < c.edge_count(); ++e) cindex.emplace(edge_key(c.edges[e][0], c.edges[e][1]), e);
+  c.edge_sharpness.assign(c.edges.size(), kSharpnessSmooth);
+  for (int e = 0; e < ne; ++e) {
+    const float cs = subdivide_sharpness(p.edge_sharpness[e]);
+    for (int end = 0; end < 2; ++end) {
+      auto it = cindex.find(edge_key(p.edges[e][end], nv + nf + e));
+      if (it != cindex.end()) c.edge_sharpness[static_cast<std::size_t>(it->second)] = cs;
+    }
+  }
+  return c;
+}
+
+std::vector<SubdivisionLevel> subdivide_catmull_clark(const MeshArrays& mesh, int levels,
+                                                      const CatmullClarkFaults& faults) {
+  std::vector<SubdivisionLevel> out;
+  if (levels < 0 || levels > 6) return out;
+  SubdivisionLevel base;
+  if (!build_base_level(mesh, &base)) return out;
+  out.push_back(std::move(base));
+  for (int k = 1; k <= levels; ++k) out.push_back(refine_catmull_clark(out.back(), faults));
+  return out;
+}
+
+}  // namespace vgc
