@@ -1,0 +1,180 @@
+// loop_subdivision.cpp — see loop_subdivision.h.
+#include "loop_subdivision.h"
+
+#include <cmath>
+#include <cstdint>
+#include <unordered_map>
+
+#include "crease_sharpness.h"
+
+namespace vgc {
+namespace {
+
+using Vec3 = std::array<double, 3>;
+
+void add_scaled(Vec3& acc, const Vec3& p, double w) {
+  acc[0] += w * p[0];
+  acc[1] += w * p[1];
+  acc[2] += w * p[2];
+}
+
+std::uint64_t edge_key(int a, int b) {
+  if (a > b) std::swap(a, b);
+  return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) | static_cast<std::uint32_t>(b);
+}
+
+int other_end(const std::array<int, 2>& e, int v) { return e[0] == v ? e[1] : e[0]; }
+
+// The vertex of triangle f that is on neither end of edge e.
+int opposite_vertex(const SubdivisionLevel& l, int f, int e) {
+  for (int k = 0; k < 3; ++k) {
+    const int v = l.face_vertices[l.face_offsets[f] + k];
+    if (v != l.edges[e][0] && v != l.edges[e][1]) return v;
+  }
+  return -1;
+}
+
+// Loop's smooth vertex weights (Sdc Loop scheme): {vertex weight, neighbour weight}.
+std::array<double, 2> smooth_vertex_weights(int valence, bool warren) {
+  if (warren) {
+    const double e = valence == 3 ? 3.0 / 16.0 : 3.0 / (8.0 * valence);
+    return {1.0 - e * valence, e};
+  }
+  if (valence == 6) return {0.625, 0.0625};
+  const double n = valence;
+  const double inv = 1.0 / n;
+  const double cos_theta = std::cos(M_PI * 2.0 * inv);
+  const double beta = 0.25 * cos_theta + 0.375;
+  const double e = (0.625 - beta * beta) * inv;
+  return {1.0 - e * n, e};
+}
+
+}  // namespace
+
+SubdivisionLevel refine_loop(const SubdivisionLevel& p, const LoopFaults& faults) {
+  for (int n : p.face_sizes)
+    if (n != 3) return {};
+  const int nv = p.vertex_count(), nf = p.face_count(), ne = p.edge_count();
+  std::vector<std::vector<int>> vertex_edges(static_cast<std::size_t>(nv)), edge_faces(static_cast<std::size_t>(ne));
+  std::vector<int> vertex_face_count(static_cast<std::size_t>(nv), 0);
+  for (int e = 0; e < ne; ++e)
+    for (int end = 0; end < 2; ++end) vertex_edges[static_cast<std::size_t>(p.edges[e][end])].push_back(e);
+  for (int f = 0; f < nf; ++f)
+    for (int k = 0; k < 3; ++k) {
+      ++vertex_face_count[static_cast<std::size_t>(p.face_vertices[p.face_offsets[f] + k])];
+      edge_faces[static_cast<std::size_t>(p.face_edges[p.face_offsets[f] + k])].push_back(f);
+    }
+
+  SubdivisionLevel c;
+  c.positions.assign(static_cast<std::size_t>(nv + ne), Vec3{0, 0, 0});
+  c.vertex_sharpness.assign(c.positions.size(), kSharpnessSmooth);
+  for (int v = 0; v < nv; ++v) c.child_of_parent_vertex.push_back(v);
+  for (int e = 0; e < ne; ++e) c.child_of_parent_edge.push_back(nv + e);
+
+  // Edge points.
+  for (int e = 0; e < ne; ++e) {
+    const float s = p.edge_sharpness[e];
+    const auto& faces = edge_faces[e];
+    double vw = 0.375;
+    double fw = faces.size() == 2 ? 0.125 : 0.125 * 2.0 / static_cast<double>(faces.size());
+    if (is_sharp(s)) {
+      if (s > 1.0f) {
+        vw = 0.5;
+        fw = 0.0;
+      } else if (!faults.no_fractional_blend) {
+        const double pw = s, cw = 1.0f - pw;
+        vw = pw * 0.5 + cw * vw;
+        fw *= cw;
+      }
+    }
+    Vec3& ep = c.positions[static_cast<std::size_t>(nv + e)];
+    add_scaled(ep, p.positions[p.edges[e][0]], vw);
+    add_scaled(ep, p.positions[p.edges[e][1]], vw);
+    for (int f : faces) add_scaled(ep, p.positions[opposite_vertex(p, f, e)], fw);
+  }
+
+  // Vertex points.
+  for (int v = 0; v < nv; ++v) {
+    const auto& vedges = vertex_edges[v];
+    std::vector<float> es, ces;
+    for (int e : vedges) {
+      es.push_back(p.edge_sharpness[e]);
+      ces.push_back(subdivide_sharpness(p.edge_sharpness[e]));
+    }
+    const float vs = p.vertex_sharpness[v], cvs = subdivide_sharpness(vs);
+    c.vertex_sharpness[static_cast<std::size_t>(v)] = cvs;
+    CreaseRule prule = determine_vertex_rule(vs, es), crule = determine_vertex_rule(cvs, ces);
+    if (vedges.empty()) prule = crule = CreaseRule::Corner;
+    Vec3 acc{0, 0, 0};
+    auto apply_rule = [&](CreaseRule rule, const std::vector<float>& sharp, double weight) {
+      if (rule == CreaseRule::Smooth || rule == CreaseRule::Dart) {
+        const auto w = smooth_vertex_weights(vertex_face_count[static_cast<std::size_t>(v)], faults.warren_weights);
+        for (int e : vedges) add_scaled(acc, p.positions[other_end(p.edges[e], v)], weight * w[1]);
+        add_scaled(acc, p.positions[v], weight * w[0]);
+      } else if (rule == CreaseRule::Crease) {
+        for (std::size_t i = 0; i < vedges.size(); ++i)
+          if (is_sharp(sharp[i])) add_scaled(acc, p.positions[other_end(p.edges[vedges[i]], v)], weight * 0.125);
+        add_scaled(acc, p.positions[v], weight * 0.75);
+      } else {
+        add_scaled(acc, p.positions[v], weight);
+      }
+    };
+    if (prule == crule || prule == CreaseRule::Smooth || prule == CreaseRule::Dart) {
+      apply_rule(prule, es, 1.0);
+    } else {
+      const double w = faults.no_fractional_blend ? 0.0 : fractional_weight_at_vertex(vs, cvs, es);
+      apply_rule(prule, es, w);
+      apply_rule(crule, ces, 1.0 - w);
+    }
+    c.positions[static_cast<std::size_t>(v)] = acc;
+  }
+
+  // Child triangles T0..T3 (triangle_tree.h), oriented as the parent.
+  for (int f = 0; f < nf; ++f) {
+    const int o = p.face_offsets[f];
+    std::array<int, 3> vc{}, sub{};
+    for (int k = 0; k < 3; ++k) {
+      vc[static_cast<std::size_t>(k)] = p.face_vertices[o + k];
+      sub[static_cast<std::size_t>(k)] = nv + p.face_edges[o + (k + 1) % 3];  // edge k is opposite vertex k
+    }
+    c.first_child_of_parent_face.push_back(c.face_count());
+    std::array<std::array<int, 3>, 4> kids{};
+    kids[0] = {sub[0], sub[1], sub[2]};
+    for (int j = 0; j < 3; ++j)
+      kids[static_cast<std::size_t>(j + 1)] = {vc[static_cast<std::size_t>(j)], sub[static_cast<std::size_t>((j + 2) % 3)],
+                                               sub[static_cast<std::size_t>((j + 1) % 3)]};
+    for (const auto& t : kids) {
+      c.face_offsets.push_back(static_cast<int>(c.face_vertices.size()));
+      c.face_sizes.push_back(3);
+      c.face_vertices.insert(c.face_vertices.end(), t.begin(), t.end());
+      c.parent_face.push_back(f);
+      c.face_hole.push_back(p.face_hole[f]);
+    }
+  }
+  build_level_edges(&c);
+  std::unordered_map<std::uint64_t, int> cindex;
+  for (int e = 0; e < c.edge_count(); ++e) cindex.emplace(edge_key(c.edges[e][0], c.edges[e][1]), e);
+  c.edge_sharpness.assign(c.edges.size(), kSharpnessSmooth);
+  for (int e = 0; e < ne; ++e) {
+    const float cs = subdivide_sharpness(p.edge_sharpness[e]);
+    for (int end = 0; end < 2; ++end) {
+      auto it = cindex.find(edge_key(p.edges[e][end], nv + e));
+      if (it != cindex.end()) c.edge_sharpness[static_cast<std::size_t>(it->second)] = cs;
+    }
+  }
+  return c;
+}
+
+std::vector<SubdivisionLevel> subdivide_loop(const MeshArrays& mesh, int levels, const LoopFaults& faults) {
+  std::vector<SubdivisionLevel> out;
+  if (levels < 0 || levels > 6) return out;
+  for (int n : mesh.face_sizes)
+    if (n != 3) return out;
+  SubdivisionLevel base;
+  if (!build_base_level(mesh, &base)) return out;
+  out.push_back(std::move(base));
+  for (int k = 1; k <= levels; ++k) out.push_back(refine_loop(out.back(), faults));
+  return out;
+}
+
+}  // namespace vgc
