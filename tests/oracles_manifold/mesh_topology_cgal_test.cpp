@@ -1,0 +1,330 @@
+// mesh_topology_cgal_test.cpp — reference/mesh_topology against CGAL
+// (oracles/cgal_manifold), field by field for every question both answer,
+// on manifold shapes (renumbered, faces rotated and shuffled), non-manifold
+// edits (fins, bow-ties), non-orientable ones (a flipped face, a Moebius
+// strip), degenerate input and random soups. Plus hand-derived answers for
+// named shapes, so that a fault shared by both sides cannot pass unseen.
+#include <gtest/gtest.h>
+#include <rapidcheck/gtest.h>
+
+#include <algorithm>
+#include <fstream>
+#include <random>
+#include <set>
+#include <sstream>
+#include <string>
+
+#include "cgal_manifold.h"
+#include "command_text.h"
+#include "manifold_shapes.h"
+#include "mesh_arrays.h"
+#include "mesh_topology.h"
+#include "node.h"
+
+namespace vgc {
+namespace {
+
+using test::Faces;
+
+std::string str(const std::vector<int>& v) {
+  std::ostringstream o;
+  for (int x : v) o << x << ' ';
+  return o.str();
+}
+
+// A loop as an undirected cycle: starts at its smallest vertex, then goes
+// towards the smaller of that vertex's two neighbours.
+std::vector<int> undirected(std::vector<int> loop) {
+  std::rotate(loop.begin(), std::min_element(loop.begin(), loop.end()), loop.end());
+  if (loop.size() > 2 && loop.back() < loop[1]) std::reverse(loop.begin() + 1, loop.end());
+  return loop;
+}
+
+// The first disagreement between the reference and CGAL, or "".
+std::string compare(const MeshTopology& r, const CgalManifoldReport& c) {
+  std::ostringstream why;
+  auto fail = [&](const std::string& what) {
+    why << what;
+    return why.str();
+  };
+  if (r.status != c.status) return fail(std::string("status ") + to_string(r.status) + " vs " + to_string(c.status));
+  if (r.bad_face != c.bad_face) return fail("bad_face");
+  if (r.status != MeshStatus::Ok) return "";
+
+  if (r.is_polygon_mesh != c.soup_is_polygon_mesh) return fail("is_polygon_mesh vs is_polygon_soup_a_polygon_mesh");
+
+  std::vector<std::array<int, 3>> nm_edges;
+  for (const MeshEdge& e : r.edges)
+    if (e.use_count > 2) nm_edges.push_back({e.a, e.b, e.use_count});
+  if (nm_edges != c.non_manifold_edges) return fail("non-manifold edges");
+  if (static_cast<int>(nm_edges.size()) != r.non_manifold_edge_count) return fail("non_manifold_edge_count");
+
+  // Topologically non-manifold vertices are always singular for CGAL; with
+  // no orientation conflict (orientable) the two sets and the fan / link
+  // component counts are equal.
+  std::set<int> singular;
+  for (const auto& [v, n] : c.singular_vertices) singular.insert(v);
+  for (int v : r.non_manifold_vertices)
+    if (!singular.count(v)) return fail("reference non-manifold vertex " + std::to_string(v) + " not singular for CGAL");
+  if (r.orientable) {
+    if (std::vector<int>(singular.begin(), singular.end()) != r.non_manifold_vertices)
+      return fail("non-manifold vertices: ref " + str(r.non_manifold_vertices));
+    for (const auto& [v, n] : c.singular_vertices)
+      if (r.vertex_fan_counts[static_cast<std::size_t>(v)] != n) return fail("fan count of vertex " + std::to_string(v));
+  }
+
+  if (r.is_manifold && r.orientable && !c.orientable) return fail("CGAL gave no orientability for a manifold mesh");
+  if (c.orientable && *c.orientable != r.orientable) return fail("orientable");
+  if (c.consistently_oriented && *c.consistently_oriented != r.consistently_oriented) return fail("consistently_oriented");
+
+  if (r.is_manifold && r.orientable && !c.mesh_matches_input) return fail("CGAL built no mesh for a manifold orientable input");
+  if (!c.mesh_matches_input) return "";
+  if (!r.is_manifold) return fail("CGAL built the input unchanged but the reference says non-manifold");
+  if (c.vertex_count - c.isolated_vertex_count != r.used_vertex_count) return fail("used vertex count");
+  if (c.isolated_vertex_count != r.isolated_vertex_count) return fail("isolated vertex count");
+  if (c.edge_count != r.edge_count) return fail("edge count");
+  if (c.face_count != r.face_count) return fail("face count");
+  if (c.euler_characteristic != r.euler_characteristic) return fail("Euler characteristic");
+  if (c.border_edge_count != r.boundary_edge_count) return fail("boundary edge count");
+  if (c.edge_count - c.border_edge_count != r.interior_edge_count) return fail("interior edge count");
+  if (c.closed != r.closed) return fail("closed");
+  if (c.valid_polygon_mesh != (r.isolated_vertex_count == 0)) return fail("is_valid_polygon_mesh");
+  if (!c.mesh_non_manifold_vertices.empty()) return fail("non_manifold_vertices on the built mesh");
+  if (!r.boundary_loops) return fail("no reference boundary loops");
+  std::vector<std::vector<int>> ref_loops = *r.boundary_loops, cgal_loops = c.boundary_cycles;
+  if (c.reversed_polygon_count != 0) {  // CGAL flipped faces: compare loops undirected
+    for (auto& l : ref_loops) l = undirected(l);
+    for (auto& l : cgal_loops) l = undirected(l);
+    std::sort(ref_loops.begin(), ref_loops.end());
+    std::sort(cgal_loops.begin(), cgal_loops.end());
+  }
+  if (ref_loops != cgal_loops) return fail("boundary loops");
+  if (c.component_count != r.component_count) return fail("component count");
+  if (c.face_component != r.face_component) return fail("face components");
+  return "";
+}
+
+std::string compare_mesh(const MeshArrays& m) { return compare(classify_mesh(m), cgal_classify_mesh(m)); }
+
+// ---- named shapes: CGAL agrees, and the answers derived by hand hold ----
+
+TEST(MeshTopologyCgal, SpecCubeFromCorpus) {
+  std::ifstream in(std::string(VGC_SOURCE_DIR) + "/corpora/examples/cube.vgc");
+  ASSERT_TRUE(in) << "corpora/examples/cube.vgc";
+  std::stringstream text;
+  text << in.rdbuf();
+  std::vector<Command> commands;
+  TextError error;
+  ASSERT_TRUE(parse_commands(text.str(), &commands, &error)) << error.to_string();
+  Node node;
+  for (const Command& c : commands) ASSERT_EQ(node.apply(c), Reason::Ok);
+  const MeshArrays mesh = extract_mesh(node);
+  const MeshTopology t = classify_mesh(mesh);
+  ASSERT_EQ(t.status, MeshStatus::Ok);
+  EXPECT_TRUE(t.closed);
+  EXPECT_TRUE(t.is_manifold);
+  EXPECT_TRUE(t.is_polygon_mesh);
+  EXPECT_TRUE(t.consistently_oriented);
+  EXPECT_TRUE(t.orientable);
+  EXPECT_EQ(t.euler_characteristic, 2);
+  EXPECT_EQ(t.used_vertex_count, 8);
+  EXPECT_EQ(t.edge_count, 12);
+  EXPECT_EQ(t.face_count, 6);
+  EXPECT_EQ(t.interior_edge_count, 12);
+  EXPECT_EQ(t.boundary_edge_count, 0);
+  EXPECT_EQ(t.component_count, 1);
+  EXPECT_TRUE(t.boundary_loops && t.boundary_loops->empty());
+  for (VertexKind k : t.vertex_kinds) EXPECT_EQ(k, VertexKind::Disc);
+  const CgalManifoldReport c = cgal_classify_mesh(mesh);
+  EXPECT_TRUE(c.closed);
+  EXPECT_EQ(c.euler_characteristic, 2);
+  EXPECT_EQ(c.component_count, 1);
+  EXPECT_EQ(compare(t, c), "");
+}
+
+TEST(MeshTopologyCgal, GridHasOneBoundaryLoop) {
+  // 2 x 1 quads, vertices 0 1 2 / 3 4 5, faces clockwise seen from +z.
+  const MeshArrays m = test::grid(2, 1, false);
+  const MeshTopology t = classify_mesh(m);
+  EXPECT_EQ(t.boundary_edge_count, 6);
+  EXPECT_EQ(t.interior_edge_count, 1);
+  EXPECT_EQ(t.euler_characteristic, 1);
+  EXPECT_FALSE(t.closed);
+  EXPECT_EQ(t.vertex_kinds[1], VertexKind::HalfDisc);
+  // Face 0 is 0,3,4,1 and uses 0->3; the border runs the other way, 3->0,
+  // so from 0 the loop continues 0->1 (face 0 uses 1->0).
+  ASSERT_TRUE(t.boundary_loops);
+  EXPECT_EQ(*t.boundary_loops, (std::vector<std::vector<int>>{{0, 1, 2, 5, 4, 3}}));
+  EXPECT_EQ(compare_mesh(m), "");
+}
+
+TEST(MeshTopologyCgal, FinMakesANonManifoldEdge) {
+  const MeshArrays m = test::add_fin(test::spec_cube(), 0, 0);  // edge 0-1 gets 3 uses
+  const MeshTopology t = classify_mesh(m);
+  ASSERT_EQ(t.non_manifold_edge_count, 1);
+  EXPECT_FALSE(t.is_manifold);
+  EXPECT_EQ(t.non_manifold_vertices, (std::vector<int>{0, 1}));
+  EXPECT_EQ(t.component_count, 1);  // the fin shares edge 0-1 with the cube
+  EXPECT_EQ(t.boundary_edge_count, 2);
+  EXPECT_EQ(t.euler_characteristic, 9 - 14 + 7);
+  EXPECT_EQ(compare_mesh(m), "");
+}
+
+TEST(MeshTopologyCgal, BowTieVertex) {
+  const MeshArrays m = test::glue_at_vertex(test::tetrahedron(), test::octahedron(), 0, 0);
+  const MeshTopology t = classify_mesh(m);
+  EXPECT_EQ(t.non_manifold_edge_count, 0);
+  EXPECT_EQ(t.non_manifold_vertices, (std::vector<int>{0}));
+  EXPECT_EQ(t.vertex_fan_counts[0], 2);
+  EXPECT_EQ(t.component_count, 2);
+  EXPECT_FALSE(t.is_manifold);
+  EXPECT_EQ(compare_mesh(m), "");
+}
+
+TEST(MeshTopologyCgal, FlippedFaceIsInconsistentButOrientable) {
+  const MeshArrays m = test::flip_face(test::octahedron(), 3);
+  const MeshTopology t = classify_mesh(m);
+  EXPECT_FALSE(t.consistently_oriented);
+  EXPECT_TRUE(t.orientable);
+  EXPECT_TRUE(t.is_manifold);
+  EXPECT_FALSE(t.is_polygon_mesh);
+  EXPECT_EQ(compare_mesh(m), "");
+}
+
+TEST(MeshTopologyCgal, MoebiusStrip) {
+  const MeshArrays m = test::moebius(5);
+  const MeshTopology t = classify_mesh(m);
+  EXPECT_FALSE(t.orientable);
+  EXPECT_FALSE(t.consistently_oriented);
+  EXPECT_TRUE(t.is_manifold);
+  EXPECT_EQ(t.euler_characteristic, 0);
+  ASSERT_TRUE(t.boundary_loops);
+  ASSERT_EQ(t.boundary_loops->size(), 1u);
+  EXPECT_EQ((*t.boundary_loops)[0].size(), 10u);
+  EXPECT_EQ(compare_mesh(m), "");
+}
+
+TEST(MeshTopologyCgal, TorusAndIsolatedVertex) {
+  const MeshArrays m = test::add_isolated_vertex(test::torus(4, 3));
+  const MeshTopology t = classify_mesh(m);
+  EXPECT_EQ(t.euler_characteristic, 0);
+  EXPECT_EQ(t.isolated_vertex_count, 1);
+  EXPECT_EQ(t.vertex_kinds.back(), VertexKind::Isolated);
+  EXPECT_TRUE(t.closed);
+  EXPECT_TRUE(t.is_manifold);
+  const CgalManifoldReport c = cgal_classify_mesh(m);
+  EXPECT_FALSE(c.valid_polygon_mesh);
+  EXPECT_EQ(compare(t, c), "");
+}
+
+TEST(MeshTopologyCgal, InvalidInputGivesAStatus) {
+  MeshArrays m = test::spec_cube();
+  m.face_vertices[5] = 8;  // face 1, corner 1: out of range
+  EXPECT_EQ(classify_mesh(m).status, MeshStatus::IndexOutOfRange);
+  EXPECT_EQ(classify_mesh(m).bad_face, 1);
+  EXPECT_EQ(compare_mesh(m), "");
+  m.face_vertices[5] = -1;
+  EXPECT_EQ(classify_mesh(m).status, MeshStatus::IndexOutOfRange);
+  m.face_vertices[5] = 4;  // face 1 = 4,4,6,7
+  EXPECT_EQ(classify_mesh(m).status, MeshStatus::RepeatedVertex);
+  EXPECT_EQ(compare_mesh(m), "");
+  MeshArrays two = test::make_mesh(test::spec_cube().positions, {{0, 1, 2}, {0, 1}});
+  EXPECT_EQ(classify_mesh(two).status, MeshStatus::TooFewCorners);
+  EXPECT_EQ(classify_mesh(two).bad_face, 1);
+  EXPECT_EQ(compare_mesh(two), "");
+  MeshArrays empty = test::make_mesh(test::spec_cube().positions, {{}});
+  EXPECT_EQ(classify_mesh(empty).status, MeshStatus::TooFewCorners);
+  MeshArrays bad = test::spec_cube();
+  bad.face_offsets[5] = 22;  // 22 + 4 > 24 corners
+  EXPECT_EQ(classify_mesh(bad).status, MeshStatus::BadArrays);
+  EXPECT_EQ(compare_mesh(bad), "");
+  bad = test::spec_cube();
+  bad.face_offsets.pop_back();
+  EXPECT_EQ(classify_mesh(bad).status, MeshStatus::BadArrays);
+  EXPECT_EQ(compare_mesh(bad), "");
+}
+
+// ---- random meshes ----
+
+MeshArrays random_base(std::mt19937& rng) {
+  switch (rng() % 6) {
+    case 0: return test::spec_cube();
+    case 1: return test::octahedron();
+    case 2: return test::tetrahedron();
+    case 3: return test::grid(1 + static_cast<int>(rng() % 4), 1 + static_cast<int>(rng() % 3), rng() % 2 == 0);
+    case 4: return test::torus(3 + static_cast<int>(rng() % 3), 3 + static_cast<int>(rng() % 3));
+    default: return test::moebius(3 + static_cast<int>(rng() % 4));
+  }
+}
+
+// A shape, then up to three random edits, then renumbering and rotation.
+MeshArrays random_mesh(unsigned seed) {
+  std::mt19937 rng(seed);
+  MeshArrays m = random_base(rng);
+  if (rng() % 8 == 0) m = test::random_soup(rng, 4 + static_cast<int>(rng() % 4), 1 + static_cast<int>(rng() % 8));
+  const int edits = static_cast<int>(rng() % 4);
+  for (int k = 0; k < edits; ++k) {
+    const int f = static_cast<int>(rng() % static_cast<unsigned>(m.face_count()));
+    switch (rng() % 7) {
+      case 0: m = test::add_fin(m, f, static_cast<int>(rng() % 3)); break;
+      case 1: m = test::glue_at_vertex(m, random_base(rng), static_cast<int>(rng() % static_cast<unsigned>(m.vertex_count())), 0); break;
+      case 2: m = test::flip_face(m, f); break;
+      case 3: m = test::add_isolated_vertex(m); break;
+      case 4: m = test::disjoint_union(m, random_base(rng)); break;
+      default: break;  // most meshes stay as they are
+    }
+  }
+  m = test::renumber_vertices(m, rng);
+  m = test::rotate_and_shuffle_faces(m, rng);
+  return m;
+}
+
+// Breaks one face of `m` in one of the ways check_mesh reports.
+MeshArrays break_mesh(MeshArrays m, unsigned seed) {
+  std::mt19937 rng(seed);
+  Faces f = test::faces_of(m);
+  auto& face = f[rng() % f.size()];
+  switch (rng() % 4) {
+    case 0: face[1] = face[0]; break;                                                  // repeated vertex
+    case 1: face.resize(rng() % 3); break;                                             // 0-, 1- or 2-gon
+    case 2: face[rng() % face.size()] = m.vertex_count() + static_cast<int>(rng() % 3); break;  // out of range
+    default: face[rng() % face.size()] = -1 - static_cast<int>(rng() % 3); break;      // negative
+  }
+  return test::make_mesh(m.positions, f);
+}
+
+RC_GTEST_PROP(MeshTopologyCgal, RandomMeshesAgree, (unsigned seed)) {
+  const MeshArrays m = random_mesh(seed);
+  const std::string why = compare_mesh(m);
+  RC_ASSERT(why == "");
+}
+
+RC_GTEST_PROP(MeshTopologyCgal, RandomSoupsAgree, (unsigned seed)) {
+  std::mt19937 rng(seed);
+  const MeshArrays m = test::random_soup(rng, 3 + static_cast<int>(rng() % 5), 1 + static_cast<int>(rng() % 10));
+  RC_ASSERT(compare_mesh(m) == "");
+}
+
+RC_GTEST_PROP(MeshTopologyCgal, BrokenMeshesGetTheSameStatus, (unsigned seed)) {
+  const MeshArrays m = break_mesh(random_mesh(seed), seed);
+  const MeshTopology t = classify_mesh(m);
+  RC_ASSERT(t.status != MeshStatus::Ok);
+  RC_ASSERT(compare(t, cgal_classify_mesh(m)) == "");
+}
+
+// Relabelling vertices, rotating and reordering faces changes no count.
+RC_GTEST_PROP(MeshTopologyCgal, CountsSurviveRenumbering, (unsigned seed)) {
+  std::mt19937 rng(seed);
+  const MeshArrays a = random_base(rng);
+  const MeshArrays b = test::rotate_and_shuffle_faces(test::renumber_vertices(a, rng), rng);
+  const MeshTopology ta = classify_mesh(a), tb = classify_mesh(b);
+  RC_ASSERT(ta.euler_characteristic == tb.euler_characteristic);
+  RC_ASSERT(ta.boundary_edge_count == tb.boundary_edge_count);
+  RC_ASSERT(ta.component_count == tb.component_count);
+  RC_ASSERT(ta.orientable == tb.orientable);
+  RC_ASSERT(ta.consistently_oriented == tb.consistently_oriented);
+  RC_ASSERT(ta.boundary_loops->size() == tb.boundary_loops->size());
+}
+
+}  // namespace
+}  // namespace vgc
