@@ -13,6 +13,7 @@
 // under test is a result the suite records, never an exception or an abort.
 #pragma once
 
+#include <cstddef>
 #include <memory>
 #include <string>
 
@@ -33,6 +34,11 @@ struct Answer {
   bool applied = false;  // meaningful when status == Ok
   std::string reason;    // the reason name it gave for a rejection ("NO_SUCH_LAYER", ...)
   std::string detail;    // for a non-Ok status: what happened, for the report
+  // status == Ok and the implementation said it could not parse the line
+  // (exec: "error <message>", plugin: VGC_MALFORMED); applied is false,
+  // reason is empty and detail holds its message. The suite only sends
+  // canonical text, so this is a finding against the implementation.
+  bool malformed = false;
 };
 
 // The text documents of snapshot.h, as the implementation printed them.
@@ -52,15 +58,29 @@ class Implementation {
   virtual Answer apply(const Command& c) = 0;
   virtual Document snapshot() = 0;
   virtual Document derived() = 0;
+  // What the implementation says it is: the free text of its ?hello answer
+  // (exec), the table's name (plugin), or name(). For reports only.
+  virtual std::string identity() const { return name(); }
 };
 
 struct OpenOptions {
   double timeout_seconds = 5.0;  // per call, for out-of-process implementations
   bool isolate_plugin = true;    // plugin: run it in a child process (vgc serve)
+  // The vgc executable that serves an isolated plugin (`vgc serve --impl
+  // plugin:PATH`). Empty: the running program (/proc/self/exe), which is
+  // right inside vgc itself; tests and other programs set it.
+  std::string vgc_binary;
+  // Longest answer line or document accepted from an out-of-process
+  // implementation; a longer one is a ProtocolError (bounds our memory).
+  std::size_t max_answer_bytes = std::size_t{64} << 20;
 };
 
 // Opens "reference", "exec:CMD" or "plugin:PATH". Returns nullptr and sets
-// *error for a malformed spec or one that cannot be started.
+// *error for a malformed spec or one that cannot be started: a program that
+// does not answer ?hello correctly within the timeout, a plugin that cannot
+// be loaded (missing file, missing vgc_plugin_v1, other ABI version).
+// An exec or isolated-plugin implementation is started here and restarted
+// by reset() after a Crash, Timeout or ProtocolError.
 std::unique_ptr<Implementation> open_implementation(const std::string& spec, const OpenOptions& options,
                                                     std::string* error);
 

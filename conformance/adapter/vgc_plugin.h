@@ -40,6 +40,15 @@ typedef struct vgc_plugin_v1_table {
   const char* (*derived)(vgc_node* node);
 } vgc_plugin_v1_table;
 
+/* Marks the entry point as exported even when the library is built with
+ * -fvisibility=hidden:
+ *   VGC_PLUGIN_EXPORT const vgc_plugin_v1_table* vgc_plugin_v1(void) { ... } */
+#if defined(__GNUC__) || defined(__clang__)
+#define VGC_PLUGIN_EXPORT __attribute__((visibility("default")))
+#else
+#define VGC_PLUGIN_EXPORT
+#endif
+
 /* The one symbol a plugin exports. */
 typedef const vgc_plugin_v1_table* (*vgc_plugin_v1_fn)(void);
 #define VGC_PLUGIN_ENTRY "vgc_plugin_v1"

@@ -1,0 +1,108 @@
+// cmd_serve.cpp — `vgc serve [--impl reference|plugin:PATH]`: serve a node
+// over the exec protocol (docs/adapters.md) on standard input and output.
+//
+// Spec: docs/adapters.md "The exec protocol"; command lines are the text
+// language of docs/commands.md, documents those of snapshot.h.
+//
+// Rationale: this is how the reference is certified through the exec route
+// (`--impl exec:'vgc serve'`) and how a plugin runs isolated in a child
+// process (open_implementation with isolate_plugin). One line in, one line
+// out, flushed: a command answers "ok", "rejected <REASON>" or "error line
+// 1, column N: ..." (the TextError of a line that does not parse), and the
+// requests ?hello ?reset ?snapshot ?derived ?quit are answered as the
+// protocol says. Exit codes: 0 at ?quit or end of input; 2 when the
+// implementation cannot be opened; 3 when writing the answer fails.
+#include <fmt/core.h>
+
+#include <cstdio>
+#include <iostream>
+#include <memory>
+#include <string>
+
+#include "command_text.h"
+#include "implementation.h"
+#include "subcommand.h"
+
+namespace vgc::cli {
+namespace {
+
+struct ServeOptions {
+  std::string impl = "reference";
+};
+
+bool put(const std::string& s) {
+  return std::fwrite(s.data(), 1, s.size(), stdout) == s.size() && std::fflush(stdout) == 0;
+}
+
+// A failure of the served implementation itself (only a plugin's
+// ProtocolError can happen in process) is relayed as a line no request
+// allows, so the suite on the other side records a ProtocolError too.
+std::string failure_line(CallStatus s, const std::string& detail) {
+  std::string d = detail;
+  for (char& ch : d)
+    if (ch == '\n' || ch == '\r') ch = ' ';
+  return std::string("vgc-serve-failure ") + call_status_name(s) + ": " + d + "\n";
+}
+
+std::string one_line(const std::string& s) {
+  std::string d = s;
+  for (char& ch : d)
+    if (ch == '\n' || ch == '\r') ch = ' ';
+  return d;
+}
+
+std::string answer_line(Implementation& impl, const std::string& line) {
+  if (line == "?hello") return "vgc-exec 1 " + one_line(impl.identity()) + "\n";
+  if (line == "?reset") {
+    const Answer a = impl.reset();
+    return a.status == CallStatus::Ok ? "ok\n" : failure_line(a.status, a.detail);
+  }
+  if (line == "?snapshot" || line == "?derived") {
+    const Document d = line == "?snapshot" ? impl.snapshot() : impl.derived();
+    return d.status == CallStatus::Ok ? d.text : failure_line(d.status, d.detail);
+  }
+  if (!line.empty() && line[0] == '?') return "error unknown request " + one_line(line) + "\n";
+  Command c;
+  bool blank = false;
+  TextError e;
+  if (!parse_command_line(line, 1, &c, &blank, &e)) {
+    if (blank) return "error line 1, column 1: expected a command, found an empty line or a comment\n";
+    return "error " + one_line(e.to_string()) + "\n";
+  }
+  const Answer a = impl.apply(c);
+  if (a.status != CallStatus::Ok) return failure_line(a.status, a.detail);
+  if (a.applied) return "ok\n";
+  if (a.malformed) return "error " + one_line(a.detail) + "\n";
+  return "rejected " + a.reason + "\n";
+}
+
+int run_serve(const ServeOptions& o) {
+  OpenOptions options;
+  options.isolate_plugin = false;  // we are the isolation
+  std::string error;
+  std::unique_ptr<Implementation> impl = open_implementation(o.impl, options, &error);
+  if (!impl) {
+    fmt::print(stderr, "vgc serve: {}\n", error);
+    return 2;
+  }
+  std::string line;
+  while (std::getline(std::cin, line)) {
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (line == "?quit") return 0;
+    if (!put(answer_line(*impl, line))) return 3;
+  }
+  return 0;
+}
+
+void add_serve(CLI::App& app, int* exit_code) {
+  auto opts = std::make_shared<ServeOptions>();
+  CLI::App* sub = app.add_subcommand(
+      "serve", "Serve a node over the exec protocol on stdin/stdout (docs/adapters.md)");
+  sub->add_option("--impl", opts->impl, "What to serve: reference (default) or plugin:PATH (loaded in this process)");
+  sub->callback([opts, exit_code] { *exit_code = run_serve(*opts); });
+}
+
+const Subcommand kServe{add_serve};
+
+}  // namespace
+}  // namespace vgc::cli

@@ -1,0 +1,100 @@
+// exec_implementation.h — an implementation that is a separate program
+// speaking the exec protocol (docs/adapters.md "exec:CMD") on its stdin and
+// stdout: one text command per line in, one answer line out.
+//
+// Spec: the command language of docs/commands.md (command_text.h) and the
+// documents of snapshot.h; the protocol itself is docs/adapters.md.
+//
+// Rationale: the implementation under test may crash, hang, or print
+// anything, and none of that may stop or crash the suite. So the program
+// runs in its own process group, every read and write is non-blocking and
+// bounded by a deadline (poll), stderr is drained all the time (the last
+// lines are kept for the report), answers are bounded in size, SIGPIPE is
+// ignored, and the child is always reaped. A failed call (Crash, Timeout,
+// ProtocolError) kills the program; every later call returns the same
+// failure without talking to it, until reset() starts it again.
+#pragma once
+
+#include <chrono>
+#include <cstddef>
+#include <deque>
+#include <string>
+#include <sys/types.h>
+
+#include "implementation.h"
+
+namespace vgc {
+
+class ExecImplementation final : public Implementation {
+ public:
+  // `command` is run with /bin/sh -c. `display_name` is what name() says
+  // ("exec:" + command when empty). Does not start the program: call start().
+  ExecImplementation(std::string command, const OpenOptions& options, std::string display_name = {});
+  ~ExecImplementation() override;  // sends ?quit, then kills what is left and reaps it
+  ExecImplementation(const ExecImplementation&) = delete;
+  ExecImplementation& operator=(const ExecImplementation&) = delete;
+
+  // Starts the program and performs the ?hello handshake within the
+  // timeout. On failure returns the Answer describing it (status != Ok) and
+  // leaves the implementation in that failed state; reset() retries.
+  Answer start();
+
+  std::string name() const override { return display_name_; }
+  std::string identity() const override { return hello_name_.empty() ? display_name_ : hello_name_; }
+  Answer reset() override;
+  Answer apply(const Command& c) override;
+  Document snapshot() override;
+  Document derived() override;
+
+  // Sends one raw line (without the newline) and reads one answer line.
+  // For tests and for requests outside the Command set. Failure rules as apply().
+  Answer request_line(const std::string& line, std::string* answer);
+
+  // The running program's process id (also its process group id), or -1.
+  pid_t pid() const { return pid_; }
+  // The last lines the program wrote to stderr, oldest first.
+  std::string stderr_tail() const;
+
+ private:
+  using Clock = std::chrono::steady_clock;
+  enum class Io { Ok, Eof, Timeout, TooLong, WriteFailed };
+
+  bool spawn(std::string* error);
+  // Sends `line` + "\n" and reads one line, with one deadline for both.
+  Io exchange(const std::string& line, std::string* answer, Clock::time_point deadline);
+  Io write_all(const std::string& data, Clock::time_point deadline);
+  Io read_line(std::string* line, Clock::time_point deadline);
+  // Waits for readable stdout/stderr (and writable stdin when `want_write`),
+  // draining stderr. Returns false at the deadline.
+  bool pump(bool want_write, Clock::time_point deadline, bool* can_write);
+  void drain_stderr();
+  void take_stderr_bytes(const char* p, std::size_t n);
+  // Records a failure: kills and reaps the program, builds the detail.
+  void fail(CallStatus status, std::string detail);
+  // The failure answer for an Io result other than Ok.
+  void fail_io(Io io, const std::string& what);
+  std::string kill_and_reap(std::chrono::milliseconds grace);
+  void close_fds();
+  Answer failed_answer() const;
+  Document request_document(const char* request, const char* header);
+  Clock::time_point deadline() const;
+
+  std::string command_;
+  OpenOptions options_;
+  std::string display_name_;
+  std::string hello_name_;
+  pid_t pid_ = -1;
+  int in_fd_ = -1;   // the program's stdin
+  int out_fd_ = -1;  // its stdout
+  int err_fd_ = -1;  // its stderr
+  std::string out_buf_;
+  std::string err_partial_;
+  std::deque<std::string> err_lines_;
+  CallStatus failed_ = CallStatus::Ok;  // sticky failure until reset()
+  std::string failed_detail_;
+};
+
+// Quotes `s` for /bin/sh: 'it'\''s'.
+std::string shell_quote(const std::string& s);
+
+}  // namespace vgc
