@@ -22,26 +22,40 @@ void add_scaled(Vec3& acc, const Vec3& p, double w) {
   acc[2] += w * p[2];
 }
 
-// Incident edges and faces of every vertex, in no particular order.
+// Incident edges and faces of every vertex and the faces of every edge, in
+// no particular order, as offset tables (CSR): the items of vertex v are
+// vertex_edges[vertex_edge_offsets[v] .. vertex_edge_offsets[v + 1]).
 struct Incidence {
-  std::vector<std::vector<int>> vertex_edges;
-  std::vector<std::vector<int>> vertex_faces;
-  std::vector<std::vector<int>> edge_faces;
+  std::vector<int> vertex_edge_offsets, vertex_edges;
+  std::vector<int> vertex_face_offsets, vertex_faces;
+  std::vector<int> edge_face_offsets, edge_faces;
 };
+
+// Fills a CSR table from (key, item) pairs given twice by `each`: once to count, once to place.
+template <typename Each>
+void fill_csr(int keys, std::vector<int>& offsets, std::vector<int>& items, Each each) {
+  offsets.assign(static_cast<std::size_t>(keys) + 1, 0);
+  each([&](int key, int) { ++offsets[static_cast<std::size_t>(key) + 1]; });
+  for (int k = 0; k < keys; ++k) offsets[static_cast<std::size_t>(k) + 1] += offsets[static_cast<std::size_t>(k)];
+  items.assign(static_cast<std::size_t>(offsets.back()), -1);
+  std::vector<int> next(offsets.begin(), offsets.end() - 1);
+  each([&](int key, int item) { items[static_cast<std::size_t>(next[static_cast<std::size_t>(key)]++)] = item; });
+}
 
 Incidence incidence_of(const SubdivisionLevel& l) {
   Incidence in;
-  in.vertex_edges.resize(static_cast<std::size_t>(l.vertex_count()));
-  in.vertex_faces.resize(static_cast<std::size_t>(l.vertex_count()));
-  in.edge_faces.resize(static_cast<std::size_t>(l.edge_count()));
-  for (int e = 0; e < l.edge_count(); ++e)
-    for (int end = 0; end < 2; ++end) in.vertex_edges[static_cast<std::size_t>(l.edges[e][end])].push_back(e);
-  for (int f = 0; f < l.face_count(); ++f)
-    for (int c = 0; c < l.face_sizes[f]; ++c) {
-      const int corner = l.face_offsets[f] + c;
-      in.vertex_faces[static_cast<std::size_t>(l.face_vertices[corner])].push_back(f);
-      in.edge_faces[static_cast<std::size_t>(l.face_edges[corner])].push_back(f);
-    }
+  fill_csr(l.vertex_count(), in.vertex_edge_offsets, in.vertex_edges, [&](auto put) {
+    for (int e = 0; e < l.edge_count(); ++e)
+      for (int end = 0; end < 2; ++end) put(l.edges[static_cast<std::size_t>(e)][static_cast<std::size_t>(end)], e);
+  });
+  fill_csr(l.vertex_count(), in.vertex_face_offsets, in.vertex_faces, [&](auto put) {
+    for (int f = 0; f < l.face_count(); ++f)
+      for (int c = 0; c < l.face_sizes[f]; ++c) put(l.face_vertices[l.face_offsets[f] + c], f);
+  });
+  fill_csr(l.edge_count(), in.edge_face_offsets, in.edge_faces, [&](auto put) {
+    for (int f = 0; f < l.face_count(); ++f)
+      for (int c = 0; c < l.face_sizes[f]; ++c) put(l.face_edges[l.face_offsets[f] + c], f);
+  });
   return in;
 }
 
@@ -52,6 +66,7 @@ int other_end(const std::array<int, 2>& e, int v) { return e[0] == v ? e[1] : e[
 void build_level_edges(SubdivisionLevel* level) {
   SubdivisionLevel& l = *level;
   std::unordered_map<std::uint64_t, int> index;
+  index.reserve(l.face_vertices.size());
   l.edges.clear();
   l.edge_face_count.clear();
   l.face_edges.assign(l.face_vertices.size(), -1);
@@ -129,9 +144,10 @@ SubdivisionLevel refine_catmull_clark(const SubdivisionLevel& p, const CatmullCl
   // Edge points.
   for (int e = 0; e < ne; ++e) {
     const float s = p.edge_sharpness[e];
-    const auto& faces = in.edge_faces[e];
+    const int* faces = in.edge_faces.data() + in.edge_face_offsets[static_cast<std::size_t>(e)];
+    const int nfaces = in.edge_face_offsets[static_cast<std::size_t>(e) + 1] - in.edge_face_offsets[static_cast<std::size_t>(e)];
     double vw = 0.25;
-    double fw = faces.size() == 2 ? 0.25 : 0.5 / static_cast<double>(faces.size());
+    double fw = nfaces == 2 ? 0.25 : 0.5 / static_cast<double>(nfaces);
     if (is_sharp(s)) {
       if (s > 1.0f) {  // child edges still sharp: the crease rule
         vw = 0.5;
@@ -143,16 +159,20 @@ SubdivisionLevel refine_catmull_clark(const SubdivisionLevel& p, const CatmullCl
       }
     }
     Vec3& ep = c.positions[static_cast<std::size_t>(nv + nf + e)];
-    for (int f : faces) add_scaled(ep, c.positions[static_cast<std::size_t>(nv + f)], fw);
+    for (int i = 0; i < nfaces; ++i) add_scaled(ep, c.positions[static_cast<std::size_t>(nv + faces[i])], fw);
     add_scaled(ep, p.positions[p.edges[e][0]], vw);
     add_scaled(ep, p.positions[p.edges[e][1]], vw);
   }
 
   // Vertex points.
+  std::vector<int> vedges, vfaces;
+  std::vector<float> es, ces;
   for (int v = 0; v < nv; ++v) {
-    const auto& vedges = in.vertex_edges[v];
-    const auto& vfaces = in.vertex_faces[v];
-    std::vector<float> es, ces;
+    const auto sv = static_cast<std::size_t>(v);
+    vedges.assign(in.vertex_edges.begin() + in.vertex_edge_offsets[sv], in.vertex_edges.begin() + in.vertex_edge_offsets[sv + 1]);
+    vfaces.assign(in.vertex_faces.begin() + in.vertex_face_offsets[sv], in.vertex_faces.begin() + in.vertex_face_offsets[sv + 1]);
+    es.clear();
+    ces.clear();
     bool on_boundary = false;
     for (int e : vedges) {
       es.push_back(p.edge_sharpness[e]);
@@ -221,16 +241,15 @@ SubdivisionLevel refine_catmull_clark(const SubdivisionLevel& p, const CatmullCl
 
   // Child edge sharpness: each half of a parent edge inherits the parent's
   // subdivided sharpness; edges inside a parent face are smooth.
-  std::unordered_map<std::uint64_t, int> cindex;
-  for (int e = 0; e < c.edge_count(); ++e) cindex.emplace(edge_key(c.edges[e][0], c.edges[e][1]), e);
   c.edge_sharpness.assign(c.edges.size(), kSharpnessSmooth);
-  for (int e = 0; e < ne; ++e) {
-    const float cs = subdivide_sharpness(p.edge_sharpness[e]);
-    for (int end = 0; end < 2; ++end) {
-      auto it = cindex.find(edge_key(p.edges[e][end], nv + nf + e));
-      if (it != cindex.end()) c.edge_sharpness[static_cast<std::size_t>(it->second)] = cs;
+  for (int f = 0; f < c.face_count(); ++f)
+    for (int k = 0; k < 4; ++k) {
+      const int corner = c.face_offsets[f] + k;
+      int a = c.face_vertices[corner], b = c.face_vertices[c.face_offsets[f] + (k + 1) % 4];
+      if (a > b) std::swap(a, b);
+      if (a < nv && b >= nv + nf)  // a half of parent edge b - nv - nf
+        c.edge_sharpness[static_cast<std::size_t>(c.face_edges[corner])] = subdivide_sharpness(p.edge_sharpness[b - nv - nf]);
     }
-  }
   return c;
 }
 

@@ -322,6 +322,8 @@ inline std::string compare_by_parent(const std::vector<SubdivisionLevel>& ref, c
           child[static_cast<std::size_t>(r.child_of_parent_face[f])] = o.child_of_parent_face[fmap[f]];
       vmap = child;
       // Child faces: same vertices up to rotation.
+      std::vector<int> ooffsets(o.face_sizes.size() + 1, 0);
+      for (std::size_t g = 0; g < o.face_sizes.size(); ++g) ooffsets[g + 1] = ooffsets[g] + o.face_sizes[g];
       std::vector<int> cf(static_cast<std::size_t>(r.face_count()), -1);
       for (int f = 0; f < rp.face_count(); ++f) {
         const auto& ochildren = o.child_faces_of_parent_face[fmap[f]];
@@ -332,8 +334,7 @@ inline std::string compare_by_parent(const std::vector<SubdivisionLevel>& ref, c
           std::vector<int> rv;
           for (int c = 0; c < r.face_sizes[k]; ++c) rv.push_back(vmap[r.face_vertices[r.face_offsets[k] + c]]);
           for (int oc : ochildren) {
-            int ooff = 0;
-            for (int g = 0; g < oc; ++g) ooff += o.face_sizes[g];
+            const int ooff = ooffsets[static_cast<std::size_t>(oc)];
             std::vector<int> ov(o.face_vertices.begin() + ooff, o.face_vertices.begin() + ooff + o.face_sizes[oc]);
             if (ov.size() != rv.size()) continue;
             for (std::size_t rot = 0; rot < ov.size(); ++rot) {
