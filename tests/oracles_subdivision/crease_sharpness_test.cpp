@@ -113,3 +113,52 @@ TEST(CreaseSharpness, FractionalWeightAveragesTheDecayingFeatures) {
 
 }  // namespace
 }  // namespace vgc
+
+namespace vgc {
+namespace {
+
+// The same rule driven through the node (000 2.6.2): a vertex crease layer
+// and an edge crease layer where the two quads store different creases for
+// their shared edge. Corner i of a polygon holds the crease of the edge from
+// corner i to corner i+1.
+TEST(CreaseSharpness, NodeCreaseLayersGiveTheDocumentedSharpness) {
+  const char* script =
+      "vertex_set_xyz_real64 0 0 0 0 0\n"
+      "vertex_set_xyz_real64 0 1 1 0 0\n"
+      "vertex_set_xyz_real64 0 2 1 1 0\n"
+      "vertex_set_xyz_real64 0 3 0 1 0\n"
+      "vertex_set_xyz_real64 0 4 2 0 0\n"
+      "vertex_set_xyz_real64 0 5 2 1 0\n"
+      "polygon_set_corner_uint32 1 0 0 1 2 3\n"
+      "polygon_set_corner_uint32 1 1 1 4 5 2\n"
+      "layer_create 2 \"vc\" VERTEX_UINT32 0 0\n"
+      "layer_create 3 \"ec\" POLYGON_CORNER_UINT32 0 0\n"
+      "vertex_set_uint32 2 1 0xFFFFFFFF\n"
+      "polygon_set_corner_uint32 3 0 0 0x33333333 0 0\n"   // polygon 0, corner 1: edge 1 -> 2
+      "polygon_set_corner_uint32 3 1 0 0 0 0x80000000\n"   // polygon 1, corner 3: edge 2 -> 1
+      "crease_set_vertex \"vc\" 0\n"
+      "crease_set_edge \"ec\" 0\n";
+  std::vector<Command> commands;
+  TextError error;
+  ASSERT_TRUE(parse_commands(script, &commands, &error)) << error.to_string();
+  Node node;
+  for (const auto& c : commands) ASSERT_EQ(node.apply(c), Reason::Ok) << print_command(c);
+  const MeshArrays m = extract_mesh(node);
+  SubdivisionLevel l;
+  ASSERT_TRUE(build_base_level(m, &l));
+  EXPECT_TRUE(is_infinite(l.vertex_sharpness[1]));
+  EXPECT_TRUE(is_smooth(l.vertex_sharpness[0]));
+  int checked = 0;
+  for (int e = 0; e < l.edge_count(); ++e) {
+    const int a = std::min(l.edges[e][0], l.edges[e][1]), b = std::max(l.edges[e][0], l.edges[e][1]);
+    if (a == 1 && b == 2) {
+      EXPECT_EQ(l.edge_sharpness[e], crease_to_sharpness(0x80000000u));  // the larger of the two
+      EXPECT_GT(l.edge_sharpness[e], crease_to_sharpness(0x33333333u));
+      ++checked;
+    }
+  }
+  EXPECT_EQ(checked, 1);
+}
+
+}  // namespace
+}  // namespace vgc
