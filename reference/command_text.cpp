@@ -121,6 +121,14 @@ struct Parser {
         return false;
       }
       in.advance(used);
+      // Fields are separated by blanks: `"a"5` is not two fields.
+      if (!in.rest().empty() && !is_blank(in.rest()[0]) && in.rest()[0] != '#') {
+        const std::size_t after = in.column();
+        in.fail(after, std::string("expected a blank after the closing quote of ") + name + ", found " +
+                           shown(in.token()),
+                error);
+        return false;
+      }
       return true;
     } else {
       const std::string_view tok = in.token();

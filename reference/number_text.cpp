@@ -104,6 +104,7 @@ template <class F, class Bits> bool parse_float(std::string_view s, Bits default
   const char* begin = s.data();
   std::string tmp;
   if (body.size() > 2 && body[0] == '0' && (body[1] == 'x' || body[1] == 'X')) {
+    if (body[2] == '-' || body[2] == '+') return false;  // the sign goes before "0x" only
     fmt = std::chars_format::hex;  // from_chars wants hex floats without "0x"
     tmp = std::string(s[0] == '-' ? "-" : "") + std::string(body.substr(2));
     begin = tmp.data();

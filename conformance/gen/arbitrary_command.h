@@ -1,0 +1,349 @@
+// arbitrary_command.h — RapidCheck generators for commands (header only).
+//
+// Spec: ../shared/spec/README.md "Command set of the geometry node" (field
+// widths, the wire aliases FLT_MAX / DBL_MAX / v0 = 0xFFFFFFFF / empty names,
+// the "pick an id" values 0xFFFF and 0xFFFFFFFF, the 15-byte name limit) and
+// 000 section 2.6.1 Table 2-1 (the eight layer type values).
+//
+// Rationale: every property over commands (codec round trips, node
+// atomicity, conformance against another implementation) needs the same
+// hostile inputs: NaNs with arbitrary payloads, -0.0, infinities, subnormals,
+// the FLT_MAX / DBL_MAX delete sentinels, the all-ones ids, names of 0..40
+// arbitrary bytes (NUL, quote, backslash, newline, high bytes), type bytes
+// that are no layer type. Fields are filled through visit_fields
+// (command_fields.h), so a field added to a command is generated without
+// touching this file. Each field is drawn with its own `*gen` inside
+// gen::exec, so a counterexample shrinks field by field: integers toward 0,
+// names toward "", special floats toward 0.
+//
+// Two families:
+//   gen_command()            any command value at all (rc::Arbitrary<Command>)
+//   gen_command_for(node)    mostly-valid commands for the node's current state:
+//                            small ids, existing layers/elements/bones, names
+//                            from a small pool; occasionally hostile values.
+// Both are deterministic given RapidCheck's seed (RC_PARAMS="seed=N").
+#pragma once
+
+#include <rapidcheck.h>
+
+#include <cfloat>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <limits>
+#include <ostream>
+#include <string>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+#include "command.h"
+#include "command_fields.h"
+#include "command_text.h"
+#include "node.h"
+
+namespace vgc {
+namespace gen {
+
+// ---- numbers ---------------------------------------------------------------
+
+template <class F, class Bits> F bits_to(Bits b) {
+  static_assert(sizeof(F) == sizeof(Bits), "same width");
+  F f;
+  std::memcpy(&f, &b, sizeof f);
+  return f;
+}
+
+// Any double: ordinary values (shrinking toward 0), the special values,
+// NaNs with random sign and payload, subnormals, raw bit patterns.
+inline rc::Gen<double> gen_f64_any() {
+  using L = std::numeric_limits<double>;
+  return rc::gen::weightedOneOf<double>({
+      {6, rc::gen::arbitrary<double>()},
+      {2, rc::gen::map(rc::gen::inRange(-8, 9), [](int i) { return i * 0.5; })},
+      {4, rc::gen::element(0.0, -0.0, L::infinity(), -L::infinity(), DBL_MAX, -DBL_MAX, DBL_MIN,
+                           L::denorm_min(), -L::denorm_min(), L::quiet_NaN(), L::epsilon(),
+                           double(FLT_MAX), 4294967295.0)},
+      {3, rc::gen::map(rc::gen::pair(rc::gen::arbitrary<bool>(), rc::gen::arbitrary<std::uint64_t>()),
+                       [](std::pair<bool, std::uint64_t> p) {  // NaN, random payload
+                         std::uint64_t mant = p.second & 0x000FFFFFFFFFFFFFull;
+                         if (mant == 0) mant = 1;
+                         return bits_to<double>((p.first ? 0x8000000000000000ull : 0) |
+                                                0x7FF0000000000000ull | mant);
+                       })},
+      {2, rc::gen::map(rc::gen::pair(rc::gen::arbitrary<bool>(), rc::gen::arbitrary<std::uint64_t>()),
+                       [](std::pair<bool, std::uint64_t> p) {  // subnormal (or zero)
+                         return bits_to<double>((p.first ? 0x8000000000000000ull : 0) |
+                                                (p.second & 0x000FFFFFFFFFFFFFull));
+                       })},
+      {1, rc::gen::map(rc::gen::arbitrary<std::uint64_t>(),
+                       [](std::uint64_t b) { return bits_to<double>(b); })},
+  });
+}
+
+// Any float, with FLT_MAX (the real32 delete sentinel) among the specials.
+inline rc::Gen<float> gen_f32_any() {
+  using L = std::numeric_limits<float>;
+  return rc::gen::weightedOneOf<float>({
+      {6, rc::gen::arbitrary<float>()},
+      {2, rc::gen::map(rc::gen::inRange(-8, 9), [](int i) { return static_cast<float>(i) * 0.5f; })},
+      {4, rc::gen::element(0.0f, -0.0f, L::infinity(), -L::infinity(), FLT_MAX, -FLT_MAX, FLT_MIN,
+                           L::denorm_min(), -L::denorm_min(), L::quiet_NaN(), L::epsilon())},
+      {3, rc::gen::map(rc::gen::pair(rc::gen::arbitrary<bool>(), rc::gen::arbitrary<std::uint32_t>()),
+                       [](std::pair<bool, std::uint32_t> p) {
+                         std::uint32_t mant = p.second & 0x007FFFFFu;
+                         if (mant == 0) mant = 1;
+                         return bits_to<float>((p.first ? 0x80000000u : 0u) | 0x7F800000u | mant);
+                       })},
+      {2, rc::gen::map(rc::gen::pair(rc::gen::arbitrary<bool>(), rc::gen::arbitrary<std::uint32_t>()),
+                       [](std::pair<bool, std::uint32_t> p) {
+                         return bits_to<float>((p.first ? 0x80000000u : 0u) | (p.second & 0x007FFFFFu));
+                       })},
+      {1, rc::gen::map(rc::gen::arbitrary<std::uint32_t>(), [](std::uint32_t b) { return bits_to<float>(b); })},
+  });
+}
+
+// uint32 ids and values: small ones, the all-ones "none / pick / max" value,
+// its neighbour, four billion, anything.
+inline rc::Gen<std::uint32_t> gen_u32_any() {
+  return rc::gen::weightedOneOf<std::uint32_t>({
+      {5, rc::gen::inRange<std::uint32_t>(0, 16)},
+      {2, rc::gen::element<std::uint32_t>(0xFFFFFFFFu, 0xFFFFFFFEu, 4000000000u, 0x80000000u, 4096u, 4097u)},
+      {3, rc::gen::arbitrary<std::uint32_t>()},
+  });
+}
+
+inline rc::Gen<std::uint16_t> gen_u16_any() {
+  return rc::gen::weightedOneOf<std::uint16_t>({
+      {5, rc::gen::inRange<std::uint16_t>(0, 16)},
+      {2, rc::gen::element<std::uint16_t>(0xFFFFu, 0xFFFEu, 0x8000u)},
+      {3, rc::gen::arbitrary<std::uint16_t>()},
+  });
+}
+
+inline rc::Gen<std::uint8_t> gen_u8_any() {
+  return rc::gen::weightedOneOf<std::uint8_t>({
+      {3, rc::gen::inRange<std::uint8_t>(0, 16)},
+      {1, rc::gen::element<std::uint8_t>(0xFF, 0x80, 0x7F)},
+      {2, rc::gen::arbitrary<std::uint8_t>()},
+  });
+}
+
+// Mostly one of Table 2-1's eight values, sometimes a byte that is none.
+inline rc::Gen<std::uint8_t> gen_layer_type_byte() {
+  return rc::gen::weightedOneOf<std::uint8_t>({
+      {6, rc::gen::element<std::uint8_t>(0, 1, 2, 128, 129, 130, 131, 132)},
+      {1, rc::gen::element<std::uint8_t>(3, 127, 133, 255)},
+      {1, rc::gen::arbitrary<std::uint8_t>()},
+  });
+}
+
+// Mostly REAL32 (0) or REAL64 (1), sometimes an invalid format byte.
+inline rc::Gen<std::uint8_t> gen_real_format_byte() {
+  return rc::gen::weightedOneOf<std::uint8_t>({
+      {6, rc::gen::element<std::uint8_t>(0, 1)},
+      {1, rc::gen::arbitrary<std::uint8_t>()},
+  });
+}
+
+// ---- names -----------------------------------------------------------------
+
+// One byte, biased toward the bytes that break quoting and C strings.
+inline rc::Gen<char> gen_name_byte() {
+  return rc::gen::weightedOneOf<char>({
+      {6, rc::gen::element('a', 'b', 'c', 'u', 'v', 'x', 'y', 'z', '0', '1', '_', ' ')},
+      {3, rc::gen::element('\0', '"', '\\', '\n', '\r', '\t', '#', '\x7F', '\x80', '\xFF', '\xC3', 'x')},
+      {2, rc::gen::arbitrary<char>()},
+  });
+}
+
+// Names and labels of 0..40 arbitrary bytes (valid ones are 0..15 bytes
+// without NUL). Shrinks the length first, then each byte toward 'a'.
+inline rc::Gen<std::string> gen_name() {
+  return rc::gen::weightedOneOf<std::string>({
+      {2, rc::gen::element<std::string>("", "vertex", "polygon", "uv", "weight", "crease", "ref",
+                                        "abcdefghijklmno", "abcdefghijklmnop")},
+      {5, rc::gen::mapcat(rc::gen::inRange(0, 41),
+                          [](int n) { return rc::gen::container<std::string>(static_cast<std::size_t>(n),
+                                                                             gen_name_byte()); })},
+  });
+}
+
+// ---- whole commands --------------------------------------------------------
+
+// The generator for one field, by its type and hint.
+template <class T> rc::Gen<T> gen_field(FieldHint hint) {
+  if constexpr (std::is_same_v<T, double>) {
+    return gen_f64_any();
+  } else if constexpr (std::is_same_v<T, float>) {
+    return gen_f32_any();
+  } else if constexpr (std::is_same_v<T, std::string>) {
+    return gen_name();
+  } else if constexpr (std::is_same_v<T, std::uint32_t>) {
+    return gen_u32_any();
+  } else if constexpr (std::is_same_v<T, std::uint16_t>) {
+    return gen_u16_any();
+  } else {
+    static_assert(std::is_same_v<T, std::uint8_t>, "field types: u8/u16/u32/f32/f64/string");
+    if (hint == FieldHint::LayerType) return gen_layer_type_byte();
+    if (hint == FieldHint::RealFormat) return gen_real_format_byte();
+    return gen_u8_any();
+  }
+}
+
+// Fills every field of C (wire order, command_fields.h) with an
+// independently shrinking value. Must be called inside a generator.
+struct FieldFiller {
+  template <class T> void operator()(const char*, T& v, FieldHint hint) {
+    if constexpr (std::is_class_v<T> && !std::is_same_v<T, std::string>) {
+      for (auto& e : v) e = *gen_field<std::decay_t<decltype(e)>>(hint);
+    } else {
+      v = *gen_field<T>(hint);
+    }
+  }
+};
+
+template <class C> rc::Gen<C> gen_command_of() {
+  return rc::gen::exec([] {
+    C c;
+    visit_fields(c, FieldFiller{});
+    return c;
+  });
+}
+
+template <std::size_t I> rc::Gen<Command> gen_command_index() {
+  return rc::gen::cast<Command>(gen_command_of<std::variant_alternative_t<I, Command>>());
+}
+
+template <std::size_t... I> rc::Gen<Command> gen_command_impl(std::index_sequence<I...>) {
+  return rc::gen::oneOf(gen_command_index<I>()...);
+}
+
+// Any command of any of the 22 kinds, every field hostile-biased. Shrinks
+// toward layer_create (kind 0) and toward zero/empty fields.
+inline rc::Gen<Command> gen_command() {
+  return gen_command_impl(std::make_index_sequence<kCommandKinds>{});
+}
+
+// ---- state-aware commands --------------------------------------------------
+
+// Small pool of names, so that creases and bones hit existing layers.
+inline rc::Gen<std::string> gen_small_name() {
+  return rc::gen::weightedOneOf<std::string>({
+      {8, rc::gen::element<std::string>("a", "b", "w", "ref", "crease", "uv")},
+      {1, rc::gen::element<std::string>("", "vertex", "polygon")},
+      {1, gen_name()},
+  });
+}
+
+namespace detail {
+
+template <class Map, class Id>
+rc::Gen<Id> existing_or(const Map& m, rc::Gen<Id> otherwise) {
+  std::vector<Id> ids;
+  for (const auto& kv : m) ids.push_back(static_cast<Id>(kv.first));
+  if (ids.empty()) return otherwise;
+  return rc::gen::weightedOneOf<Id>({{4, rc::gen::elementOf(ids)}, {1, otherwise}});
+}
+
+}  // namespace detail
+
+// Mostly-valid commands for `node` as it is now: layer ids 0..5, vertex ids
+// 0..7, polygon ids 0..5, bone ids 0..4 (plus the "pick an id" values),
+// existing ids preferred, corners drawn from live vertices, names from
+// gen_small_name(); about one command in eight is fully arbitrary
+// (gen_command()). The node is read only while generating.
+inline rc::Gen<Command> gen_command_for(const Node& node) {
+  namespace rg = rc::gen;
+  using rc::Gen;
+  const Gen<std::uint16_t> layer = detail::existing_or(node.layers(), rg::inRange<std::uint16_t>(0, 6));
+  const Gen<std::uint32_t> vertex = detail::existing_or(
+      node.vertices(), rg::weightedOneOf<std::uint32_t>({{8, rg::inRange<std::uint32_t>(0, 8)},
+                                                          {1, rg::just(kNone32)}}));
+  const Gen<std::uint32_t> polygon = detail::existing_or(
+      node.polygons(), rg::weightedOneOf<std::uint32_t>({{8, rg::inRange<std::uint32_t>(0, 6)},
+                                                          {1, rg::just(kNone32)}}));
+  const Gen<std::uint16_t> bone = detail::existing_or(
+      node.bones(), rg::weightedOneOf<std::uint16_t>({{8, rg::inRange<std::uint16_t>(0, 5)},
+                                                       {1, rg::just(kNone16)}}));
+  const Gen<double> real = rg::weightedOneOf<double>({{12, rg::map(rg::inRange(-4, 5), [](int i) { return i * 0.5; })},
+                                                       {1, gen_f64_any()}});
+  const Gen<float> real32 = rg::map(real, [](double d) { return static_cast<float>(d); });
+  const Gen<std::uint32_t> value = rg::weightedOneOf<std::uint32_t>(
+      {{4, rg::inRange<std::uint32_t>(0, 4)}, {1, rg::just(kNone32)}, {1, rg::arbitrary<std::uint32_t>()}});
+  const Gen<std::uint8_t> type = rg::weightedOneOf<std::uint8_t>(
+      {{12, rg::element<std::uint8_t>(0, 1, 2, 128, 129, 130, 131, 132)}, {1, gen_layer_type_byte()}});
+  const Gen<std::string> name = gen_small_name();
+  const Gen<std::array<std::uint32_t, 4>> corners = rg::exec([vertex] {
+    std::array<std::uint32_t, 4> v{*vertex, *vertex, *vertex,
+                                   *rg::weightedOneOf<std::uint32_t>({{1, rg::just(kNone32)}, {2, vertex}})};
+    return v;
+  });
+
+  return rg::weightedOneOf<Command>({
+      {1, gen_command()},
+      {3, rg::exec([=] { return Command{cmd::LayerCreate{*layer, *name, *type, *value, *real}}; })},
+      {1, rg::exec([=] { return Command{cmd::LayerDestroy{*layer}}; })},
+      {1, rg::exec([=] { return Command{cmd::LayerSubscribe{*layer, *gen_real_format_byte()}}; })},
+      {1, rg::exec([=] { return Command{cmd::LayerUnsubscribe{*layer}}; })},
+      {4, rg::exec([=] { return Command{cmd::VertexSetXyzReal64{*layer, *vertex, *real, *real, *real}}; })},
+      {2, rg::exec([=] { return Command{cmd::VertexSetXyzReal32{*layer, *vertex, *real32, *real32, *real32}}; })},
+      {1, rg::exec([=] { return Command{cmd::VertexDelete{*vertex}}; })},
+      {2, rg::exec([=] { return Command{cmd::VertexSetUint32{*layer, *vertex, *value}}; })},
+      {1, rg::exec([=] { return Command{cmd::VertexSetReal64{*layer, *vertex, *real}}; })},
+      {1, rg::exec([=] { return Command{cmd::VertexSetReal32{*layer, *vertex, *real32}}; })},
+      {4, rg::exec([=] { return Command{cmd::PolygonSetCornerUint32{*layer, *polygon, *corners}}; })},
+      {1, rg::exec([=] { return Command{cmd::PolygonSetCornerReal64{*layer, *polygon, {*real, *real, *real, *real}}}; })},
+      {1, rg::exec([=] {
+         return Command{cmd::PolygonSetCornerReal32{*layer, *polygon, {*real32, *real32, *real32, *real32}}};
+       })},
+      {1, rg::exec([=] { return Command{cmd::PolygonDelete{*polygon}}; })},
+      {1, rg::exec([=] { return Command{cmd::PolygonSetFaceUint8{*layer, *polygon, *rg::arbitrary<std::uint8_t>()}}; })},
+      {1, rg::exec([=] { return Command{cmd::PolygonSetFaceUint32{*layer, *polygon, *value}}; })},
+      {1, rg::exec([=] { return Command{cmd::PolygonSetFaceReal64{*layer, *polygon, *real}}; })},
+      {1, rg::exec([=] { return Command{cmd::PolygonSetFaceReal32{*layer, *polygon, *real32}}; })},
+      {1, rg::exec([=] { return Command{cmd::CreaseSetVertex{*name, *value}}; })},
+      {1, rg::exec([=] { return Command{cmd::CreaseSetEdge{*name, *value}}; })},
+      {3, rg::exec([=] {
+         cmd::BoneCreate b;
+         b.bone_id = *bone;
+         b.weight = *name;
+         b.reference = *rg::weightedOneOf<std::string>({{2, rg::just(std::string())}, {1, name}});
+         b.parent = *bone;
+         b.pos = {*real, *real, *real};
+         b.rot = {*real, *real, *real, *real};
+         return Command{b};
+       })},
+      {1, rg::exec([=] { return Command{cmd::BoneDestroy{*bone}}; })},
+  });
+}
+
+// A sequence of `n` state-aware commands starting from a fresh node with
+// `limits`: each command is drawn for the state the previous ones left.
+inline rc::Gen<std::vector<Command>> gen_command_sequence(std::size_t n, NodeLimits limits = {}) {
+  return rc::gen::exec([n, limits] {
+    Node node(limits);
+    std::vector<Command> out;
+    for (std::size_t i = 0; i < n; ++i) {
+      out.push_back(*gen_command_for(node));
+      node.apply(out.back());
+    }
+    return out;
+  });
+}
+
+}  // namespace gen
+
+namespace cmd {
+// RapidCheck prints counterexamples through showValue, found by argument-
+// dependent lookup in the namespaces of Command's alternatives.
+inline void showValue(const Command& c, std::ostream& os) { os << print_command(c); }
+}  // namespace cmd
+
+}  // namespace vgc
+
+namespace rc {
+template <> struct Arbitrary<vgc::Command> {
+  static Gen<vgc::Command> arbitrary() { return vgc::gen::gen_command(); }
+};
+}  // namespace rc
