@@ -51,13 +51,16 @@ struct Visitor : PMP::Default_orientation_visitor {
 MeshStatus check_input(const MeshArrays& m, int* bad_face) {
   *bad_face = -1;
   if (m.face_offsets.size() != m.face_sizes.size()) return MeshStatus::BadArrays;
+  long long expected_offset = 0;
   for (std::size_t f = 0; f < m.face_sizes.size(); ++f) {
     const long long o = m.face_offsets[f], n = m.face_sizes[f];
-    if (n < 0 || o < 0 || o + n > static_cast<long long>(m.face_vertices.size())) {
+    if (n < 0 || o != expected_offset || o + n > static_cast<long long>(m.face_vertices.size())) {
       *bad_face = static_cast<int>(f);
       return MeshStatus::BadArrays;
     }
+    expected_offset += n;
   }
+  if (expected_offset != static_cast<long long>(m.face_vertices.size())) return MeshStatus::BadArrays;
   for (std::size_t f = 0; f < m.face_sizes.size(); ++f) {
     const int o = m.face_offsets[f], n = m.face_sizes[f];
     MeshStatus s = MeshStatus::Ok;
@@ -106,16 +109,29 @@ CgalManifoldReport cgal_classify_mesh(const MeshArrays& m) {
   for (const auto& [v, n] : heard->singular_vertices) r.singular_vertices.emplace_back(v, n);
   r.reversed_polygon_count = heard->reversed;
   r.oriented_soup_is_polygon_mesh = PMP::is_polygon_soup_a_polygon_mesh(oriented);
-  if (r.non_manifold_edges.empty() && r.singular_vertices.empty()) {
-    r.orientable = r.oriented_soup_is_polygon_mesh;
-    r.consistently_oriented = r.oriented_soup_is_polygon_mesh && r.reversed_polygon_count == 0;
+  if (!r.oriented_soup_is_polygon_mesh) {
+    // A conflict edge kept both ends: it is still used twice one way.
+    r.orientable = false;
+    r.consistently_oriented = false;
+    return r;
   }
-
-  if (!r.oriented_soup_is_polygon_mesh) return r;
   Mesh mesh;
   PMP::polygon_soup_to_polygon_mesh(oriented_points, oriented, mesh);
   r.mesh_built = true;
   r.mesh_matches_input = no_duplication;
+
+  // An input edge that became several mesh edges was cut by CGAL: either a
+  // non-manifold edge or an orientation conflict.
+  std::map<std::pair<int, int>, int> pieces;
+  for (Mesh::Edge_index e : mesh.edges()) {
+    const int a = index_of(mesh, mesh.vertex(e, 0)), b = index_of(mesh, mesh.vertex(e, 1));
+    ++pieces[{std::min(a, b), std::max(a, b)}];
+  }
+  bool conflict_cut = false;
+  for (const auto& [e, n] : pieces)
+    if (n > 1 && !heard->non_manifold_edges.count(e)) conflict_cut = true;
+  r.orientable = !conflict_cut;
+  r.consistently_oriented = !conflict_cut && r.reversed_polygon_count == 0;
 
   r.vertex_count = static_cast<int>(mesh.number_of_vertices());
   for (Mesh::Vertex_index v : mesh.vertices())

@@ -28,11 +28,16 @@
 //  - oriented_soup_is_polygon_mesh: is_polygon_soup_a_polygon_mesh on the
 //    re-oriented (and possibly vertex-duplicated) soup; only then is
 //    PMP::polygon_soup_to_polygon_mesh called (mesh_built).
-//  - orientable / consistently_oriented: known only when CGAL found no
-//    non-manifold edge and no singular vertex; then orientable ==
-//    oriented_soup_is_polygon_mesh (an orientation conflict left uncut
-//    leaves a repeated directed edge) and consistently_oriented == orientable
-//    && no polygon reversed.
+//  - orientable (faces compared across edges with exactly two uses, as in
+//    the reference): false when the re-oriented soup is not a polygon mesh
+//    (an orientation conflict whose ends were not duplicated leaves a
+//    directed edge used twice), or when an input edge that CGAL did not
+//    report as non-manifold became several edges of the built mesh (a
+//    conflict edge cut open by duplicating an end); true otherwise.
+//    consistently_oriented == orientable && no polygon reversed (CGAL keeps
+//    each component's first polygon and reverses only disagreeing ones).
+//    Both are set whenever status == Ok (std::optional kept so that a
+//    comparison states which answers it relies on).
 //  - mesh answers (Surface_mesh built from the oriented soup, isolated points
 //    inserted): CGAL::is_closed, CGAL::is_valid_polygon_mesh,
 //    PMP::non_manifold_vertices, PMP::extract_boundary_cycles (as source

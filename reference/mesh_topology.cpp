@@ -35,14 +35,17 @@ MeshStatus check_mesh(const MeshArrays& mesh, int* bad_face) {
   const int faces = mesh.face_count();
   const std::size_t corners = mesh.face_vertices.size();
   if (mesh.face_offsets.size() != mesh.face_sizes.size()) return MeshStatus::BadArrays;
+  long long running = 0;  // faces must tile face_vertices in order
   for (int f = 0; f < faces; ++f) {
-    const long size = mesh.face_sizes[static_cast<std::size_t>(f)];
-    const long offset = mesh.face_offsets[static_cast<std::size_t>(f)];
-    if (size < 0 || offset < 0 || static_cast<std::size_t>(offset + size) > corners) {
+    const long long size = mesh.face_sizes[static_cast<std::size_t>(f)];
+    const long long offset = mesh.face_offsets[static_cast<std::size_t>(f)];
+    if (size < 0 || offset != running || static_cast<unsigned long long>(offset + size) > corners) {
       if (bad_face) *bad_face = f;
       return MeshStatus::BadArrays;
     }
+    running += size;
   }
+  if (static_cast<std::size_t>(running) != corners) return MeshStatus::BadArrays;
   const int vertices = mesh.vertex_count();
   std::vector<int> seen;
   for (int f = 0; f < faces; ++f) {
@@ -146,8 +149,8 @@ MeshTopology classify_mesh(const MeshArrays& mesh) {
   const int vertices = mesh.vertex_count();
   const auto& fv = mesh.face_vertices;
 
-  // Corners: only those inside some face (face_vertices may hold unused
-  // entries if a test filled it by hand; they get face -1 and no edge).
+  // Corners: check_mesh made the faces tile face_vertices, so every corner
+  // has exactly one face (the "< 0" guards below are belt and braces).
   const int corners = static_cast<int>(fv.size());
   t.corner_face.assign(static_cast<std::size_t>(corners), -1);
   t.corner_edge.assign(static_cast<std::size_t>(corners), -1);

@@ -58,7 +58,7 @@ namespace vgc {
 // Validity of a MeshArrays as input to the derived-geometry functions.
 enum class MeshStatus {
   Ok,
-  BadArrays,        // face_offsets/face_sizes/face_vertices disagree (size < 0, offset out of range)
+  BadArrays,        // face_offsets/face_sizes/face_vertices disagree (see check_mesh)
   TooFewCorners,    // a face with fewer than 3 corners
   IndexOutOfRange,  // a corner names no vertex (< 0 or >= vertex_count())
   RepeatedVertex,   // a face names one vertex twice
@@ -69,8 +69,11 @@ enum class VertexKind { Isolated, Disc, HalfDisc, NonManifold };
 const char* to_string(VertexKind k);
 
 // Checks `mesh` without building anything. BadArrays is checked over all
-// faces first (face_offsets.size() must equal face_sizes.size(), each
-// 0 <= size, 0 <= offset, offset + size <= face_vertices.size()); then
+// faces first: face_offsets.size() must equal face_sizes.size(), and the
+// faces must tile face_vertices in order (size >= 0, offset = the sum of the
+// sizes before it, as update_face_offsets makes it; the sizes sum to
+// face_vertices.size()); bad_face is the first face breaking that, or -1
+// when only the array lengths disagree. Then
 // faces in order, the first face failing wins, testing TooFewCorners,
 // IndexOutOfRange, RepeatedVertex in that order. *bad_face (if given)
 // receives that face, or -1. Never throws.

@@ -135,6 +135,23 @@ inline MeshArrays moebius(int n) {
   return make_mesh(p, f);
 }
 
+// A w x h quad Klein bottle (w, h >= 3): the torus grid with column w glued
+// to column 0 upside down. Closed, non-orientable, Euler characteristic 0.
+inline MeshArrays klein_bottle(int w, int h) {
+  std::vector<P3> p;
+  for (int j = 0; j < h; ++j)
+    for (int i = 0; i < w; ++i) p.push_back({double(i), double(j), double((i * 7 + j * 3) % 5) * 0.1});
+  auto id = [w, h](int i, int j) {
+    j %= h;
+    if (i == w) return ((h - j) % h) * w;
+    return j * w + i;
+  };
+  Faces f;
+  for (int j = 0; j < h; ++j)
+    for (int i = 0; i < w; ++i) f.push_back({id(i, j), id(i, j + 1), id(i + 1, j + 1), id(i + 1, j)});
+  return make_mesh(p, f);
+}
+
 // Random polygons (3 or 4 distinct corners) over `vertices` vertices.
 inline MeshArrays random_soup(std::mt19937& rng, int vertices, int faces) {
   std::vector<P3> p;

@@ -73,9 +73,9 @@ std::string compare(const MeshTopology& r, const CgalManifoldReport& c) {
       if (r.vertex_fan_counts[static_cast<std::size_t>(v)] != n) return fail("fan count of vertex " + std::to_string(v));
   }
 
-  if (r.is_manifold && r.orientable && !c.orientable) return fail("CGAL gave no orientability for a manifold mesh");
-  if (c.orientable && *c.orientable != r.orientable) return fail("orientable");
-  if (c.consistently_oriented && *c.consistently_oriented != r.consistently_oriented) return fail("consistently_oriented");
+  if (!c.orientable || !c.consistently_oriented) return fail("CGAL gave no orientability");
+  if (*c.orientable != r.orientable) return fail("orientable");
+  if (*c.consistently_oriented != r.consistently_oriented) return fail("consistently_oriented");
 
   if (r.is_manifold && r.orientable && !c.mesh_matches_input) return fail("CGAL built no mesh for a manifold orientable input");
   if (!c.mesh_matches_input) return "";
@@ -204,6 +204,21 @@ TEST(MeshTopologyCgal, MoebiusStrip) {
   EXPECT_EQ(compare_mesh(m), "");
 }
 
+// Closed and non-orientable: CGAL's re-orientation meets a conflict on
+// an edge whose ends stay manifold, so it can answer "not orientable".
+TEST(MeshTopologyCgal, KleinBottle) {
+  const MeshArrays m = test::klein_bottle(4, 3);
+  const MeshTopology t = classify_mesh(m);
+  EXPECT_TRUE(t.closed);
+  EXPECT_TRUE(t.is_manifold);
+  EXPECT_FALSE(t.orientable);
+  EXPECT_FALSE(t.consistently_oriented);
+  EXPECT_EQ(t.euler_characteristic, 0);
+  const CgalManifoldReport c = cgal_classify_mesh(m);
+  EXPECT_EQ(c.orientable, std::optional<bool>(false));
+  EXPECT_EQ(compare(t, c), "");
+}
+
 TEST(MeshTopologyCgal, TorusAndIsolatedVertex) {
   const MeshArrays m = test::add_isolated_vertex(test::torus(4, 3));
   const MeshTopology t = classify_mesh(m);
@@ -239,6 +254,15 @@ TEST(MeshTopologyCgal, InvalidInputGivesAStatus) {
   EXPECT_EQ(classify_mesh(bad).status, MeshStatus::BadArrays);
   EXPECT_EQ(compare_mesh(bad), "");
   bad = test::spec_cube();
+  bad.face_offsets[2] = 4;  // face 2 overlaps face 1
+  EXPECT_EQ(classify_mesh(bad).status, MeshStatus::BadArrays);
+  EXPECT_EQ(classify_mesh(bad).bad_face, 2);
+  EXPECT_EQ(compare_mesh(bad), "");
+  bad = test::spec_cube();
+  bad.face_vertices.push_back(0);  // a corner in no face
+  EXPECT_EQ(classify_mesh(bad).status, MeshStatus::BadArrays);
+  EXPECT_EQ(compare_mesh(bad), "");
+  bad = test::spec_cube();
   bad.face_offsets.pop_back();
   EXPECT_EQ(classify_mesh(bad).status, MeshStatus::BadArrays);
   EXPECT_EQ(compare_mesh(bad), "");
@@ -247,13 +271,14 @@ TEST(MeshTopologyCgal, InvalidInputGivesAStatus) {
 // ---- random meshes ----
 
 MeshArrays random_base(std::mt19937& rng) {
-  switch (rng() % 6) {
+  switch (rng() % 7) {
     case 0: return test::spec_cube();
     case 1: return test::octahedron();
     case 2: return test::tetrahedron();
     case 3: return test::grid(1 + static_cast<int>(rng() % 4), 1 + static_cast<int>(rng() % 3), rng() % 2 == 0);
     case 4: return test::torus(3 + static_cast<int>(rng() % 3), 3 + static_cast<int>(rng() % 3));
-    default: return test::moebius(3 + static_cast<int>(rng() % 4));
+    case 5: return test::moebius(3 + static_cast<int>(rng() % 4));
+    default: return test::klein_bottle(3 + static_cast<int>(rng() % 3), 3 + static_cast<int>(rng() % 3));
   }
 }
 
@@ -310,6 +335,31 @@ RC_GTEST_PROP(MeshTopologyCgal, BrokenMeshesGetTheSameStatus, (unsigned seed)) {
   const MeshTopology t = classify_mesh(m);
   RC_ASSERT(t.status != MeshStatus::Ok);
   RC_ASSERT(compare(t, cgal_classify_mesh(m)) == "");
+}
+
+// Arbitrary arrays (sizes, offsets and indices anywhere near the valid
+// range): no crash, and both sides give the same status and answers.
+RC_GTEST_PROP(MeshTopologyCgal, ArbitraryArraysNeverCrash, ()) {
+  const int vertices = *rc::gen::inRange(0, 9);
+  // Sizes: mostly 3 or 4, sometimes 0..2, rarely -1.
+  const auto face_count = static_cast<std::size_t>(*rc::gen::inRange(0, 12));
+  const auto sizes = *rc::gen::container<std::vector<int>>(face_count, rc::gen::map(rc::gen::inRange(0, 200), [](int x) {
+    return x == 0 ? -1 : x < 8 ? x % 3 : 3 + x % 2;
+  }));
+  MeshArrays m;
+  m.positions.assign(static_cast<std::size_t>(vertices), {0, 0, 0});
+  m.face_sizes = sizes;
+  update_face_offsets(m);
+  int total = 0;
+  for (int n : sizes) total += n;
+  const int lowest = *rc::gen::inRange(-1, 1);
+  const int past_highest = std::max(lowest + 1, vertices + *rc::gen::inRange(0, 2));
+  m.face_vertices = *rc::gen::container<std::vector<int>>(static_cast<std::size_t>(std::max(total, 0)), rc::gen::inRange(lowest, past_highest));
+  if (*rc::gen::inRange(0, 8) == 0 && !m.face_offsets.empty()) m.face_offsets[0] += *rc::gen::inRange(-2, 3);
+  if (*rc::gen::inRange(0, 8) == 0) m.face_vertices.push_back(0);
+  const MeshTopology t = classify_mesh(m);
+  RC_ASSERT(compare(t, cgal_classify_mesh(m)) == "");
+  RC_TAG(to_string(t.status));
 }
 
 // Relabelling vertices, rotating and reordering faces changes no count.
