@@ -138,8 +138,16 @@ CgalManifoldReport cgal_classify_mesh(const MeshArrays& m) {
     if (mesh.is_isolated(v)) ++r.isolated_vertex_count;
   r.edge_count = static_cast<int>(mesh.number_of_edges());
   r.face_count = static_cast<int>(mesh.number_of_faces());
-  for (Mesh::Edge_index e : mesh.edges())
-    if (mesh.is_border(e)) ++r.border_edge_count;
+  for (Mesh::Edge_index e : mesh.edges()) {
+    if (!mesh.is_border(e)) continue;
+    ++r.border_edge_count;
+    const int a = index_of(mesh, mesh.vertex(e, 0)), b = index_of(mesh, mesh.vertex(e, 1));
+    r.border_edges.push_back({std::min(a, b), std::max(a, b)});
+  }
+  std::sort(r.border_edges.begin(), r.border_edges.end());
+  for (Mesh::Vertex_index v : mesh.vertices())
+    if (!mesh.is_isolated(v) && mesh.is_border(v, true)) r.border_vertices.push_back(index_of(mesh, v));
+  std::sort(r.border_vertices.begin(), r.border_vertices.end());
   r.euler_characteristic = static_cast<long>(r.vertex_count - r.isolated_vertex_count) - r.edge_count + r.face_count;
   r.closed = CGAL::is_closed(mesh);
   r.valid_polygon_mesh = CGAL::is_valid_polygon_mesh(mesh);

@@ -79,6 +79,8 @@ struct CgalManifoldReport {
   int edge_count = 0;
   int face_count = 0;
   int border_edge_count = 0;
+  std::vector<std::array<int, 2>> border_edges;   // {a, b}, a < b, sorted (Surface_mesh::is_border(e))
+  std::vector<int> border_vertices;               // sorted (Surface_mesh::is_border(v)), isolated excluded
   long euler_characteristic = 0;  // (vertex_count - isolated) - edges + faces
   bool closed = false;
   bool valid_polygon_mesh = false;

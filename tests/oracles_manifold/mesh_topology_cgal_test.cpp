@@ -87,6 +87,14 @@ std::string compare(const MeshTopology& r, const CgalManifoldReport& c) {
   if (c.euler_characteristic != r.euler_characteristic) return fail("Euler characteristic");
   if (c.border_edge_count != r.boundary_edge_count) return fail("boundary edge count");
   if (c.edge_count - c.border_edge_count != r.interior_edge_count) return fail("interior edge count");
+  std::vector<std::array<int, 2>> ref_border;
+  for (const MeshEdge& e : r.edges)
+    if (e.use_count == 1) ref_border.push_back({e.a, e.b});
+  if (ref_border != c.border_edges) return fail("boundary edges");
+  std::vector<int> half_discs;
+  for (std::size_t v = 0; v < r.vertex_kinds.size(); ++v)
+    if (r.vertex_kinds[v] == VertexKind::HalfDisc) half_discs.push_back(static_cast<int>(v));
+  if (half_discs != c.border_vertices) return fail("half-disc vertices vs CGAL border vertices");
   if (c.closed != r.closed) return fail("closed");
   if (c.valid_polygon_mesh != (r.isolated_vertex_count == 0)) return fail("is_valid_polygon_mesh");
   if (!c.mesh_non_manifold_vertices.empty()) return fail("non_manifold_vertices on the built mesh");
