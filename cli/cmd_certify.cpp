@@ -1,0 +1,169 @@
+// cmd_certify.cpp — `vgc certify`: certify an implementation against the
+// clause catalog and write reports/<implementation>/<run>/.
+//
+// Exit codes (verdict.h): 0 conformant, 1 not conformant, 2 usage or
+// infrastructure error or an incomplete run.
+#include <fmt/core.h>
+
+#include <ctime>
+#include <filesystem>
+#include <memory>
+
+#include "baseline.h"
+#include "exec_implementation.h"  // shell_quote
+#include "implementation.h"
+#include "progress_line.h"
+#include "report.h"
+#include "runner.h"
+#include "subcommand.h"
+#include "verdict.h"
+
+namespace vgc::cli {
+namespace {
+
+struct Options {
+  std::string impl = "reference";
+  std::uint64_t seed = 1;
+  int cases = 100;
+  int max_size = 40;
+  double budget = 300;
+  double timeout = 5;
+  std::string clauses = "*";
+  std::string baseline;
+  std::string shard = "1/1";
+  std::string reports = "reports";
+  bool quiet = false;
+};
+
+std::string utc_now() {
+  std::time_t t = std::time(nullptr);
+  std::tm tm{};
+  gmtime_r(&t, &tm);
+  char buf[32];
+  std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", &tm);
+  return buf;
+}
+
+bool parse_shard(const std::string& s, int* index, int* count) {
+  int i = 0, n = 0;
+  char slash = 0, extra = 0;
+  if (std::sscanf(s.c_str(), "%d%c%d%c", &i, &slash, &n, &extra) != 3 || slash != '/' || n < 1 || i < 1 || i > n)
+    return false;
+  *index = i - 1;
+  *count = n;
+  return true;
+}
+
+std::string rerun_command(const Options& o) {
+  std::string c = "./vgc certify --impl " + shell_quote(o.impl) + " --seed " + std::to_string(o.seed) +
+                  " --cases " + std::to_string(o.cases) + " --budget " + fmt::format("{:g}", o.budget);
+  if (o.clauses != "*") c += " --clauses " + shell_quote(o.clauses);
+  if (o.shard != "1/1") c += " --shard " + o.shard;
+  if (!o.baseline.empty()) c += " --baseline " + shell_quote(o.baseline);
+  return c;
+}
+
+int run(const Options& o) {
+  RunOptions ro;
+  ro.seed = o.seed;
+  ro.cases = o.cases;
+  ro.max_size = o.max_size;
+  ro.budget_seconds = o.budget;
+  ro.clause_glob = o.clauses;
+  if (!parse_shard(o.shard, &ro.shard_index, &ro.shard_count)) {
+    fmt::print(stderr, "vgc certify: --shard takes I/N with 1 <= I <= N, got '{}'\n", o.shard);
+    return 2;
+  }
+  if (o.cases < 1 || o.budget <= 0 || o.timeout <= 0) {
+    fmt::print(stderr, "vgc certify: --cases, --budget and --timeout must be positive\n");
+    return 2;
+  }
+  Baseline baseline;
+  if (!o.baseline.empty()) {
+    std::string error;
+    if (!load_baseline(o.baseline, &baseline, &error)) {
+      fmt::print(stderr, "vgc certify: {}\n", error);
+      return 2;
+    }
+  }
+  OpenOptions open;
+  open.timeout_seconds = o.timeout;
+  std::string error;
+  auto sut = open_implementation(o.impl, open, &error);
+  if (!sut) {
+    fmt::print(stderr, "vgc certify: {}\n", error);
+    return 2;
+  }
+
+  ReportContext ctx;
+  ctx.implementation_spec = o.impl;
+  ctx.command_line = rerun_command(o);
+  ctx.started = utc_now();
+  if (!o.baseline.empty()) {
+    ctx.baseline = &baseline;
+    ctx.baseline_path = o.baseline;
+  }
+  fmt::print(stderr, "vgc certify: {} (seed {}, {} cases per property, budget {:g} s, shard {})\n", o.impl, o.seed,
+             o.cases, o.budget, o.shard);
+
+  ProgressLine line(!o.quiet);
+  ro.progress = [&line](const RunProgress& p) {
+    line.update(fmt::format("[{}/{}] {:<18} {:>4}/{} cases{}  {:.1f} s", p.property_index + 1, p.property_count,
+                            p.property, p.cases_done, p.cases_total, p.shrinking ? "  shrinking a failure" : "",
+                            p.elapsed_seconds));
+  };
+  const RunResult result = run_certification(*sut, ro);
+  line.finish();
+  const Verdict verdict = judge(result, ctx.baseline);
+  ctx.run_dir = default_run_dir(o.reports, result, ctx);
+  std::filesystem::create_directories(std::filesystem::path(ctx.run_dir).parent_path());
+  if (!write_report(o.reports, result, verdict, ctx, &error)) {
+    fmt::print(stderr, "vgc certify: {}\n", error);
+    return 2;
+  }
+
+  int pass = 0;
+  for (const auto& c : result.clauses) pass += c.status == "pass";
+  fmt::print("{}: {} ({} of {} clauses pass, {:.1f} s)\n", o.impl, verdict.name, pass, result.clauses.size(),
+             result.seconds);
+  for (const auto& co : result.clauses) {
+    if (!co.finding) continue;
+    const bool known = ctx.baseline && ctx.baseline->reasons.count(std::string(co.clause->id));
+    const char* tag = co.clause->level == ClauseLevel::Should ? "should" : known ? "known" : co.status.c_str();
+    fmt::print("  {:<8} {:<24} {}\n", tag, co.clause->id, co.finding->message);
+    fmt::print("           replay: {}\n",
+               replay_command((std::filesystem::path(ctx.run_dir) / counterexample_path(co)).string(), o.impl));
+  }
+  for (const auto& id : verdict.stale_baseline)
+    fmt::print("  stale    {:<24} in the baseline but passes now: remove it\n", id);
+  for (const auto& p : result.properties)
+    if (p.status == "incomplete") fmt::print("  incomplete {}: {}\n", p.id, p.note);
+  fmt::print("report: {}/summary.md\n", ctx.run_dir);
+  fmt::print("re-run: {}\n", ctx.command_line);
+  return verdict.exit_code;
+}
+
+void add(CLI::App& app, int* exit_code) {
+  auto o = std::make_shared<Options>();
+  auto* sub = app.add_subcommand("certify", "Certify an implementation of the geometry node against the spec");
+  sub->add_option("--impl", o->impl, "reference | exec:CMD | plugin:PATH")->capture_default_str();
+  sub->add_option("--seed", o->seed, "Seed; the same seed gives the same cases and verdicts")->capture_default_str();
+  sub->add_option("--cases", o->cases, "Test cases per property")->capture_default_str();
+  sub->add_option("--max-size", o->max_size, "RapidCheck size: longest command sequences")->capture_default_str();
+  sub->add_option("--budget", o->budget, "Wall-time limit in seconds; a run cut short is 'incomplete' (exit 2)")
+      ->capture_default_str();
+  sub->add_option("--timeout", o->timeout, "Seconds an out-of-process implementation has per answer")
+      ->capture_default_str();
+  sub->add_option("--clauses", o->clauses, "Clause ids to check: comma-separated glob patterns")->capture_default_str();
+  sub->add_option("--baseline", o->baseline, "File of known deviations: CLAUSE-ID reason, one per line");
+  sub->add_option("--shard", o->shard, "Run shard I of N (1-based); shards together give the full verdicts")
+      ->capture_default_str();
+  sub->add_option("--reports", o->reports, "Directory for reports")->capture_default_str();
+  sub->add_flag("--quiet", o->quiet, "No progress line");
+  sub->callback([o, exit_code] { *exit_code = run(*o); });
+}
+
+const Subcommand kCertify{add};
+
+}  // namespace
+}  // namespace vgc::cli

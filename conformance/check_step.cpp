@@ -1,0 +1,128 @@
+// check_step.cpp — see check_step.h.
+#include "check_step.h"
+
+#include "attribution.h"
+#include "clause.h"
+#include "command_text.h"
+#include "document_diff.h"
+#include "snapshot.h"
+
+namespace vgc {
+namespace {
+
+FindingStatus status_of(CallStatus s) {
+  switch (s) {
+    case CallStatus::Crash: return FindingStatus::Crash;
+    case CallStatus::Timeout: return FindingStatus::Timeout;
+    default: return FindingStatus::Fail;
+  }
+}
+
+Finding call_failure(std::string_view clause, CallStatus s, const std::string& what, const std::string& detail) {
+  Finding f;
+  f.status = status_of(s);
+  f.clause = s == CallStatus::ProtocolError ? "ACCEPT-1" : std::string(clause);
+  f.message = std::string(call_status_name(s)) + " while " + what + (detail.empty() ? "" : ": " + detail);
+  return f;
+}
+
+long bone_id_of(const std::string& line) {
+  // "bone_pose <id> ..."
+  const auto sp = line.find(' ');
+  if (sp == std::string::npos) return -1;
+  try {
+    return std::stol(line.substr(sp + 1));
+  } catch (...) {
+    return -1;
+  }
+}
+
+}  // namespace
+
+const char* finding_status_name(FindingStatus s) {
+  switch (s) {
+    case FindingStatus::Fail: return "fail";
+    case FindingStatus::Crash: return "crash";
+    case FindingStatus::Timeout: return "timeout";
+  }
+  return "?";
+}
+
+StepResult check_step(const Node& before, const Command& c, Implementation& sut, Node* after) {
+  StepResult result;
+  *after = before;
+  const Reason expected = after->apply(c);
+  const std::string text = print_command(c);
+
+  const Answer answer = sut.apply(c);
+  if (answer.status != CallStatus::Ok) {
+    const auto clause = expected == Reason::Ok ? clause_for_acceptance(c, before)
+                                               : clause_for_rejection(c, expected, before);
+    result.failure = call_failure(clause, answer.status, "applying `" + text + "`", answer.detail);
+    return result;
+  }
+  const std::string expected_answer =
+      expected == Reason::Ok ? "ok" : "rejected " + std::string(reason_name(expected));
+  const std::string observed_answer = answer.applied ? "ok" : "rejected " + answer.reason;
+  if (answer.applied != (expected == Reason::Ok)) {
+    Finding f;
+    f.clause = std::string(expected == Reason::Ok ? clause_for_acceptance(c, before)
+                                                  : clause_for_rejection(c, expected, before));
+    f.message = "`" + text + "`: expected " + expected_answer + ", observed " + observed_answer;
+    result.failure = f;
+    return result;
+  }
+  if (!answer.applied && answer.reason != reason_name(expected)) {
+    Finding f;
+    f.clause = "REASON-1";
+    f.message = "`" + text + "`: expected " + expected_answer + ", observed " + observed_answer;
+    result.notes.push_back(f);
+  }
+
+  const Document snap = sut.snapshot();
+  if (snap.status != CallStatus::Ok) {
+    result.failure = call_failure("STABLE-1", snap.status, "reading the snapshot after `" + text + "`", snap.detail);
+    return result;
+  }
+  if (auto d = diff_documents(print_snapshot(*after), snap.text)) {
+    Finding f;
+    const bool missing_or_extra = d->expected_line.empty() || d->observed_line.empty();
+    f.clause = expected == Reason::Ok
+                   ? std::string(clause_for_snapshot(c, before, *after, d->kind, missing_or_extra))
+                   : "ATOMIC-1";
+    f.message = "after `" + text + "` (" + observed_answer + "), snapshot: " + d->describe();
+    result.failure = f;
+    return result;
+  }
+  const Document derived = sut.derived();
+  if (derived.status != CallStatus::Ok) {
+    result.failure = call_failure("STABLE-1", derived.status, "reading the derived document after `" + text + "`",
+                                  derived.detail);
+    return result;
+  }
+  if (auto d = diff_documents(print_derived(*after), derived.text)) {
+    Finding f;
+    const std::string& line = d->expected_line.empty() ? d->observed_line : d->expected_line;
+    f.clause = expected == Reason::Ok ? std::string(clause_for_derived(*after, d->kind, bone_id_of(line)))
+                                      : "ATOMIC-1";
+    f.message = "after `" + text + "` (" + observed_answer + "), derived: " + d->describe();
+    result.failure = f;
+  }
+  return result;
+}
+
+std::optional<Finding> check_state(const Node& expected, Implementation& sut, const char* clause_if_different) {
+  const Document snap = sut.snapshot();
+  if (snap.status != CallStatus::Ok)
+    return call_failure("STABLE-1", snap.status, "reading the snapshot of a fresh node", snap.detail);
+  if (auto d = diff_documents(print_snapshot(expected), snap.text))
+    return Finding{clause_if_different, FindingStatus::Fail, "fresh node snapshot: " + d->describe()};
+  const Document derived = sut.derived();
+  if (derived.status != CallStatus::Ok)
+    return call_failure("STABLE-1", derived.status, "reading the derived document of a fresh node", derived.detail);
+  if (auto d = diff_documents(print_derived(expected), derived.text))
+    return Finding{clause_if_different, FindingStatus::Fail, "fresh node derived: " + d->describe()};
+  return std::nullopt;
+}
+
+}  // namespace vgc

@@ -1,0 +1,47 @@
+// check_step.h — one command, run on the reference and on an implementation,
+// compared, and any difference attributed to a clause.
+//
+// Spec: every clause of the catalog (clause.h); attribution.h says which.
+//
+// Rationale: this is the model-versus-implementation comparison that every
+// property (rc::state commands, property.h) and `vgc replay` share, so a
+// counterexample replays exactly as it failed. After each command it
+// compares (1) applied or rejected, (2) the reason code (SHOULD level),
+// (3) the snapshot, (4) the derived document. The first MUST-level
+// difference ends the check; SHOULD-level ones are returned as notes.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "command.h"
+#include "implementation.h"
+#include "node.h"
+
+namespace vgc {
+
+enum class FindingStatus { Fail, Crash, Timeout };
+const char* finding_status_name(FindingStatus s);  // "fail", "crash", "timeout"
+
+struct Finding {
+  std::string clause;          // catalog id
+  FindingStatus status = FindingStatus::Fail;
+  std::string message;         // expected versus observed, one paragraph
+};
+
+struct StepResult {
+  std::optional<Finding> failure;  // a MUST or IMPLEMENTATION-DEFINED clause broken
+  std::vector<Finding> notes;      // SHOULD clauses broken (the verdict stands)
+};
+
+// Applies `c` to a copy of `before` and to `sut` (which must hold the same
+// state as `before`), and compares. On return *after holds the reference's
+// state after `c`. Never throws for any command or any answer.
+StepResult check_step(const Node& before, const Command& c, Implementation& sut, Node* after);
+
+// Compares the implementation's documents with the reference node's, with
+// no command involved (used after reset). nullopt when equal.
+std::optional<Finding> check_state(const Node& expected, Implementation& sut, const char* clause_if_different);
+
+}  // namespace vgc

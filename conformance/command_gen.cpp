@@ -1,0 +1,429 @@
+// command_gen.cpp — see command_gen.h.
+#include "command_gen.h"
+
+#include <cfloat>
+#include <cmath>
+#include <cstring>
+#include <limits>
+
+namespace vgc {
+namespace {
+
+using rc::Gen;
+namespace gen = rc::gen;
+
+// What the generators need to know of the model, copied out of it.
+struct View {
+  std::vector<std::uint32_t> vertices, polygons;
+  std::vector<std::uint16_t> layers;  // non-base layer ids
+  std::vector<std::string> names;     // all layer names
+  std::vector<std::uint16_t> vertex_uint_layers, vertex_real_layers, vertex_xyz_layers;
+  std::vector<std::uint16_t> corner_uint_layers, corner_real_layers, face_u8_layers, face_u32_layers,
+      face_real_layers;
+  std::vector<std::string> vertex_uint_names, vertex_real_names, corner_uint_names;
+  std::vector<std::uint16_t> bones;
+};
+
+View view_of(const Node& m) {
+  View v;
+  for (const auto& [id, s] : m.vertices()) v.vertices.push_back(id);
+  for (const auto& [id, s] : m.polygons()) v.polygons.push_back(id);
+  for (const auto& [id, l] : m.layers()) {
+    v.names.push_back(l.name);
+    if (id < 2) continue;
+    v.layers.push_back(id);
+    switch (l.type) {
+      case LayerType::VertexXyz: v.vertex_xyz_layers.push_back(id); break;
+      case LayerType::VertexUint32:
+        v.vertex_uint_layers.push_back(id);
+        v.vertex_uint_names.push_back(l.name);
+        break;
+      case LayerType::VertexReal:
+        v.vertex_real_layers.push_back(id);
+        v.vertex_real_names.push_back(l.name);
+        break;
+      case LayerType::PolygonCornerUint32:
+        v.corner_uint_layers.push_back(id);
+        v.corner_uint_names.push_back(l.name);
+        break;
+      case LayerType::PolygonCornerReal: v.corner_real_layers.push_back(id); break;
+      case LayerType::PolygonFaceUint8: v.face_u8_layers.push_back(id); break;
+      case LayerType::PolygonFaceUint32: v.face_u32_layers.push_back(id); break;
+      case LayerType::PolygonFaceReal: v.face_real_layers.push_back(id); break;
+    }
+  }
+  for (const auto& [id, b] : m.bones()) v.bones.push_back(id);
+  return v;
+}
+
+// Mostly one of `live`, else one of `others`.
+template <class T> Gen<T> pick(const std::vector<T>& live, Gen<T> others) {
+  if (live.empty()) return others;
+  return gen::weightedOneOf<T>({{4, gen::elementOf(live)}, {1, others}});
+}
+
+// An element id: often the lowest free one (so meshes grow), often a live
+// one (so they change), sometimes a dead small id, "pick one", or huge.
+Gen<std::uint32_t> element_id(const std::vector<std::uint32_t>& live) {
+  std::uint32_t next = 0;
+  for (std::uint32_t id : live)
+    if (id == next) ++next;
+  std::vector<std::pair<std::size_t, Gen<std::uint32_t>>> choices;
+  const auto others = gen::weightedOneOf<std::uint32_t>({
+      {8, gen::inRange<std::uint32_t>(0, 10)},
+      {1, gen::just(std::uint32_t(kNone32))},
+      {1, gen::elementOf(std::vector<std::uint32_t>{4000000000u, 0xFFFFFFFEu, 1u << 24})},
+  });
+  if (live.empty()) return gen::weightedOneOf<std::uint32_t>({{3, gen::just(next)}, {1, others}});
+  return gen::weightedOneOf<std::uint32_t>({{3, gen::just(next)}, {4, gen::elementOf(live)}, {1, others}});
+}
+
+// A live element id mostly, for writes and deletes.
+Gen<std::uint32_t> live_id(const std::vector<std::uint32_t>& live) {
+  return pick<std::uint32_t>(live, gen::weightedOneOf<std::uint32_t>({
+                                       {8, gen::inRange<std::uint32_t>(0, 10)},
+                                       {1, gen::just(std::uint32_t(kNone32))},
+                                   }));
+}
+
+Gen<std::uint16_t> layer_id(const View& v) {
+  return pick<std::uint16_t>(v.layers, gen::weightedOneOf<std::uint16_t>({
+                                           {8, gen::inRange<std::uint16_t>(2, 7)},
+                                           {1, gen::elementOf(std::vector<std::uint16_t>{0, 1})},
+                                           {1, gen::just(std::uint16_t(kNone16))},
+                                       }));
+}
+
+Gen<std::uint16_t> typed_layer(const std::vector<std::uint16_t>& right, const View& v) {
+  return pick<std::uint16_t>(right, layer_id(v));
+}
+
+Gen<std::string> layer_name(const View& v) {
+  return gen::weightedOneOf<std::string>({
+      {6, gen::elementOf(std::vector<std::string>{"uv", "crease", "weight", "ref", "edges", "fifteen_bytes_x"})},
+      {3, v.names.empty() ? gen::just(std::string("vertex")) : gen::elementOf(v.names)},
+      {1, gen::elementOf(std::vector<std::string>{"sixteen_bytes_xx", std::string("nul\0in", 6), "vertex", "polygon"})},
+  });
+}
+
+Gen<std::uint8_t> layer_type() {
+  return gen::weightedOneOf<std::uint8_t>({
+      {12, gen::elementOf(std::vector<std::uint8_t>{0, 1, 2, 128, 129, 130, 131, 132})},
+      {1, gen::elementOf(std::vector<std::uint8_t>{3, 127, 133, 255})},
+  });
+}
+
+double from_bits(std::uint64_t bits) {
+  double d;
+  std::memcpy(&d, &bits, sizeof d);
+  return d;
+}
+
+// Reals for data layers: ordinary values and every special the encoding
+// must keep: -0, infinities, NaNs with payloads, subnormals, float edges.
+Gen<double> any_real() {
+  return gen::weightedOneOf<double>({
+      {6, gen::map(gen::inRange<int>(-800, 800), [](int i) { return i / 8.0; })},
+      {2, gen::elementOf(std::vector<double>{-0.0, 0.1, 1e300, -1e-310, std::numeric_limits<double>::infinity(),
+                               -std::numeric_limits<double>::infinity(), double(FLT_MAX) * 2, 16777217.0,
+                               1.0000000000000002})},
+      {1, gen::map(gen::inRange<std::uint64_t>(1, (1ull << 51) - 1),
+                   [](std::uint64_t p) { return from_bits(0x7FF0000000000000ull | p); })},
+      {1, gen::map(gen::inRange<std::uint64_t>(1, (1ull << 51) - 1),
+                   [](std::uint64_t p) { return from_bits(0xFFF8000000000000ull | p); })},
+  });
+}
+
+Gen<float> any_float() {
+  return gen::weightedOneOf<float>({
+      {6, gen::map(gen::inRange<int>(-800, 800), [](int i) { return i / 8.0f; })},
+      {2, gen::elementOf(std::vector<float>{-0.0f, 0.1f, 1e-40f, std::numeric_limits<float>::infinity(), 16777217.0f})},
+      {1, gen::map(gen::inRange<std::uint32_t>(1, (1u << 22) - 1), [](std::uint32_t p) {
+         const std::uint32_t bits = 0x7F800000u | p;
+         float f;
+         std::memcpy(&f, &bits, sizeof f);
+         return f;
+       })},
+  });
+}
+
+// Coordinates for the base layer: mostly small and finite, sometimes not.
+Gen<double> coordinate() {
+  return gen::weightedOneOf<double>({
+      {20, gen::map(gen::inRange<int>(-16, 17), [](int i) { return i / 4.0; })},
+      {1, gen::elementOf(std::vector<double>{std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity(),
+                               -0.0, 1e300})},
+  });
+}
+
+Gen<std::uint32_t> crease_value() {
+  return gen::weightedOneOf<std::uint32_t>({
+      {3, gen::elementOf(std::vector<std::uint32_t>{0u, 0xFFFFFFFFu})},
+      {2, gen::arbitrary<std::uint32_t>()},
+  });
+}
+
+Gen<Command> create_layer(const View& v) {
+  return gen::exec([v] {
+    cmd::LayerCreate c;
+    c.layer_id = *layer_id(v);
+    c.name = *layer_name(v);
+    c.type = *layer_type();
+    c.def_uint = *gen::weightedOneOf<std::uint32_t>(
+        {{3, gen::elementOf(std::vector<std::uint32_t>{0u, 7u, 300u, 0xFFFFFFFFu})}, {1, gen::arbitrary<std::uint32_t>()}});
+    c.def_real = *gen::weightedOneOf<double>({{3, gen::elementOf(std::vector<double>{0.0, 0.5, -2.0})}, {1, any_real()}});
+    return Command{c};
+  });
+}
+
+Gen<Command> destroy_layer(const View& v) {
+  return gen::exec([v] {
+    if (*gen::inRange(0, 4) == 0) return Command{cmd::LayerCreate{*layer_id(v), "", 0, 0, 0.0}};  // wire alias
+    return Command{cmd::LayerDestroy{*layer_id(v)}};
+  });
+}
+
+Gen<Command> subscribe(const View& v) {
+  return gen::exec([v] {
+    if (*gen::inRange(0, 3) == 0) return Command{cmd::LayerUnsubscribe{*layer_id(v)}};
+    return Command{cmd::LayerSubscribe{*layer_id(v), *gen::weightedElement<std::uint8_t>({{5, 0}, {5, 1}, {1, 2}})}};
+  });
+}
+
+Gen<Command> set_vertex(const View& v) {
+  return gen::exec([v] {
+    const std::uint32_t id = *element_id(v.vertices);
+    if (*gen::inRange(0, 3) == 0)
+      return Command{cmd::VertexSetXyzReal32{0, id, static_cast<float>(*coordinate()),
+                                             static_cast<float>(*coordinate()), static_cast<float>(*coordinate())}};
+    return Command{cmd::VertexSetXyzReal64{0, id, *coordinate(), *coordinate(), *coordinate()}};
+  });
+}
+
+Gen<Command> delete_vertex(const View& v) {
+  return gen::exec([v] {
+    const std::uint32_t id = *live_id(v.vertices);
+    switch (*gen::inRange(0, 3)) {
+      case 0: return Command{cmd::VertexDelete{id}};
+      case 1: return Command{cmd::VertexSetXyzReal32{0, id, 0.f, FLT_MAX, 0.f}};
+      default: return Command{cmd::VertexSetXyzReal64{0, id, DBL_MAX, 0.0, 0.0}};
+    }
+  });
+}
+
+Gen<Command> set_polygon(const View& v) {
+  return gen::exec([v] {
+    cmd::PolygonSetCornerUint32 c;
+    c.layer_id = Node::kPolygonLayer;
+    c.polygon_id = *element_id(v.polygons);
+    const auto corner = pick<std::uint32_t>(v.vertices, gen::inRange<std::uint32_t>(0, 10));
+    for (auto& x : c.v) x = *corner;
+    const int shape = *gen::weightedElement<int>({{6, 4}, {4, 3}, {1, 2}});
+    if (shape == 3) c.v[3] = kNone32;
+    if (shape == 2) c.v[*gen::inRange(1, 3)] = kNone32;
+    // Distinct corners most of the time: redraw repeats from the live set.
+    if (*gen::inRange(0, 5) != 0 && v.vertices.size() >= 4) {
+      std::vector<std::uint32_t> pool = v.vertices;
+      for (int i = 0; i < 4; ++i) {
+        if (c.v[i] == kNone32) continue;
+        const std::size_t k = *gen::inRange<std::size_t>(0, pool.size());
+        c.v[i] = pool[k];
+        pool.erase(pool.begin() + static_cast<long>(k));
+      }
+    }
+    return Command{c};
+  });
+}
+
+Gen<Command> delete_polygon(const View& v) {
+  return gen::exec([v] {
+    const std::uint32_t id = *live_id(v.polygons);
+    if (*gen::inRange(0, 2) == 0) return Command{cmd::PolygonDelete{id}};
+    return Command{cmd::PolygonSetCornerUint32{Node::kPolygonLayer, id, {kNone32, 0, 0, 0}}};
+  });
+}
+
+// A write of some value to some layer of some type (right type mostly).
+Gen<Command> write_value(const View& v) {
+  return gen::exec([v]() -> Command {
+    switch (*gen::inRange(0, 11)) {
+      case 0:
+        return cmd::VertexSetUint32{*typed_layer(v.vertex_uint_layers, v), *live_id(v.vertices),
+                                    *gen::arbitrary<std::uint32_t>()};
+      case 1: return cmd::VertexSetReal64{*typed_layer(v.vertex_real_layers, v), *live_id(v.vertices), *any_real()};
+      case 2: return cmd::VertexSetReal32{*typed_layer(v.vertex_real_layers, v), *live_id(v.vertices), *any_float()};
+      case 3:
+        return cmd::VertexSetXyzReal64{*typed_layer(v.vertex_xyz_layers, v), *live_id(v.vertices), *any_real(),
+                                       *any_real(), *any_real()};
+      case 4: {
+        cmd::PolygonSetCornerUint32 c{*typed_layer(v.corner_uint_layers, v), *live_id(v.polygons), {}};
+        for (auto& x : c.v) x = *crease_value();
+        return c;
+      }
+      case 5: {
+        cmd::PolygonSetCornerReal64 c{*typed_layer(v.corner_real_layers, v), *live_id(v.polygons), {}};
+        for (auto& x : c.v) x = *any_real();
+        return c;
+      }
+      case 6: {
+        cmd::PolygonSetCornerReal32 c{*typed_layer(v.corner_real_layers, v), *live_id(v.polygons), {}};
+        for (auto& x : c.v) x = *any_float();
+        return c;
+      }
+      case 7:
+        return cmd::PolygonSetFaceUint8{*typed_layer(v.face_u8_layers, v), *live_id(v.polygons),
+                                        *gen::arbitrary<std::uint8_t>()};
+      case 8:
+        return cmd::PolygonSetFaceUint32{*typed_layer(v.face_u32_layers, v), *live_id(v.polygons),
+                                         *gen::arbitrary<std::uint32_t>()};
+      case 9:
+        return cmd::PolygonSetFaceReal64{*typed_layer(v.face_real_layers, v), *live_id(v.polygons), *any_real()};
+      default:
+        return cmd::PolygonSetFaceReal32{*typed_layer(v.face_real_layers, v), *live_id(v.polygons), *any_float()};
+    }
+  });
+}
+
+Gen<Command> set_crease(const View& v) {
+  return gen::exec([v]() -> Command {
+    const bool vertex = *gen::arbitrary<bool>();
+    std::string name = *gen::weightedOneOf<std::string>({
+        {3, gen::just(std::string(""))},
+        {5, gen::just(std::string(vertex ? "vcrease" : "ecrease"))},
+        {2, layer_name(v)},
+    });
+    if (vertex) return cmd::CreaseSetVertex{name, *crease_value()};
+    return cmd::CreaseSetEdge{name, *crease_value()};
+  });
+}
+
+// A layer for creases to name: mostly of the right type, sometimes not, so
+// that the fallback of CREASE-LAYER-MISSING-1 is exercised too.
+Gen<Command> create_crease_layer(const View&) {
+  return gen::exec([]() -> Command {
+    const bool vertex = *gen::arbitrary<bool>();
+    const bool right_type = *gen::inRange(0, 4) != 0;
+    cmd::LayerCreate c;
+    c.layer_id = *gen::inRange<std::uint16_t>(2, 7);
+    c.name = vertex ? "vcrease" : "ecrease";
+    const LayerType t = vertex ? (right_type ? LayerType::VertexUint32 : LayerType::VertexReal)
+                               : (right_type ? LayerType::PolygonCornerUint32 : LayerType::PolygonFaceUint32);
+    c.type = static_cast<std::uint8_t>(t);
+    c.def_uint = *crease_value();
+    c.def_real = *gen::elementOf(std::vector<double>{0.0, 7.0, 1e9});
+    return c;
+  });
+}
+
+// Values in whatever layers creases might name.
+Gen<Command> write_crease_values(const View& v) {
+  return gen::exec([v]() -> Command {
+    const int kind = *gen::inRange(0, 4);
+    if (kind == 0 && !v.vertex_uint_layers.empty())
+      return cmd::VertexSetUint32{*gen::elementOf(v.vertex_uint_layers), *live_id(v.vertices), *crease_value()};
+    if (kind == 1 && !v.vertex_real_layers.empty())
+      return cmd::VertexSetReal64{*gen::elementOf(v.vertex_real_layers), *live_id(v.vertices),
+                                  double(*gen::inRange(0, 1000))};
+    if (kind == 2 && !v.face_u32_layers.empty())
+      return cmd::PolygonSetFaceUint32{*gen::elementOf(v.face_u32_layers), *live_id(v.polygons), *crease_value()};
+    cmd::PolygonSetCornerUint32 c{*typed_layer(v.corner_uint_layers, v), *live_id(v.polygons), {}};
+    for (auto& x : c.v) x = *crease_value();
+    return c;
+  });
+}
+
+Gen<double> unit_component() {
+  return gen::map(gen::inRange<int>(-4, 5), [](int i) { return i / 4.0; });
+}
+
+Gen<Command> create_bone(const View& v) {
+  return gen::exec([v]() -> Command {
+    cmd::BoneCreate c;
+    c.bone_id = *pick<std::uint16_t>(v.bones, gen::weightedOneOf<std::uint16_t>(
+                                                  {{8, gen::inRange<std::uint16_t>(0, 6)},
+                                                   {1, gen::just(std::uint16_t(kNone16))}}));
+    std::vector<std::string> weights = v.vertex_uint_names;
+    weights.insert(weights.end(), v.vertex_real_names.begin(), v.vertex_real_names.end());
+    c.weight = *gen::weightedOneOf<std::string>({
+        {8, weights.empty() ? gen::just(std::string("weight")) : gen::elementOf(weights)},
+        {1, layer_name(v)},
+        {1, gen::just(std::string(""))},  // the wire's destroy
+    });
+    c.reference = *gen::weightedOneOf<std::string>({
+        {6, gen::just(std::string(""))},
+        {2, v.vertex_uint_names.empty() ? gen::just(std::string("ref")) : gen::elementOf(v.vertex_uint_names)},
+        {1, layer_name(v)},
+    });
+    c.parent = *pick<std::uint16_t>(v.bones, gen::elementOf(std::vector<std::uint16_t>{kNone16, 9, 0}));
+    for (auto& x : c.pos) x = *unit_component();
+    c.pos_label = *gen::elementOf(std::vector<std::string>{"", "curve_x", "sixteen_bytes_xx"});
+    // Rotations: identity, quarter turns about an axis, or anything.
+    c.rot = *gen::weightedOneOf<std::array<double, 4>>({
+        {2, gen::just<std::array<double, 4>>({0, 0, 0, 1})},
+        {3, gen::elementOf(std::vector<std::array<double, 4>>{{0, 0, std::sqrt(0.5), std::sqrt(0.5)},
+                                                {std::sqrt(0.5), 0, 0, std::sqrt(0.5)}, {0, 1, 0, 0},
+                                                {0, 0, 0, 2}})},
+        {3, gen::exec([] {
+           return std::array<double, 4>{*unit_component(), *unit_component(), *unit_component(), *unit_component()};
+         })},
+        {1, gen::elementOf(std::vector<std::array<double, 4>>{{0, 0, 0, 0},
+                                                {std::numeric_limits<double>::quiet_NaN(), 0, 0, 1}})},
+    });
+    c.rot_label = *gen::elementOf(std::vector<std::string>{"", "curve_r"});
+    return c;
+  });
+}
+
+Gen<Command> destroy_bone(const View& v) {
+  return gen::exec([v]() -> Command {
+    return cmd::BoneDestroy{*pick<std::uint16_t>(v.bones, gen::inRange<std::uint16_t>(0, 6))};
+  });
+}
+
+Gen<Command> bone_layer(const View&) {
+  return gen::exec([]() -> Command {
+    cmd::LayerCreate c;
+    c.layer_id = *gen::inRange<std::uint16_t>(2, 6);
+    c.name = *gen::elementOf(std::vector<std::string>{"weight", "ref", "w2"});
+    c.type = *gen::elementOf(std::vector<std::uint8_t>{1, 2, 1, 128});
+    return c;
+  });
+}
+
+}  // namespace
+
+Gen<Command> gen_command(const Node& model, Focus focus) {
+  const View v = view_of(model);
+  using W = std::pair<std::size_t, Gen<Command>>;
+  switch (focus) {
+    case Focus::Layers:
+      return gen::weightedOneOf<Command>({W{6, create_layer(v)}, W{3, destroy_layer(v)}, W{1, subscribe(v)},
+                                          W{4, set_vertex(v)}, W{2, delete_vertex(v)}, W{3, set_polygon(v)},
+                                          W{1, delete_polygon(v)}, W{2, write_value(v)}});
+    case Focus::Polygons:
+      return gen::weightedOneOf<Command>({W{6, set_vertex(v)}, W{2, delete_vertex(v)}, W{7, set_polygon(v)},
+                                          W{2, delete_polygon(v)}, W{1, create_layer(v)}});
+    case Focus::Creases:
+      return gen::weightedOneOf<Command>({W{4, set_vertex(v)}, W{4, set_polygon(v)}, W{3, set_crease(v)},
+                                          W{2, create_crease_layer(v)}, W{5, write_crease_values(v)},
+                                          W{1, destroy_layer(v)}, W{1, delete_vertex(v)}});
+    case Focus::Bones:
+      return gen::weightedOneOf<Command>({W{2, bone_layer(v)}, W{6, create_bone(v)}, W{2, destroy_bone(v)},
+                                          W{1, destroy_layer(v)}, W{1, set_vertex(v)}});
+    case Focus::Values:
+      return gen::weightedOneOf<Command>({W{3, create_layer(v)}, W{3, set_vertex(v)}, W{3, set_polygon(v)},
+                                          W{8, write_value(v)}});
+    case Focus::Ids:
+      return gen::weightedOneOf<Command>({W{3, create_layer(v)}, W{4, set_vertex(v)}, W{3, set_polygon(v)},
+                                          W{2, create_bone(v)}, W{1, bone_layer(v)}, W{2, delete_vertex(v)}});
+    case Focus::Anything:
+      break;
+  }
+  return gen::weightedOneOf<Command>(
+      {W{3, create_layer(v)}, W{2, destroy_layer(v)}, W{1, subscribe(v)}, W{4, set_vertex(v)},
+       W{2, delete_vertex(v)}, W{4, set_polygon(v)}, W{1, delete_polygon(v)}, W{4, write_value(v)},
+       W{2, set_crease(v)}, W{1, create_crease_layer(v)}, W{2, create_bone(v)}, W{1, destroy_bone(v)},
+       W{1, bone_layer(v)}});
+}
+
+}  // namespace vgc

@@ -1,0 +1,114 @@
+// document_diff.cpp — see document_diff.h.
+#include "document_diff.h"
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+#include <sstream>
+
+#include "number_text.h"
+
+namespace vgc {
+namespace {
+
+std::vector<std::string> words(const std::string& line) {
+  std::vector<std::string> out;
+  std::istringstream in(line);
+  std::string w;
+  while (in >> w) out.push_back(w);
+  return out;
+}
+
+std::string first_word(const std::string& line) {
+  const auto w = words(line);
+  return w.empty() ? std::string() : w[0];
+}
+
+bool close(double a, double b) {
+  if (a == b) return true;
+  const double scale = std::max({1.0, std::fabs(a), std::fabs(b)});
+  return std::fabs(a - b) <= kPoseTolerance * scale;
+}
+
+// "bone_pose <id> px py pz qx qy qz qw": same id, positions close, and the
+// rotations close up to sign.
+bool poses_match(const std::string& a, const std::string& b) {
+  const auto wa = words(a), wb = words(b);
+  if (wa.size() != 9 || wb.size() != 9 || wa[0] != "bone_pose" || wb[0] != "bone_pose" || wa[1] != wb[1])
+    return false;
+  double va[7], vb[7];
+  for (int i = 0; i < 7; ++i)
+    if (!parse_f64(wa[2 + i], &va[i]) || !parse_f64(wb[2 + i], &vb[i])) return false;
+  for (int i = 0; i < 3; ++i)
+    if (!close(va[i], vb[i])) return false;
+  bool same = true, opposite = true;
+  for (int i = 3; i < 7; ++i) {
+    same = same && close(va[i], vb[i]);
+    opposite = opposite && close(va[i], -vb[i]);
+  }
+  return same || opposite;
+}
+
+bool lines_match(const std::string& expected, const std::string& observed) {
+  if (expected == observed) return true;
+  return first_word(expected) == "bone_pose" && poses_match(expected, observed);
+}
+
+}  // namespace
+
+std::vector<std::string> split_lines(const std::string& text) {
+  std::vector<std::string> lines;
+  std::size_t start = 0;
+  while (start < text.size()) {
+    std::size_t nl = text.find('\n', start);
+    if (nl == std::string::npos) nl = text.size();
+    std::string line = text.substr(start, nl - start);
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    lines.push_back(std::move(line));
+    start = nl + 1;
+  }
+  return lines;
+}
+
+std::string DocumentDifference::describe() const {
+  if (observed_line.empty()) return "missing line: expected \"" + expected_line + "\"";
+  if (expected_line.empty()) return "unexpected line: \"" + observed_line + "\"";
+  return "expected \"" + expected_line + "\", observed \"" + observed_line + "\"";
+}
+
+std::optional<DocumentDifference> diff_documents(const std::string& expected, const std::string& observed) {
+  if (expected == observed) return std::nullopt;
+  const auto e = split_lines(expected), o = split_lines(observed);
+  // Walk both in order. Lines of a canonical document are unique and
+  // sorted within each section, so a line present on one side only is a
+  // missing or extra line; a changed line shows up as a pair that share
+  // their key (first two words).
+  const std::multiset<std::string> eset(e.begin(), e.end()), oset(o.begin(), o.end());
+  std::size_t i = 0, j = 0;
+  while (i < e.size() || j < o.size()) {
+    if (i < e.size() && j < o.size() && lines_match(e[i], o[j])) {
+      ++i, ++j;
+      continue;
+    }
+    DocumentDifference d;
+    const auto key = [](const std::string& l) {
+      const auto w = words(l);
+      return w.size() >= 2 ? w[0] + " " + w[1] : l;
+    };
+    if (i < e.size() && j < o.size() && key(e[i]) == key(o[j])) {
+      d.expected_line = e[i];
+      d.observed_line = o[j];
+    } else if (i < e.size() && (j >= o.size() || oset.count(e[i]) == 0)) {
+      d.expected_line = e[i];  // the implementation lacks it
+    } else if (j < o.size()) {
+      d.observed_line = o[j];  // the implementation has an extra line
+    } else {
+      d.expected_line = e[i];
+    }
+    d.kind = first_word(d.expected_line.empty() ? d.observed_line : d.expected_line);
+    return d;
+  }
+  return std::nullopt;  // equal up to tolerance
+}
+
+}  // namespace vgc

@@ -1,0 +1,37 @@
+// document_diff.h — comparing an implementation's snapshot and derived
+// documents with the reference's.
+//
+// Spec: the documents of reference/snapshot.h (docs/commands.md "Snapshot").
+//
+// Rationale: stored state must match byte for byte (the snapshot is
+// canonical), but bone world poses are computed in floating point, where two
+// correct implementations may differ in the last bits; those are compared
+// within a tolerance, and a rotation q equals -q. A difference is reported as
+// the first line that differs, in the reference's order, with both sides, so
+// a person can see it without a diff tool.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace vgc {
+
+struct DocumentDifference {
+  std::string expected_line;  // empty when the implementation has an extra line
+  std::string observed_line;  // empty when the implementation lacks a line
+  std::string kind;           // first word of the differing line: "layer", "slot", "bone_pose", ...
+  std::string describe() const;
+};
+
+// Relative tolerance for bone poses (BONE-DOWNSTREAM-1).
+inline constexpr double kPoseTolerance = 1e-9;
+
+// nullopt when the documents agree (exactly, except bone_pose numbers
+// within kPoseTolerance). Precondition: none; malformed text just differs.
+std::optional<DocumentDifference> diff_documents(const std::string& expected, const std::string& observed);
+
+// Splits on '\n' (a trailing "\r" is dropped from each line).
+std::vector<std::string> split_lines(const std::string& text);
+
+}  // namespace vgc

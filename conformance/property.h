@@ -1,0 +1,34 @@
+// property.h — the conformance properties: what each one explores and which
+// clauses it declares.
+//
+// Spec: the clause catalog (clause.h).
+//
+// Rationale: a property is a RapidCheck state machine in the manner of
+// rc::state::Command: the reference node is the model (Step::apply), the
+// implementation under test is the system (Step::run, which compares the
+// two through check_step), and Step::show prints the command line of our
+// language, so a shrunk counterexample is a command file. Properties differ
+// only in the focus of their command generator (command_gen.h) and in the
+// clauses they declare; any divergence they find is attributed to the
+// clause it breaks, even one they do not declare.
+#pragma once
+
+#include <string_view>
+#include <vector>
+
+#include "command_gen.h"
+
+namespace vgc {
+
+struct PropertySpec {
+  std::string_view id;     // "layers.stateful"
+  std::string_view title;  // one line for reports
+  Focus focus;
+  std::vector<std::string_view> clauses;  // the clauses this property is meant to check
+};
+
+// Every property, in run order.
+const std::vector<PropertySpec>& property_catalog();
+const PropertySpec* find_property(std::string_view id);
+
+}  // namespace vgc

@@ -1,0 +1,50 @@
+// report.h — what `vgc certify` writes: report.json, junit.xml, summary.md
+// and one replayable counterexample command file per failing clause.
+//
+// Spec: none (CI practice); docs/reports.md describes every field.
+//
+// Rationale: CI reads the JSON and the JUnit XML; a person reads the
+// summary first, at 2 a.m., so it starts with the verdict, then each
+// failure with its clause, the spec sentence, what was expected and seen,
+// the shrunk command file inline, and the one line that replays it. A run
+// directory is written under a temporary name and renamed into place, so
+// it is whole or absent; reports/latest then points at it.
+#pragma once
+
+#include <string>
+
+#include "baseline.h"
+#include "runner.h"
+#include "verdict.h"
+
+namespace vgc {
+
+struct ReportContext {
+  std::string implementation_spec;  // "reference", "exec:...", "plugin:..." as given
+  std::string command_line;         // the certify command that re-runs this run
+  std::string started;              // UTC, ISO 8601
+  std::string run_dir;              // where the run's files end up (final path)
+  const Baseline* baseline = nullptr;
+  std::string baseline_path;
+};
+
+// "reports/<implementation slug>/<started>-seed<seed>[-shard<i>of<n>]"
+std::string default_run_dir(const std::string& reports_root, const RunResult& run, const ReportContext& ctx);
+
+// File name, relative to the run directory, of a clause's counterexample.
+std::string counterexample_path(const ClauseOutcome& co);
+// The one-line command that replays a counterexample file.
+std::string replay_command(const std::string& file, const std::string& implementation_spec);
+
+std::string render_counterexample(const ClauseOutcome& co, const ReportContext& ctx);
+std::string render_report_json(const RunResult& run, const Verdict& v, const ReportContext& ctx);
+std::string render_junit(const RunResult& run, const Verdict& v, const ReportContext& ctx);
+std::string render_summary(const RunResult& run, const Verdict& v, const ReportContext& ctx);
+
+// Writes every file into ctx.run_dir (via a temporary sibling directory and
+// one rename) and points <reports_root>/latest at it. On failure nothing
+// is left behind and *error says why.
+bool write_report(const std::string& reports_root, const RunResult& run, const Verdict& v,
+                  const ReportContext& ctx, std::string* error);
+
+}  // namespace vgc

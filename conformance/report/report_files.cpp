@@ -1,0 +1,119 @@
+// report_files.cpp — run directory naming, counterexample files, and the
+// whole-or-nothing write of a report (report.h).
+#include <filesystem>
+#include <fstream>
+#include <system_error>
+
+#include "command_text.h"
+#include "exec_implementation.h"  // shell_quote
+#include "report.h"
+
+namespace vgc {
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string slug(const std::string& s) {
+  std::string out;
+  for (char c : s) {
+    const bool ok = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '.' ||
+                    c == '_' || c == '-';
+    out += ok ? c : '-';
+    if (out.size() >= 60) break;
+  }
+  while (!out.empty() && out.back() == '-') out.pop_back();
+  return out.empty() ? "implementation" : out;
+}
+
+bool write_file(const fs::path& path, const std::string& text, std::string* error) {
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  out << text;
+  out.close();
+  if (!out) {
+    *error = "cannot write " + path.string();
+    return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+std::string default_run_dir(const std::string& reports_root, const RunResult& run, const ReportContext& ctx) {
+  std::string stamp;
+  for (char c : ctx.started)
+    if (c != ':' && c != '-') stamp += c;
+  std::string name = stamp + "-seed" + std::to_string(run.options.seed);
+  if (run.options.shard_count > 1)
+    name += "-shard" + std::to_string(run.options.shard_index + 1) + "of" + std::to_string(run.options.shard_count);
+  return (fs::path(reports_root) / slug(ctx.implementation_spec) / name).string();
+}
+
+std::string counterexample_path(const ClauseOutcome& co) {
+  return "counterexamples/" + std::string(co.clause->id) + ".vgc";
+}
+
+std::string replay_command(const std::string& file, const std::string& implementation_spec) {
+  return "./vgc replay " + shell_quote(file) + " --impl " + shell_quote(implementation_spec);
+}
+
+std::string render_counterexample(const ClauseOutcome& co, const ReportContext& ctx) {
+  const std::string file = (fs::path(ctx.run_dir) / counterexample_path(co)).string();
+  std::string out;
+  out += "# vgc counterexample for " + std::string(co.clause->id) + " (" +
+         std::string(clause_level_name(co.clause->level)) + "): " + co.status + "\n";
+  out += "# implementation: " + ctx.implementation_spec + "\n";
+  out += "# found by property " + co.found_by + " with seed " + std::to_string(co.seed) + "\n";
+  std::string msg = co.finding ? co.finding->message : "";
+  for (auto& ch : msg)
+    if (ch == '\n') ch = ' ';
+  out += "# finding: " + msg + "\n";
+  out += "# spec (" + std::string(co.clause->source) + "): " + std::string(co.clause->text) + "\n";
+  out += "# replay: " + replay_command(file, ctx.implementation_spec) + "\n";
+  out += "# " + std::to_string(co.program.commands.size()) + " commands from a fresh node; the last one shows it.\n";
+  out += print_commands(co.program.commands);
+  return out;
+}
+
+bool write_report(const std::string& reports_root, const RunResult& run, const Verdict& v,
+                  const ReportContext& ctx, std::string* error) {
+  std::error_code ec;
+  const fs::path final_dir(ctx.run_dir);
+  const fs::path tmp_dir = final_dir.parent_path() / ("." + final_dir.filename().string() + ".partial");
+  fs::remove_all(tmp_dir, ec);
+  fs::create_directories(tmp_dir / "counterexamples", ec);
+  if (ec) {
+    *error = "cannot create " + tmp_dir.string() + ": " + ec.message();
+    return false;
+  }
+  auto fail = [&](const std::string& what) {
+    *error = what;
+    std::error_code ignored;
+    fs::remove_all(tmp_dir, ignored);
+    return false;
+  };
+  std::string e;
+  for (const ClauseOutcome& co : run.clauses)
+    if (co.finding && !write_file(tmp_dir / counterexample_path(co), render_counterexample(co, ctx), &e))
+      return fail(e);
+  if (!write_file(tmp_dir / "report.json", render_report_json(run, v, ctx), &e)) return fail(e);
+  if (!write_file(tmp_dir / "junit.xml", render_junit(run, v, ctx), &e)) return fail(e);
+  if (!write_file(tmp_dir / "summary.md", render_summary(run, v, ctx), &e)) return fail(e);
+  fs::remove_all(final_dir, ec);
+  fs::rename(tmp_dir, final_dir, ec);
+  if (ec) return fail("cannot move the report into " + final_dir.string() + ": " + ec.message());
+
+  // reports/latest -> the run directory, replaced atomically.
+  const fs::path latest = fs::path(reports_root) / "latest";
+  const fs::path tmp_link = fs::path(reports_root) / ".latest.partial";
+  fs::remove(tmp_link, ec);
+  const fs::path target = fs::relative(fs::absolute(final_dir), fs::absolute(reports_root), ec);
+  fs::create_directory_symlink(ec ? fs::absolute(final_dir) : target, tmp_link, ec);
+  if (!ec) fs::rename(tmp_link, latest, ec);
+  if (ec) {
+    *error = "report written to " + final_dir.string() + ", but reports/latest could not be updated: " + ec.message();
+    return false;
+  }
+  return true;
+}
+
+}  // namespace vgc

@@ -1,0 +1,71 @@
+// report_json.cpp — report.json (docs/reports.md lists every field).
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+
+#include "report.h"
+
+namespace vgc {
+
+std::string render_report_json(const RunResult& run, const Verdict& v, const ReportContext& ctx) {
+  using nlohmann::json;
+  json j;
+  j["vgc_report_version"] = 1;
+  j["implementation"] = ctx.implementation_spec;
+  j["implementation_name"] = run.implementation;
+  j["verdict"] = v.name;
+  j["exit_code"] = v.exit_code;
+  j["started"] = ctx.started;
+  j["seconds"] = run.seconds;
+  j["seed"] = run.options.seed;
+  j["cases_per_property"] = run.options.cases;
+  j["max_size"] = run.options.max_size;
+  j["budget_seconds"] = run.options.budget_seconds;
+  j["clauses_selected"] = run.options.clause_glob;
+  j["shard"] = std::to_string(run.options.shard_index + 1) + "/" + std::to_string(run.options.shard_count);
+  j["rerun"] = ctx.command_line;
+  j["new_failures"] = v.new_failures;
+  j["known_failures"] = v.known_failures;
+  j["should_failures"] = v.should_failures;
+  j["stale_baseline"] = v.stale_baseline;
+  if (ctx.baseline) j["baseline"] = ctx.baseline_path;
+
+  json counts = {{"pass", 0}, {"fail", 0}, {"crash", 0}, {"timeout", 0}, {"skipped", 0}};
+  json clauses = json::array();
+  for (const ClauseOutcome& co : run.clauses) {
+    counts[co.status] = counts.value(co.status, 0) + 1;
+    json c;
+    c["id"] = co.clause->id;
+    c["group"] = co.clause->group;
+    c["level"] = clause_level_name(co.clause->level);
+    c["status"] = co.status;
+    c["properties"] = co.properties;
+    if (!co.note.empty()) c["note"] = co.note;
+    if (ctx.baseline && ctx.baseline->reasons.count(std::string(co.clause->id)))
+      c["baseline_reason"] = ctx.baseline->reasons.at(std::string(co.clause->id));
+    if (co.finding) {
+      const std::string file = counterexample_path(co);
+      c["message"] = co.finding->message;
+      c["found_by"] = co.found_by;
+      c["seed"] = co.seed;
+      c["counterexample"] = file;
+      c["counterexample_commands"] = co.program.commands.size();
+      c["replay"] = replay_command((std::filesystem::path(ctx.run_dir) / file).string(), ctx.implementation_spec);
+    }
+    clauses.push_back(c);
+  }
+  j["counts"] = counts;
+  j["clauses"] = clauses;
+
+  json props = json::array();
+  for (const PropertyOutcome& p : run.properties) {
+    json o = {{"id", p.id}, {"status", p.status}, {"seed", p.seed}, {"cases", p.cases}, {"seconds", p.seconds}};
+    if (!p.note.empty()) o["note"] = p.note;
+    if (p.finding) o["clause"] = p.finding->clause;
+    props.push_back(o);
+  }
+  j["properties"] = props;
+  return j.dump(2) + "\n";
+}
+
+}  // namespace vgc

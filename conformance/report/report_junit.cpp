@@ -1,0 +1,81 @@
+// report_junit.cpp — junit.xml: one test suite per clause group, one test
+// case per clause; failures carry the finding and the replay command.
+#include <pugixml.hpp>
+
+#include <filesystem>
+#include <map>
+#include <sstream>
+
+#include "report.h"
+
+namespace vgc {
+
+std::string render_junit(const RunResult& run, const Verdict& v, const ReportContext& ctx) {
+  pugi::xml_document doc;
+  auto decl = doc.append_child(pugi::node_declaration);
+  decl.append_attribute("version") = "1.0";
+  decl.append_attribute("encoding") = "UTF-8";
+  auto suites = doc.append_child("testsuites");
+  suites.append_attribute("name") = ("vgc certify " + ctx.implementation_spec).c_str();
+  suites.append_attribute("time") = run.seconds;
+
+  std::map<std::string, pugi::xml_node> by_group;
+  std::map<std::string, std::map<std::string, int>> counts;
+  int tests = 0, failures = 0, errors = 0, skipped = 0;
+  for (const ClauseOutcome& co : run.clauses) {
+    const std::string group(co.clause->group);
+    auto it = by_group.find(group);
+    if (it == by_group.end()) {
+      auto s = suites.append_child("testsuite");
+      s.append_attribute("name") = ("vgc." + group).c_str();
+      it = by_group.emplace(group, s).first;
+    }
+    auto tc = it->second.append_child("testcase");
+    tc.append_attribute("classname") = ("vgc." + group).c_str();
+    tc.append_attribute("name") =
+        (std::string(co.clause->id) + " (" + std::string(clause_level_name(co.clause->level)) + ")").c_str();
+    ++tests;
+    ++counts[group]["tests"];
+    const bool known = ctx.baseline && ctx.baseline->reasons.count(std::string(co.clause->id));
+    if (co.finding && !known && co.clause->level != ClauseLevel::Should) {
+      const bool is_error = co.status != "fail";  // crash / timeout
+      auto f = tc.append_child(is_error ? "error" : "failure");
+      f.append_attribute("type") = co.status.c_str();
+      f.append_attribute("message") = co.finding->message.c_str();
+      std::ostringstream body;
+      body << co.clause->text << "\n\nFound by " << co.found_by << " (seed " << co.seed << ").\nReplay: "
+           << replay_command((std::filesystem::path(ctx.run_dir) / counterexample_path(co)).string(),
+                             ctx.implementation_spec)
+           << "\n";
+      f.text().set(body.str().c_str());
+      ++(is_error ? errors : failures);
+      ++counts[group][is_error ? "errors" : "failures"];
+    } else if (co.status == "skipped" || (co.finding && known)) {
+      auto s = tc.append_child("skipped");
+      s.append_attribute("message") =
+          (co.finding ? "known deviation (baseline): " + ctx.baseline->reasons.at(std::string(co.clause->id))
+                      : co.note)
+              .c_str();
+      ++skipped;
+      ++counts[group]["skipped"];
+    } else if (co.finding) {  // SHOULD: reported, not failing
+      tc.append_child("system-out").text().set(("SHOULD not met: " + co.finding->message).c_str());
+    }
+  }
+  for (auto& [group, node] : by_group) {
+    node.append_attribute("tests") = counts[group]["tests"];
+    node.append_attribute("failures") = counts[group]["failures"];
+    node.append_attribute("errors") = counts[group]["errors"];
+    node.append_attribute("skipped") = counts[group]["skipped"];
+  }
+  suites.append_attribute("tests") = tests;
+  suites.append_attribute("failures") = failures;
+  suites.append_attribute("errors") = errors;
+  suites.append_attribute("skipped") = skipped;
+  (void)v;
+  std::ostringstream out;
+  doc.save(out, "  ");
+  return out.str();
+}
+
+}  // namespace vgc

@@ -1,0 +1,332 @@
+// runner.cpp — see runner.h.
+#include "runner.h"
+
+#include <fnmatch.h>
+#include <rapidcheck.h>
+#include <rapidcheck/state.h>
+
+#include <chrono>
+#include <map>
+#include <sstream>
+
+#include "command_text.h"
+#include "property.h"
+
+namespace vgc {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// What the property's cases report back; one per running property.
+struct CaseContext {
+  Implementation* sut = nullptr;
+  Clock::time_point deadline;
+  bool deadline_hit = false;
+  std::vector<Command> trace;           // commands of the current case so far
+  std::optional<Finding> last_failure;  // the most recent failing case: after
+  Program last_program;                 // shrinking, the smallest one
+  std::map<std::string, std::pair<Finding, Program>> notes;
+  // Once a case fails, shrinking keeps only failures of the same clause and
+  // status: a smaller case that fails differently is not a smaller example
+  // of *this* failure.
+  std::optional<std::pair<std::string, FindingStatus>> signature;
+  bool abandoned = false;  // the current case hit a different failure
+};
+
+thread_local CaseContext* g_context = nullptr;
+
+bool past_deadline() {
+  if (Clock::now() < g_context->deadline) return false;
+  g_context->deadline_hit = true;
+  return true;
+}
+
+// Records `f` and fails the case, unless it is a different failure from the
+// one being shrunk; returns false in that case (the case then passes).
+bool fail_case(const Finding& f) {
+  auto& sig = g_context->signature;
+  if (sig && (sig->first != f.clause || sig->second != f.status)) return false;
+  sig = std::make_pair(f.clause, f.status);
+  g_context->last_failure = f;
+  g_context->last_program.commands = g_context->trace;
+  RC_FAIL(f.clause + ": " + f.message);
+  return true;  // unreachable: RC_FAIL throws
+}
+
+// rc::state command: model = the reference node, system = the implementation.
+struct Step final : rc::state::Command<Node, Implementation> {
+  vgc::Command command;
+  explicit Step(vgc::Command c) : command(std::move(c)) {}
+
+  void apply(Node& model) const override { model.apply(command); }
+
+  void run(const Node& model, Implementation& sut) const override {
+    if (g_context->abandoned || g_context->deadline_hit || past_deadline()) return;  // stop judging
+    g_context->trace.push_back(command);
+    Node after;
+    StepResult r = check_step(model, command, sut, &after);
+    for (auto& note : r.notes) {
+      auto it = g_context->notes.find(note.clause);
+      if (it == g_context->notes.end() || it->second.second.commands.size() > g_context->trace.size())
+        g_context->notes[note.clause] = {note, Program{g_context->trace}};
+    }
+    // A different failure while shrinking: the rest of this case proves nothing.
+    if (r.failure && !fail_case(*r.failure)) g_context->abandoned = true;
+  }
+
+  void show(std::ostream& os) const override { os << print_command(command); }
+};
+
+class ProgressListener final : public rc::detail::TestListener {
+ public:
+  ProgressListener(RunProgress* p, const std::function<void(const RunProgress&)>* cb, Clock::time_point start)
+      : p_(p), cb_(cb), start_(start) {}
+  void onTestCaseFinished(const rc::detail::CaseDescription& d) override {
+    if (d.result.type == rc::detail::CaseResult::Type::Success) ++p_->cases_done;
+    if (d.result.type == rc::detail::CaseResult::Type::Failure) {
+      p_->shrinking = true;
+      ++p_->failures;
+    }
+    emit();
+  }
+  void onShrinkTried(const rc::detail::CaseDescription&, bool) override { emit(); }
+  void onTestFinished(const rc::detail::TestMetadata&, const rc::detail::TestResult&) override {}
+
+ private:
+  void emit() {
+    p_->elapsed_seconds = std::chrono::duration<double>(Clock::now() - start_).count();
+    if (*cb_) (*cb_)(*p_);
+  }
+  RunProgress* p_;
+  const std::function<void(const RunProgress&)>* cb_;
+  Clock::time_point start_;
+};
+
+// A fresh node must look like the reference's fresh node.
+std::optional<Finding> check_fresh(Implementation& sut) {
+  const Answer a = sut.reset();
+  if (a.status != CallStatus::Ok) {
+    Finding f;
+    f.clause = "STABLE-1";
+    f.status = a.status == CallStatus::Timeout ? FindingStatus::Timeout
+               : a.status == CallStatus::Crash ? FindingStatus::Crash
+                                               : FindingStatus::Fail;
+    f.message = std::string(call_status_name(a.status)) + " on reset: " + a.detail;
+    return f;
+  }
+  auto f = check_state(Node{}, sut, "LAYER-BASE-1");
+  if (f && f->message.find("crease") != std::string::npos) f->clause = "CREASE-INITIAL-1";
+  return f;
+}
+
+PropertyOutcome run_property(const PropertySpec& spec, Implementation& sut, const RunOptions& o,
+                             Clock::time_point deadline, RunProgress* progress, Clock::time_point run_start) {
+  PropertyOutcome out;
+  out.id = std::string(spec.id);
+  out.seed = property_seed(o.seed, spec.id);
+  const auto start = Clock::now();
+
+  CaseContext ctx;
+  ctx.sut = &sut;
+  ctx.deadline = deadline;
+  g_context = &ctx;
+
+  const Focus focus = spec.focus;
+  auto property = [focus] {
+    CaseContext& c = *g_context;
+    if (c.deadline_hit || past_deadline()) return;
+    c.trace.clear();
+    c.abandoned = false;
+    if (auto f = check_fresh(*c.sut)) {
+      if (!fail_case(*f)) return;
+    }
+    const auto commands = *rc::state::gen::commands(Node{}, [focus](const Node& model) {
+      return rc::gen::map(gen_command(model, focus), [](vgc::Command cmd) {
+        return std::shared_ptr<const rc::state::Command<Node, Implementation>>(std::make_shared<Step>(cmd));
+      });
+    });
+    rc::state::runAll(commands, Node{}, *c.sut);
+  };
+
+  rc::detail::TestParams params;
+  params.seed = out.seed;
+  params.maxSuccess = o.cases;
+  params.maxSize = o.max_size;
+  params.maxDiscardRatio = 10;
+  rc::detail::TestMetadata meta;
+  meta.id = out.id;
+  meta.description = std::string(spec.title);
+  ProgressListener listener(progress, &o.progress, run_start);
+  const auto result = rc::detail::checkTestable(property, meta, params, listener);
+  g_context = nullptr;
+
+  out.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  for (auto& [clause, note] : ctx.notes) out.notes.push_back(note);
+
+  rc::detail::SuccessResult success;
+  rc::detail::FailureResult failure;
+  rc::detail::GaveUpResult gave_up;
+  rc::detail::Error error;
+  if (result.match(success)) {
+    out.cases = success.numSuccess;
+    if (ctx.deadline_hit) {
+      out.status = "incomplete";
+      out.note = "budget ran out before all " + std::to_string(o.cases) + " cases ran; raise --budget";
+    } else {
+      out.status = "pass";
+    }
+  } else if (result.match(failure)) {
+    out.cases = failure.numSuccess;
+    if (ctx.last_failure) {
+      out.finding = ctx.last_failure;
+      out.program = ctx.last_program;
+    } else {  // an exception escaped from somewhere we did not expect
+      out.finding = Finding{"STABLE-1", FindingStatus::Fail, failure.description};
+    }
+    out.status = finding_status_name(out.finding->status);
+  } else if (result.match(gave_up)) {
+    out.status = "incomplete";
+    out.note = "RapidCheck gave up: " + gave_up.description;
+  } else if (result.match(error)) {
+    out.status = "incomplete";
+    out.note = "RapidCheck error: " + error.description;
+  }
+  return out;
+}
+
+}  // namespace
+
+bool clause_selected(const std::string& glob, std::string_view id) {
+  const std::string name(id);
+  std::stringstream ss(glob.empty() ? "*" : glob);
+  std::string pattern;
+  while (std::getline(ss, pattern, ','))
+    if (!pattern.empty() && fnmatch(pattern.c_str(), name.c_str(), 0) == 0) return true;
+  return false;
+}
+
+std::uint64_t property_seed(std::uint64_t run_seed, std::string_view property_id) {
+  std::uint64_t h = 1469598103934665603ull;  // FNV-1a
+  for (unsigned char ch : property_id) {
+    h ^= ch;
+    h *= 1099511628211ull;
+  }
+  // splitmix64 of the mix, so nearby run seeds give unrelated property seeds
+  std::uint64_t z = run_seed ^ h;
+  z += 0x9E3779B97F4A7C15ull;
+  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+  return z ^ (z >> 31);
+}
+
+RunResult run_certification(Implementation& sut, const RunOptions& o) {
+  RunResult run;
+  run.implementation = sut.name();
+  run.options = o;
+  const auto start = Clock::now();
+  const auto deadline = start + std::chrono::duration_cast<Clock::duration>(
+                                    std::chrono::duration<double>(o.budget_seconds));
+
+  const auto& props = property_catalog();
+  RunProgress progress;
+  progress.property_count = static_cast<int>(props.size());
+  for (std::size_t i = 0; i < props.size(); ++i) {
+    const PropertySpec& spec = props[i];
+    PropertyOutcome skipped;
+    skipped.id = std::string(spec.id);
+    skipped.seed = property_seed(o.seed, spec.id);
+    skipped.status = "skipped";
+    bool selected = false;
+    for (auto c : spec.clauses) selected = selected || clause_selected(o.clause_glob, c);
+    if (!selected) {
+      skipped.note = "no selected clause";
+      run.properties.push_back(skipped);
+      continue;
+    }
+    if (o.shard_count > 1 && static_cast<int>(i % static_cast<std::size_t>(o.shard_count)) != o.shard_index) {
+      skipped.note = "in shard " + std::to_string(i % static_cast<std::size_t>(o.shard_count) + 1) + "/" +
+                     std::to_string(o.shard_count);
+      run.properties.push_back(skipped);
+      continue;
+    }
+    progress.property = skipped.id;
+    progress.property_index = static_cast<int>(i);
+    progress.cases_done = 0;
+    progress.cases_total = o.cases;
+    progress.shrinking = false;
+    run.properties.push_back(run_property(spec, sut, o, deadline, &progress, start));
+  }
+
+  // Per clause: the findings of every property that ran, whoever declared it.
+  for (const Clause& clause : clause_catalog()) {
+    ClauseOutcome co;
+    co.clause = &clause;
+    bool declared_and_ran = false, declared_cut_short = false;
+    std::string skip_note;
+    for (std::size_t i = 0; i < props.size(); ++i) {
+      const PropertyOutcome& po = run.properties[i];
+      bool declares = false;
+      for (auto c : props[i].clauses) declares = declares || c == clause.id;
+      if (declares) {
+        if (po.status == "skipped") skip_note = po.note;
+        else if (po.status == "incomplete") declared_cut_short = true, skip_note = po.note;
+        else declared_and_ran = true, co.properties.push_back(po.id);
+      }
+      auto take = [&](const Finding& f, const Program& p) {
+        if (co.finding && co.program.commands.size() <= p.commands.size()) return;
+        co.finding = f;
+        co.program = p;
+        co.found_by = po.id;
+        co.seed = po.seed;
+      };
+      if (po.finding && po.finding->clause == clause.id) take(*po.finding, po.program);
+      for (const auto& [f, p] : po.notes)
+        if (f.clause == clause.id) take(f, p);
+    }
+    if (co.finding) {
+      co.status = finding_status_name(co.finding->status);
+    } else if (!clause_selected(o.clause_glob, clause.id)) {
+      continue;  // not asked for and nothing found
+    } else if (declared_and_ran && !declared_cut_short) {
+      co.status = "pass";
+    } else {
+      co.status = "skipped";
+      co.note = skip_note.empty() ? "no property ran" : skip_note;
+    }
+    run.clauses.push_back(co);
+  }
+
+  run.conformant = true;
+  run.complete = true;
+  for (const auto& co : run.clauses) {
+    if (co.finding && co.clause->level != ClauseLevel::Should) run.conformant = false;
+    if (co.status == "skipped" && co.note.find("shard") == std::string::npos) run.complete = false;
+  }
+  for (const auto& po : run.properties)
+    if (po.status == "incomplete") run.complete = false;
+  run.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  return run;
+}
+
+ReplayResult replay_program(const Program& program, Implementation& sut) {
+  ReplayResult r;
+  if (auto f = check_fresh(sut)) {
+    r.failure = f;
+    return r;
+  }
+  Node model;
+  for (std::size_t i = 0; i < program.commands.size(); ++i) {
+    Node after;
+    StepResult s = check_step(model, program.commands[i], sut, &after);
+    for (auto& n : s.notes) r.notes.push_back(n);
+    if (s.failure) {
+      r.failure = s.failure;
+      r.failed_at = static_cast<int>(i);
+      return r;
+    }
+    model = std::move(after);
+  }
+  return r;
+}
+
+}  // namespace vgc

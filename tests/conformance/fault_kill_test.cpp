@@ -1,0 +1,86 @@
+// fault_kill_test.cpp — every seeded fault (faults/faulty_node.h) is rejected
+// by certification, naming the clause the fault breaks; the kill ratio is
+// printed. Faults that crash or hang run isolated, through the plugin route
+// in a child process, as a user's would.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+
+#include "faulty_implementation.h"
+#include "implementation.h"
+#include "runner.h"
+#include "verdict.h"
+
+namespace vgc {
+namespace {
+
+RunOptions kill_options() {
+  RunOptions o;
+  o.seed = 1;
+  o.cases = 100;
+  o.budget_seconds = 120;
+  return o;
+}
+
+struct Outcome {
+  bool killed = false;
+  std::string detail;
+};
+
+Outcome certify_fault(int fault) {
+  const auto& info = faults::fault_catalog()[static_cast<std::size_t>(fault)];
+  RunResult run;
+  if (info.expected_status == "fail") {
+    faults::FaultyImplementation impl(fault);
+    run = run_certification(impl, kill_options());
+  } else {
+    setenv("VGC_FAULT", std::string(info.name).c_str(), 1);
+    OpenOptions open;
+    open.timeout_seconds = 1.0;
+    open.vgc_binary = VGC_BINARY;
+    std::string error;
+    auto impl = open_implementation(std::string("plugin:") + VGC_FAULT_PLUGIN, open, &error);
+    unsetenv("VGC_FAULT");
+    if (!impl) return {false, "cannot open: " + error};
+    RunOptions o = kill_options();
+    o.clause_glob = std::string(info.expected_clause);  // keep the isolated runs short
+    run = run_certification(*impl, o);
+  }
+  const Verdict v = judge(run, nullptr);
+  Outcome out;
+  for (const auto& co : run.clauses)
+    if (co.finding) out.detail += std::string(co.clause->id) + "(" + co.status + ") ";
+  for (const auto& co : run.clauses)
+    if (co.finding && co.clause->id == info.expected_clause && co.status == info.expected_status) out.killed = true;
+  // A SHOULD fault is caught without changing the verdict; every other
+  // fault must make the implementation non-conformant.
+  if (info.expected_clause == "REASON-1") out.killed = out.killed && v.name == "conformant";
+  else out.killed = out.killed && v.exit_code == 1;
+  return out;
+}
+
+TEST(FaultKill, EveryFaultIsRejectedNamingItsClause) {
+  const auto& catalog = faults::fault_catalog();
+  int killed = 0, total = 0;
+  for (std::size_t f = 1; f < catalog.size(); ++f) {
+    const Outcome o = certify_fault(static_cast<int>(f));
+    ++total;
+    killed += o.killed;
+    std::printf("%-34s expect %-24s %-8s %s  found: %s\n", std::string(catalog[f].name).c_str(),
+                std::string(catalog[f].expected_clause).c_str(), std::string(catalog[f].expected_status).c_str(),
+                o.killed ? "KILLED" : "SURVIVED", o.detail.c_str());
+    EXPECT_TRUE(o.killed) << catalog[f].name << ": found " << o.detail;
+  }
+  std::printf("kill ratio: %d/%d faults killed\n", killed, total);
+  EXPECT_GE(total, 12);
+}
+
+TEST(FaultKill, TheUnfaultedWrapperIsConformant) {
+  faults::FaultyImplementation impl(0);
+  const RunResult run = run_certification(impl, kill_options());
+  EXPECT_TRUE(run.conformant);
+  EXPECT_TRUE(run.complete);
+}
+
+}  // namespace
+}  // namespace vgc

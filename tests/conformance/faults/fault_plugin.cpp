@@ -1,0 +1,60 @@
+// fault_plugin.cpp — libvgc_fault_plugin.so: a FaultyNode behind the plugin
+// C ABI (vgc_plugin.h). The fault is named by the environment variable
+// VGC_FAULT (see faulty_node.cpp for the list), so one library serves every
+// fault, through every route:
+//   VGC_FAULT=bone-cycles-accepted ./vgc certify --impl plugin:build/tests/conformance/libvgc_fault_plugin.so
+#include <cstdlib>
+#include <new>
+#include <string>
+
+#include "command_text.h"
+#include "faulty_node.h"
+#include "vgc_plugin.h"
+
+struct vgc_node {
+  vgc::faults::FaultyNode node;
+  std::string text;
+};
+
+namespace {
+
+int fault_from_env() {
+  const char* name = std::getenv("VGC_FAULT");
+  const int f = vgc::faults::find_fault(name ? name : "none");
+  return f < 0 ? 0 : f;
+}
+
+vgc_node* create_node() { return new (std::nothrow) vgc_node{vgc::faults::FaultyNode(fault_from_env()), {}}; }
+void destroy_node(vgc_node* n) { delete n; }
+
+int apply_line(vgc_node* n, const char* line, const char** reason) {
+  vgc::Command c;
+  bool blank = false;
+  vgc::TextError e;
+  if (!vgc::parse_command_line(line, 1, &c, &blank, &e)) {
+    n->text = e.to_string();
+    *reason = n->text.c_str();
+    return VGC_MALFORMED;
+  }
+  const auto a = n->node.apply(c);
+  if (a.applied) return VGC_APPLIED;
+  n->text = a.reason;
+  *reason = n->text.c_str();
+  return VGC_REJECTED;
+}
+
+const char* snapshot_of(vgc_node* n) {
+  n->text = n->node.snapshot();
+  return n->text.c_str();
+}
+const char* derived_of(vgc_node* n) {
+  n->text = n->node.derived();
+  return n->text.c_str();
+}
+
+const vgc_plugin_v1_table kTable = {VGC_PLUGIN_ABI_VERSION, "vgc faulty reference (VGC_FAULT)", create_node,
+                                    destroy_node, apply_line, snapshot_of, derived_of};
+
+}  // namespace
+
+extern "C" __attribute__((visibility("default"))) const vgc_plugin_v1_table* vgc_plugin_v1(void) { return &kTable; }

@@ -1,0 +1,257 @@
+// faulty_node.cpp — see faulty_node.h. Each fault is a few lines in apply()
+// or in a document rewrite, marked with its name.
+#include "faulty_node.h"
+
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <limits>
+#include <sstream>
+#include <thread>
+
+#include "bone_pose.h"
+#include "crease.h"
+#include "number_text.h"
+#include "snapshot.h"
+
+namespace vgc::faults {
+
+const std::vector<FaultInfo>& fault_catalog() {
+  static const std::vector<FaultInfo> catalog = {
+      {"none", "", "", "the reference, unchanged"},
+      {"base-layer-destroyable", "LAYER-BASE-2", "fail", "answers ok to destroying layer 0 or 1"},
+      {"layer-type-unchecked", "LAYER-TYPE-1", "fail", "creates a layer with an unknown type as VERTEX_UINT32"},
+      {"long-names-truncated", "LAYER-NAME-1", "fail", "truncates layer names over 15 bytes instead of rejecting"},
+      {"duplicate-names-allowed", "LAYER-NAME-2", "fail", "answers ok to a layer name already in use"},
+      {"no-default-on-new-slots", "LAYER-DEFAULT-1", "fail", "new vertex/polygon slots in other layers are zero"},
+      {"recreate-resets-data", "LAYER-RECREATE-1", "fail", "re-creating a layer with its own type clears its data"},
+      {"missing-corner-vertices-created", "POLY-VERTEX-REF-1", "fail",
+       "a corner naming no vertex creates that vertex at the origin"},
+      {"duplicate-corners-accepted", "POLY-DISTINCT-1", "fail", "a repeated corner is dropped, making a triangle"},
+      {"vertex-delete-refused-when-used", "POLY-VERTEX-DELETE-1", "fail",
+       "refuses to delete a vertex that polygons use"},
+      {"edge-crease-off-by-one", "CREASE-EDGE-LAYER-1", "fail",
+       "reports the crease of corner i+1 for the edge starting at corner i"},
+      {"wrong-type-crease-layer-used", "CREASE-LAYER-MISSING-1", "fail",
+       "reads vertex creases from a named layer of any vertex type"},
+      {"bone-cycles-accepted", "BONE-FOREST-1", "fail", "stores a bone that closes a cycle as a root instead"},
+      {"bone-rotation-not-inherited", "BONE-DOWNSTREAM-1", "fail",
+       "a child's position ignores its parent's rotation"},
+      {"real64-stored-as-float", "REAL-STORAGE-1", "fail", "REAL layers keep only 32 bits"},
+      {"rejected-layer-still-created", "ATOMIC-1", "fail",
+       "a layer_create rejected for its name still creates the layer with a shortened name"},
+      {"pick-highest-layer-id", "LAYER-ID-PICK-1", "fail", "layer id 0xFFFF picks the highest free id"},
+      {"crash-on-self-parent", "BONE-FOREST-1", "crash", "aborts on a bone that names itself as parent (its cycle check)"},
+      {"hang-on-subscribe-real64", "LAYER-SUBSCRIBE-1", "timeout", "never answers a REAL64 subscription"},
+      {"wrong-reason-codes", "REASON-1", "fail", "rejects with the right verdict but always says REJECTED (SHOULD)"},
+  };
+  return catalog;
+}
+
+int find_fault(std::string_view name) {
+  const auto& c = fault_catalog();
+  for (std::size_t i = 0; i < c.size(); ++i)
+    if (c[i].name == name) return static_cast<int>(i);
+  return -1;
+}
+
+bool FaultyNode::is(std::string_view name) const { return fault_catalog()[static_cast<std::size_t>(fault_)].name == name; }
+
+FaultyAnswer FaultyNode::answer(Reason r) const {
+  if (r == Reason::Ok) return {true, ""};
+  if (is("wrong-reason-codes")) return {false, "REJECTED"};
+  return {false, std::string(reason_name(r))};
+}
+
+namespace {
+template <class... F> struct Overloaded : F... { using F::operator()...; };
+template <class... F> Overloaded(F...) -> Overloaded<F...>;
+
+bool creates_element(const Command& c, const Node& before, bool* vertex_stack, std::uint32_t* id) {
+  if (auto* x = std::get_if<cmd::VertexSetXyzReal64>(&c); x && x->layer_id == 0 && !before.vertices().count(x->vertex_id)) {
+    *vertex_stack = true, *id = x->vertex_id;
+    return true;
+  }
+  if (auto* x = std::get_if<cmd::VertexSetXyzReal32>(&c); x && x->layer_id == 0 && !before.vertices().count(x->vertex_id)) {
+    *vertex_stack = true, *id = x->vertex_id;
+    return true;
+  }
+  if (auto* x = std::get_if<cmd::PolygonSetCornerUint32>(&c); x && x->layer_id == 1 && !before.polygons().count(x->polygon_id)) {
+    *vertex_stack = false, *id = x->polygon_id;
+    return true;
+  }
+  return false;
+}
+}  // namespace
+
+FaultyAnswer FaultyNode::apply(const Command& original) {
+  Command c = original;
+  const Node before = node_;
+
+  // base-layer-destroyable
+  if (is("base-layer-destroyable")) {
+    if (auto* x = std::get_if<cmd::LayerDestroy>(&c); x && x->layer_id < 2) return {true, ""};
+  }
+  // layer-type-unchecked
+  if (auto* x = std::get_if<cmd::LayerCreate>(&c); x && is("layer-type-unchecked") && !is_layer_type(x->type))
+    x->type = static_cast<std::uint8_t>(LayerType::VertexUint32);
+  // long-names-truncated
+  if (auto* x = std::get_if<cmd::LayerCreate>(&c); x && is("long-names-truncated") && x->name.size() > kMaxNameBytes)
+    x->name.resize(kMaxNameBytes);
+  // duplicate-names-allowed
+  if (auto* x = std::get_if<cmd::LayerCreate>(&c); x && is("duplicate-names-allowed")) {
+    if (const Layer* other = node_.find_layer_by_name(x->name); other && other->id != x->layer_id && !x->name.empty())
+      return {true, ""};
+  }
+  // recreate-resets-data
+  if (auto* x = std::get_if<cmd::LayerCreate>(&c); x && is("recreate-resets-data") && !x->name.empty()) {
+    const Layer* l = node_.find_layer(x->layer_id);
+    if (l && x->layer_id >= 2 && static_cast<std::uint8_t>(l->type) == x->type) {
+      Node trial = node_;
+      if (trial.apply(c) == Reason::Ok) {
+        node_.apply(cmd::LayerDestroy{x->layer_id});
+        node_.apply(c);
+        return {true, ""};
+      }
+    }
+  }
+  // missing-corner-vertices-created
+  if (auto* x = std::get_if<cmd::PolygonSetCornerUint32>(&c); x && is("missing-corner-vertices-created") && x->layer_id == 1) {
+    Node trial = node_;
+    if (trial.apply(c) == Reason::NoSuchVertex) {
+      for (std::uint32_t v : x->v)
+        if (v != kNone32 && !trial.vertices().count(v)) trial.apply(cmd::VertexSetXyzReal64{0, v, 0, 0, 0});
+      if (trial.apply(c) == Reason::Ok) {
+        node_ = trial;
+        return {true, ""};
+      }
+    }
+  }
+  // duplicate-corners-accepted
+  if (auto* x = std::get_if<cmd::PolygonSetCornerUint32>(&c); x && is("duplicate-corners-accepted") && x->layer_id == 1 &&
+                                                              x->v[0] != kNone32) {
+    std::array<std::uint32_t, 4> unique{kNone32, kNone32, kNone32, kNone32};
+    int n = 0;
+    for (std::uint32_t v : x->v) {
+      bool seen = v == kNone32;
+      for (int i = 0; i < n; ++i) seen = seen || unique[i] == v;
+      if (!seen) unique[n++] = v;
+    }
+    if (n == 3 && x->v[3] != kNone32) x->v = unique;
+  }
+  // vertex-delete-refused-when-used
+  if (is("vertex-delete-refused-when-used")) {
+    std::uint32_t victim = kNone32;
+    if (auto* x = std::get_if<cmd::VertexDelete>(&c)) victim = x->vertex_id;
+    if (auto* x = std::get_if<cmd::VertexSetXyzReal64>(&c); x && (x->x == std::numeric_limits<double>::max() ||
+                                                                  x->y == std::numeric_limits<double>::max() ||
+                                                                  x->z == std::numeric_limits<double>::max()))
+      victim = x->vertex_id;
+    if (victim != kNone32)
+      for (const auto& [pid, slot] : node_.polygons())
+        for (std::uint32_t v : slot.u)
+          if (v == victim) return {false, "VERTEX_IN_USE"};
+  }
+  // bone-cycles-accepted
+  if (auto* x = std::get_if<cmd::BoneCreate>(&c); x && is("bone-cycles-accepted")) {
+    Node trial = node_;
+    if (trial.apply(c) == Reason::BoneCycle) x->parent = kNone16;
+  }
+  // real64-stored-as-float
+  if (is("real64-stored-as-float")) {
+    auto narrow = [](double d) { return static_cast<double>(static_cast<float>(d)); };
+    if (auto* x = std::get_if<cmd::VertexSetReal64>(&c)) x->value = narrow(x->value);
+    if (auto* x = std::get_if<cmd::PolygonSetFaceReal64>(&c)) x->value = narrow(x->value);
+    if (auto* x = std::get_if<cmd::PolygonSetCornerReal64>(&c))
+      for (double& v : x->v) v = narrow(v);
+  }
+  // rejected-layer-still-created
+  if (auto* x = std::get_if<cmd::LayerCreate>(&c); x && is("rejected-layer-still-created") && x->name.size() > kMaxNameBytes) {
+    cmd::LayerCreate shortened = *x;
+    shortened.name.resize(kMaxNameBytes);
+    node_.apply(shortened);
+    return answer(Reason::BadName);
+  }
+  // pick-highest-layer-id
+  if (auto* x = std::get_if<cmd::LayerCreate>(&c); x && is("pick-highest-layer-id") && x->layer_id == kNone16) {
+    for (std::uint16_t id = 0xFFFE; id >= 2; --id)
+      if (!node_.find_layer(id)) {
+        x->layer_id = id;
+        break;
+      }
+  }
+  // crash-on-self-parent
+  if (auto* x = std::get_if<cmd::BoneCreate>(&c); x && is("crash-on-self-parent") && x->parent == x->bone_id) {
+    Node trial = node_;
+    if (trial.apply(c) == Reason::BoneCycle) std::abort();  // dies in its cycle handling
+  }
+  // hang-on-subscribe-real64
+  if (auto* x = std::get_if<cmd::LayerSubscribe>(&c); x && is("hang-on-subscribe-real64") && x->real_format == 1)
+    for (;;) std::this_thread::sleep_for(std::chrono::seconds(1));
+
+  bool vertex_stack = false;
+  std::uint32_t new_id = 0;
+  const bool creating = creates_element(c, before, &vertex_stack, &new_id);
+  const Reason r = node_.apply(c);
+  // no-default-on-new-slots: zero every other layer's new slot.
+  if (r == Reason::Ok && creating && is("no-default-on-new-slots")) {
+    for (const auto& [lid, layer] : node_.layers()) {
+      if (lid < 2 || is_vertex_layer_type(layer.type) != vertex_stack) continue;
+      Layer& l = const_cast<Layer&>(layer);  // test-only: reach into the node's storage
+      for (auto& [eid, slot] : l.slots)
+        if (!before.find_layer(lid) || !before.find_layer(lid)->slots.count(eid)) slot = Slot{};
+    }
+  }
+  return answer(r);
+}
+
+std::string FaultyNode::snapshot() const { return print_snapshot(node_); }
+
+std::string FaultyNode::derived() const {
+  if (!is("edge-crease-off-by-one") && !is("wrong-type-crease-layer-used") && !is("bone-rotation-not-inherited"))
+    return print_derived(node_);
+  std::istringstream in(print_derived(node_));
+  std::string line, out;
+  while (std::getline(in, line)) {
+    std::istringstream words(line);
+    std::string kind;
+    words >> kind;
+    if (kind == "edge_crease" && is("edge-crease-off-by-one")) {
+      std::uint32_t p = 0;
+      int corner = 0;
+      words >> p >> corner;
+      const int n = corner_count(node_.polygons().at(p));
+      line = "edge_crease " + std::to_string(p) + " " + std::to_string(corner) + " " +
+             format_uint(edge_crease(node_, p, (corner + 1) % n), 32);
+    } else if (kind == "vertex_crease" && is("wrong-type-crease-layer-used")) {
+      std::uint32_t v = 0;
+      words >> v;
+      const Layer* l = node_.find_layer_by_name(node_.vertex_crease().layer);
+      if (l && l->type == LayerType::VertexReal) {
+        const double d = l->slots.at(v).r[0];
+        const std::uint32_t u = std::isfinite(d) && d >= 0 && d < 4294967295.0 ? static_cast<std::uint32_t>(d) : 0;
+        line = "vertex_crease " + std::to_string(v) + " " + format_uint(u, 32);
+      }
+    } else if (kind == "bone_pose" && is("bone-rotation-not-inherited")) {
+      long id = 0;
+      words >> id;
+      // Positions add up the chain without rotating; rotations are right.
+      const auto poses = bone_world_poses(node_);
+      const auto& bones = node_.bones();
+      std::array<double, 3> pos = bones.at(static_cast<std::uint16_t>(id)).pos;
+      std::uint16_t b = bones.at(static_cast<std::uint16_t>(id)).parent;
+      for (std::size_t guard = 0; bones.count(b) && guard <= bones.size(); ++guard) {
+        for (int i = 0; i < 3; ++i) pos[static_cast<std::size_t>(i)] += bones.at(b).pos[static_cast<std::size_t>(i)];
+        b = bones.at(b).parent;
+      }
+      const auto& rot = poses.at(static_cast<std::uint16_t>(id)).rot;
+      line = "bone_pose " + std::to_string(id);
+      for (double d : pos) line += " " + format_f64(d);
+      for (double d : rot) line += " " + format_f64(d);
+    }
+    out += line + "\n";
+  }
+  return out;
+}
+
+}  // namespace vgc::faults
