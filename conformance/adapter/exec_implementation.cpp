@@ -310,6 +310,14 @@ ExecImplementation::Io ExecImplementation::read_line(std::string* line, Clock::t
 
 ExecImplementation::Io ExecImplementation::exchange(const std::string& line, std::string* answer,
                                                     Clock::time_point dl) {
+  // Output nobody asked for (a second answer line, a banner) would be
+  // taken for the answer to this request: refuse what has already arrived.
+  if (out_buf_.empty() && out_fd_ >= 0) {
+    char buf[4096];
+    const ssize_t r = read(out_fd_, buf, sizeof buf);
+    if (r > 0) out_buf_.append(buf, static_cast<std::size_t>(r));
+  }
+  if (!out_buf_.empty()) return Io::Unrequested;
   const Io w = write_all(line + "\n", dl);
   if (w != Io::Ok) return w;  // WriteFailed: it closed its stdin or died
   return read_line(answer, dl);
@@ -383,6 +391,12 @@ void ExecImplementation::fail_io(Io io, const std::string& what) {
     case Io::WriteFailed:
       fail(CallStatus::Crash, "its input was closed when sending " + what);
       return;
+    case Io::Unrequested: {
+      const std::string first = out_buf_.substr(0, out_buf_.find('\n'));
+      fail(CallStatus::ProtocolError, "it wrote " + quote_line(first) + " before being sent " + what +
+                                          " (more than one answer line to an earlier request?)");
+      return;
+    }
   }
 }
 

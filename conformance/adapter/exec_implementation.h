@@ -57,7 +57,7 @@ class ExecImplementation final : public Implementation {
 
  private:
   using Clock = std::chrono::steady_clock;
-  enum class Io { Ok, Eof, Timeout, TooLong, WriteFailed };
+  enum class Io { Ok, Eof, Timeout, TooLong, WriteFailed, Unrequested };
 
   bool spawn(std::string* error);
   // Sends `line` + "\n" and reads one line, with one deadline for both.

@@ -53,6 +53,7 @@ TEST(ExecFaults, CrashOnThirdCommandIsACrashAndResetRestartsIt) {
   const Answer again = impl->apply(kCommand);
   EXPECT_EQ(again.status, CallStatus::Crash);
   EXPECT_NE(again.detail.find("giving up"), std::string::npos) << again.detail;
+  EXPECT_NE(again.detail.find("not sent"), std::string::npos) << again.detail;
   EXPECT_EQ(impl->snapshot().status, CallStatus::Crash);
   EXPECT_EQ(impl->derived().status, CallStatus::Crash);
   EXPECT_LT(seconds_since(t0), 0.1);
@@ -118,6 +119,16 @@ TEST(ExecFaults, GarbageAnswersAreProtocolErrorsQuotingTheLine) {
     EXPECT_EQ(d.status, CallStatus::ProtocolError);
     EXPECT_NE(d.detail.find("\"here you go\""), std::string::npos) << d.detail;
     EXPECT_LT(seconds_since(t0), 1.0);  // found at once, not by timing out
+  }
+  {
+    auto impl = open_exec(faulty_spec("garbage_answer.sh", "twice"), test_options(5.0));
+    ASSERT_TRUE(impl);
+    ASSERT_EQ(impl->reset().status, CallStatus::Ok);
+    EXPECT_TRUE(impl->apply(kCommand).applied);
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));  // its second "ok" has arrived
+    const Answer a = impl->apply(kCommand);
+    EXPECT_EQ(a.status, CallStatus::ProtocolError);
+    EXPECT_NE(a.detail.find("wrote \"ok\" before being sent"), std::string::npos) << a.detail;
   }
 }
 

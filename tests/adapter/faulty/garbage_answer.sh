@@ -4,6 +4,7 @@
 #   words     "sure, why not"
 #   reason2   "rejected NO SUCH_LAYER" (a reason of two words)
 #   document  ?snapshot answers "here you go" (not a document)
+#   twice     answers every command with two lines, "ok" and "ok"
 # tests/adapter/exec_faults_test.cpp: ProtocolError quoting the line.
 mode=${1:-words}
 while IFS= read -r line; do
@@ -17,6 +18,7 @@ while IFS= read -r line; do
       case "$mode" in
         words) echo "sure, why not";;
         reason2) echo "rejected NO SUCH_LAYER";;
+        twice) echo ok; echo ok;;
         *) echo ok;;
       esac;;
   esac
