@@ -24,8 +24,8 @@ namespace {
 struct Options {
   std::string impl = "reference";
   std::uint64_t seed = 1;
-  int cases = 100;
-  int max_size = 40;
+  int cases = 200;
+  int max_size = 50;
   double budget = 300;
   double timeout = 5;
   std::string clauses = "*";

@@ -111,7 +111,7 @@ const std::vector<Clause>& clause_catalog() {
        "deleting a vertex that is not live is rejected."},
       {"VERTEX-ID-PICK-1", "vertices", MUST, "README (r6 protocol)",
        "An id of 0xFFFFFFFF (vertex, polygon) ... asks the host to pick a free id.",
-       "Reading: the lowest free id, for vertices and polygons alike."},
+       "The lowest free id, for vertices and polygons alike."},
       {"VERTEX-FINITE-1", "vertices", IMPL, "000 2.6 (vertex data describe positions)",
        "Vertex data describe positions in a local 3D space.",
        "A base-layer position with an infinite or NaN coordinate is rejected (it is not a position, and it "
@@ -143,7 +143,7 @@ const std::vector<Clause>& clause_catalog() {
        "Deleting a live polygon removes it from every polygon layer; deleting one that is not live is rejected."},
       {"POLY-VERTEX-DELETE-1", "polygons", IMPL, "000 2.6 (silent)",
        "(silent) What happens to polygons when a vertex they use is deleted.",
-       "Reading: the vertex is deleted and so is every polygon that uses it, so every live polygon always names "
+       "The vertex is deleted and so is every polygon that uses it, so every live polygon always names "
        "live vertices. (The r6 host leaves such polygons dangling, which this suite does not accept: a dangling "
        "polygon is not a valid polygon.)"},
 
@@ -164,13 +164,13 @@ const std::vector<Clause>& clause_catalog() {
       {"CREASE-LAYER-MISSING-1", "creases", IMPL, "000 2.6.2 (silent)",
        "If a layer is used, it must be of type VN_G_LAYER_VERTEX_UINT32 ... and VN_G_LAYER_POLYGON_CORNER_UINT32 "
        "for edges.",
-       "Reading: the name is stored as sent and resolved when creases are read; while it names no layer, or a "
+       "The name is stored as sent and resolved when creases are read; while it names no layer, or a "
        "layer of another type, the constant def_crease applies. So a crease layer may be created after it is "
        "named."},
       {"CREASE-INITIAL-1", "creases", IMPL, "000 2.6.4",
        "To make sure the cube is not interpreted as a smooth shape, we need to explicitly set the creasing to "
        "\"sharp\".",
-       "Reading: a new node is smooth everywhere (both creases the constant 0)."},
+       "A new node is smooth everywhere (both creases the constant 0)."},
       {"CREASE-NAME-1", "creases", MUST, "README (names)",
        "Names (layer names, crease layer names, ...): at most 16 bytes including the terminating NUL.",
        "A crease layer name over 15 bytes or holding a NUL is rejected."},
@@ -196,7 +196,7 @@ const std::vector<Clause>& clause_catalog() {
        "A bone whose parent id names no live bone is a root: its world pose is its own position and rotation."},
       {"BONE-FOREST-1", "bones", IMPL, "000 2.6.3 (silent)",
        "The parent link defines hierarchies of bones, i.e. skeletons.",
-       "Reading: a bone_create whose parent link would make the bone its own ancestor is rejected, so bones "
+       "A bone_create whose parent link would make the bone its own ancestor is rejected, so bones "
        "always form a forest. (The r6 host stores cycles as sent.)"},
       {"BONE-DOWNSTREAM-1", "bones", MUST, "000 2.6.3",
        "... if you rotate any bone, all bones \"downstream\" of it will rotate, too.",
@@ -205,11 +205,11 @@ const std::vector<Clause>& clause_catalog() {
        "within 1e-9 relative."},
       {"BONE-VALUE-1", "bones", IMPL, "000 2.6.3 (silent)",
        "... a position ... a rotation ...",
-       "Reading: a non-finite position or rotation component, or the zero quaternion, is rejected, so every bone "
+       "A non-finite position or rotation component, or the zero quaternion, is rejected, so every bone "
        "has a pose."},
       {"BONE-ID-PICK-1", "bones", MUST, "README (r6 protocol)",
        "An id of ... 0xFFFF (layer, bone) in a create/set command asks the host to pick a free id.",
-       "Reading: the lowest free bone id."},
+       "The lowest free bone id."},
       {"BONE-NAME-1", "bones", MUST, "README (names)",
        "Names (... bone weight/reference layer names, curve labels): at most 16 bytes including the terminating "
        "NUL.",

@@ -1,8 +1,11 @@
 // runner.cpp — see runner.h.
 #include "runner.h"
 
+#include <fcntl.h>
 #include <fnmatch.h>
 #include <rapidcheck.h>
+#include <rapidcheck/detail/Configuration.h>
+#include <unistd.h>
 #include <rapidcheck/state.h>
 
 #include <chrono>
@@ -194,6 +197,32 @@ PropertyOutcome run_property(const PropertySpec& spec, Implementation& sut, cons
   return out;
 }
 
+// RapidCheck prints its global configuration ("Using configuration:
+// seed=...") to stderr the first time it is read. The runner never uses
+// that configuration (every property gets explicit TestParams), so a
+// printed random seed would only mislead: read it once with stderr closed.
+void load_rapidcheck_configuration_quietly() {
+  static const bool done = [] {
+    std::fflush(stderr);
+    const int saved = dup(STDERR_FILENO);
+    const int null = open("/dev/null", O_WRONLY);
+    if (saved >= 0 && null >= 0) dup2(null, STDERR_FILENO);
+    try {
+      (void)rc::detail::configuration();
+    } catch (...) {
+      // a malformed RC_PARAMS: irrelevant here, properties set their own parameters
+    }
+    std::cerr.flush();
+    if (saved >= 0) {
+      dup2(saved, STDERR_FILENO);
+      close(saved);
+    }
+    if (null >= 0) close(null);
+    return true;
+  }();
+  (void)done;
+}
+
 }  // namespace
 
 bool clause_selected(const std::string& glob, std::string_view id) {
@@ -220,6 +249,7 @@ std::uint64_t property_seed(std::uint64_t run_seed, std::string_view property_id
 }
 
 RunResult run_certification(Implementation& sut, const RunOptions& o) {
+  load_rapidcheck_configuration_quietly();
   RunResult run;
   run.implementation = sut.name();
   run.options = o;
