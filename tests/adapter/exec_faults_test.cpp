@@ -145,10 +145,10 @@ TEST(ExecFaults, AProgramThatNeverAnswersHelloDoesNotOpen) {
 
 TEST(ExecFaults, AWrongHelloDoesNotOpen) {
   std::string error;
-  EXPECT_EQ(open_implementation("exec:echo hello; cat >/dev/null", test_options(5.0), &error), nullptr);
+  EXPECT_EQ(open_implementation("exec:read l; echo hello; cat >/dev/null", test_options(5.0), &error), nullptr);
   EXPECT_NE(error.find("protocol-error"), std::string::npos) << error;
   EXPECT_NE(error.find("\"hello\""), std::string::npos) << error;
-  EXPECT_EQ(open_implementation("exec:echo vgc-exec 2 future; cat >/dev/null", test_options(5.0), &error), nullptr);
+  EXPECT_EQ(open_implementation("exec:read l; echo vgc-exec 2 future; cat >/dev/null", test_options(5.0), &error), nullptr);
   EXPECT_NE(error.find("version \"2\""), std::string::npos) << error;
 }
 
@@ -189,7 +189,7 @@ TEST(ExecFaults, WritingToAClosedInputIsACrashNotSigpipe) {
 TEST(ExecFaults, AnOverlongAnswerIsAProtocolErrorAndBoundsMemory) {
   OpenOptions o = test_options(5.0);
   o.max_answer_bytes = 1 << 20;
-  auto impl = open_exec("exec:echo vgc-exec 1 big; read l; head -c 3000000 /dev/zero | tr '\\0' x; cat >/dev/null", o);
+  auto impl = open_exec("exec:read l; echo vgc-exec 1 big; read l; head -c 3000000 /dev/zero | tr '\\0' x; cat >/dev/null", o);
   ASSERT_TRUE(impl);
   const auto t0 = Clock::now();
   const Answer a = impl->reset();
