@@ -1,0 +1,219 @@
+// cli_test.cpp — `vgc certify`, `vgc replay`, `vgc clauses` and `vgc apply`
+// end to end: the real binary (VGC_BINARY) through a shell, in a temporary
+// directory, checked by exit code and by the files and lines it writes. The
+// three routes (in process, exec, plugin) certify the reference; a seeded
+// fault (libvgc_fault_plugin.so behind `vgc serve`) is rejected naming its
+// clause, replays, and passes with a baseline.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <regex>
+#include <set>
+#include <sstream>
+
+#include "clause.h"
+#include "command_text.h"
+#include "exec_implementation.h"  // shell_quote
+
+namespace vgc {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string read(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+struct Result {
+  int exit_code = -1;
+  std::string out, err;
+};
+
+class Cli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() /
+           ("vgc_cli_test_" + std::to_string(::getpid()) + "_" +
+            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override {
+    std::error_code ec;
+    if (!HasFailure()) fs::remove_all(dir_, ec);  // kept for a look when something failed
+  }
+
+  // Runs `env vgc args` in the temporary directory.
+  Result vgc(const std::string& args, const std::string& env = "") {
+    const fs::path out = dir_ / "stdout.txt", err = dir_ / "stderr.txt";
+    const std::string command = "cd " + shell_quote(dir_.string()) + " && " + env + (env.empty() ? "" : " ") +
+                                shell_quote(VGC_BINARY) + " " + args + " >" + shell_quote(out.string()) + " 2>" +
+                                shell_quote(err.string()) + " </dev/null";
+    const int status = std::system(command.c_str());
+    Result r;
+    r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + (WIFSIGNALED(status) ? WTERMSIG(status) : 0);
+    r.out = read(out);
+    r.err = read(err);
+    last_command_ = command;
+    return r;
+  }
+  std::string context(const Result& r) const {
+    return "command: " + last_command_ + "\nstdout:\n" + r.out + "\nstderr:\n" + r.err;
+  }
+  fs::path write(const std::string& name, const std::string& text) {
+    const fs::path p = dir_ / name;
+    std::ofstream(p, std::ios::binary) << text;
+    return p;
+  }
+
+  fs::path dir_;
+  std::string last_command_;
+};
+
+const std::string kFast = " --quiet --cases 30 --max-size 30 --seed 3";
+
+std::string serve(const std::string& impl = "") {
+  return std::string(VGC_BINARY) + " serve" + (impl.empty() ? "" : " --impl " + impl);
+}
+
+void expect_report_files(const fs::path& reports, const std::string& verdict) {
+  const fs::path latest = reports / "latest";
+  ASSERT_TRUE(fs::is_symlink(latest)) << latest;
+  for (const char* f : {"report.json", "junit.xml", "summary.md"})
+    EXPECT_TRUE(fs::is_regular_file(latest / f)) << f;
+  const auto j = nlohmann::json::parse(read(latest / "report.json"));
+  EXPECT_EQ(j.at("verdict"), verdict);
+  EXPECT_EQ(j.at("seed"), 3);
+  // The cases really ran (a route that answered nothing would not get here with 30).
+  ASSERT_FALSE(j.at("properties").empty());
+  for (const auto& p : j.at("properties"))
+    if (p.at("status") == "pass") EXPECT_EQ(p.at("cases"), 30) << p.dump();
+}
+
+TEST_F(Cli, CertifyTheReferenceInProcess) {
+  const Result r = vgc("certify --impl reference --reports rep" + kFast);
+  ASSERT_EQ(r.exit_code, 0) << context(r);
+  expect_report_files(dir_ / "rep", "conformant");
+  EXPECT_NE(r.out.find("conformant"), std::string::npos) << context(r);
+  const auto j = nlohmann::json::parse(read(dir_ / "rep" / "latest" / "report.json"));
+  EXPECT_EQ(j.at("clauses").size(), clause_catalog().size());
+}
+
+TEST_F(Cli, CertifyTheReferenceThroughExec) {
+  const Result r = vgc("certify --impl " + shell_quote("exec:" + serve()) + " --reports rep" + kFast);
+  ASSERT_EQ(r.exit_code, 0) << context(r);
+  expect_report_files(dir_ / "rep", "conformant");
+}
+
+TEST_F(Cli, CertifyTheReferencePlugin) {
+  const Result r = vgc("certify --impl " + shell_quote(std::string("plugin:") + VGC_REFERENCE_PLUGIN) + " --reports rep" + kFast);
+  ASSERT_EQ(r.exit_code, 0) << context(r);
+  expect_report_files(dir_ / "rep", "conformant");
+}
+
+TEST_F(Cli, AFaultIsRejectedReplaysAndCanBeBaselined) {
+  const std::string env = "VGC_FAULT=bone-cycles-accepted";
+  const std::string impl = "exec:" + serve(std::string("plugin:") + VGC_FAULT_PLUGIN);
+  const Result r = vgc("certify --impl " + shell_quote(impl) + " --reports rep" + kFast, env);
+  ASSERT_EQ(r.exit_code, 1) << context(r);
+  expect_report_files(dir_ / "rep", "not-conformant");
+  EXPECT_NE(r.out.find("BONE-FOREST-1"), std::string::npos) << context(r);
+
+  const fs::path run_dir = fs::canonical(dir_ / "rep" / "latest");
+  const fs::path file = run_dir / "counterexamples" / "BONE-FOREST-1.vgc";
+  ASSERT_TRUE(fs::is_regular_file(file));
+  std::vector<Command> commands;
+  TextError error;
+  ASSERT_TRUE(parse_commands(read(file), &commands, &error)) << error.to_string();
+  ASSERT_FALSE(commands.empty());
+  const std::string summary = read(run_dir / "summary.md");
+  EXPECT_NE(summary.find("NOT CONFORMANT"), std::string::npos);
+  EXPECT_NE(summary.find("BONE-FOREST-1"), std::string::npos);
+  EXPECT_NE(summary.find(print_commands(commands)), std::string::npos) << "the shrunk counterexample is not in summary.md";
+  // The last command is the bone_create that closes a cycle.
+  EXPECT_TRUE(std::holds_alternative<cmd::BoneCreate>(commands.back())) << print_command(commands.back());
+
+  // Replay against the same faulty implementation: exit 1, naming the clause.
+  const Result again = vgc("replay " + shell_quote(file.string()) + " --impl " + shell_quote(impl), env);
+  EXPECT_EQ(again.exit_code, 1) << context(again);
+  EXPECT_NE(again.out.find("BONE-FOREST-1"), std::string::npos) << context(again);
+  // The replay line that summary.md prints, run as printed (from the source
+  // tree's ./vgc wrapper it would build first; here the binary itself).
+  const std::regex replay_line("Replay: `\\./vgc (replay [^`]*)`");
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(summary, m, replay_line)) << summary;
+  const Result printed = vgc(m[1].str(), env);
+  EXPECT_EQ(printed.exit_code, 1) << context(printed);
+
+  // Against the reference it agrees: exit 0.
+  const Result clean = vgc("replay " + shell_quote(file.string()) + " --impl reference");
+  EXPECT_EQ(clean.exit_code, 0) << context(clean);
+
+  // With BONE-FOREST-1 in a baseline the same run passes.
+  write("baseline.txt", "# our host stores bone cycles\nBONE-FOREST-1 stored as roots, see ticket 12\n");
+  const Result known =
+      vgc("certify --impl " + shell_quote(impl) + " --reports rep2 --baseline baseline.txt" + kFast, env);
+  EXPECT_EQ(known.exit_code, 0) << context(known);
+  EXPECT_NE(known.out.find("known"), std::string::npos) << context(known);
+}
+
+TEST_F(Cli, UsageErrorsExitTwo) {
+  for (const char* shard : {"0/2", "3/2", "1/0", "x"}) {
+    const Result r = vgc(std::string("certify --shard ") + shard + " --reports rep" + kFast);
+    EXPECT_EQ(r.exit_code, 2) << shard << "\n" << context(r);
+    EXPECT_NE(r.err.find("--shard"), std::string::npos) << context(r);
+  }
+  write("bad_baseline.txt", "BONE-FOREST-1 fine\n\nLAYER-BASE-99 no such clause\n");
+  const Result b = vgc("certify --baseline bad_baseline.txt --reports rep" + kFast);
+  EXPECT_EQ(b.exit_code, 2) << context(b);
+  EXPECT_NE(b.err.find("bad_baseline.txt:3:"), std::string::npos) << context(b);
+  EXPECT_NE(b.err.find("LAYER-BASE-99"), std::string::npos) << context(b);
+  EXPECT_FALSE(fs::exists(dir_ / "rep")) << "a usage error still wrote reports";
+
+  const Result impl = vgc("certify --impl nonsense:x --reports rep" + kFast);
+  EXPECT_EQ(impl.exit_code, 2) << context(impl);
+}
+
+TEST_F(Cli, ClausesListsTheWholeCatalog) {
+  const Result r = vgc("clauses");
+  ASSERT_EQ(r.exit_code, 0) << context(r);
+  std::set<std::string> listed;
+  std::istringstream in(r.out);
+  std::string line;
+  while (std::getline(in, line)) {
+    std::istringstream words(line);
+    std::string first;
+    if (words >> first) listed.insert(first);
+  }
+  std::set<std::string> catalog;
+  for (const Clause& c : clause_catalog()) catalog.insert(std::string(c.id));
+  EXPECT_EQ(listed, catalog);
+  const Result md = vgc("clauses --markdown");
+  ASSERT_EQ(md.exit_code, 0);
+  for (const Clause& c : clause_catalog())
+    EXPECT_NE(md.out.find("### " + std::string(c.id) + " "), std::string::npos) << c.id;
+}
+
+TEST_F(Cli, AMalformedFileNamesLineAndColumn) {
+  // Line 2, column 25 is the "x" where a vertex id should be.
+  const fs::path file = write("bad.vgc", "# a comment\nvertex_set_xyz_real64 0 x 1 1 1\n");
+  const Result apply = vgc("apply bad.vgc");
+  EXPECT_EQ(apply.exit_code, 2) << context(apply);
+  EXPECT_NE(apply.err.find("bad.vgc:2:25:"), std::string::npos) << context(apply);
+  const Result replay = vgc("replay bad.vgc --impl reference");
+  EXPECT_EQ(replay.exit_code, 2) << context(replay);
+  EXPECT_NE(replay.err.find("bad.vgc:2:25:"), std::string::npos) << context(replay);
+  const Result fine = vgc("apply " + shell_quote(std::string(VGC_SOURCE_DIR) + "/corpora/examples/cube.vgc"));
+  EXPECT_EQ(fine.exit_code, 0) << context(fine);
+}
+
+}  // namespace
+}  // namespace vgc

@@ -1,0 +1,159 @@
+// document_diff_test.cpp — diff_documents (document_diff.h): exact on
+// stored state, within kPoseTolerance on bone poses, a rotation q equal to
+// -q, and a difference reported with both sides and the kind of its line.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "document_diff.h"
+#include "node.h"
+#include "number_text.h"
+#include "snapshot.h"
+
+namespace vgc {
+namespace {
+
+Node sample_node() {
+  Node n;
+  for (std::uint32_t v = 0; v < 4; ++v) n.apply(cmd::VertexSetXyzReal64{0, v, double(v), 1.0 - v, 0.5 * v});
+  n.apply(cmd::PolygonSetCornerUint32{1, 0, {0, 1, 2, 3}});
+  n.apply(cmd::LayerCreate{2, "w", 2, 0, 0.25});
+  n.apply(cmd::VertexSetReal64{2, 1, 3.0});
+  n.apply(cmd::BoneCreate{0, "w", "", 0xFFFF, {1, 2, 3}, "", {0, 0, 0, 1}, ""});
+  n.apply(cmd::BoneCreate{1, "w", "", 0, {0, 1, 0}, "", {0, 0, 0.6, 0.8}, ""});
+  return n;
+}
+
+std::string replace_line(const std::string& doc, const std::string& from, const std::string& to) {
+  const auto at = doc.find(from);
+  EXPECT_NE(at, std::string::npos) << "no line \"" << from << "\" in\n" << doc;
+  if (at == std::string::npos) return doc;
+  return doc.substr(0, at) + to + doc.substr(at + from.size());
+}
+
+// The line of `doc` that starts with `prefix` (without its newline).
+std::string line_starting(const std::string& doc, const std::string& prefix) {
+  for (const auto& l : split_lines(doc))
+    if (l.rfind(prefix, 0) == 0) return l;
+  ADD_FAILURE() << "no line starting with \"" << prefix << "\"";
+  return {};
+}
+
+std::string pose_line(long id, const double (&v)[7]) {
+  std::string s = "bone_pose " + std::to_string(id);
+  for (double d : v) s += " " + format_f64(d);
+  return s;
+}
+
+std::string pose_doc(const std::string& line) { return "vgc-derived 1\n" + line + "\nend\n"; }
+
+TEST(DocumentDiff, EqualDocumentsHaveNoDifference) {
+  const Node n = sample_node();
+  EXPECT_FALSE(diff_documents(print_snapshot(n), print_snapshot(n)));
+  EXPECT_FALSE(diff_documents(print_derived(n), print_derived(n)));
+  EXPECT_FALSE(diff_documents("", ""));
+  // CRLF line ends are the same lines.
+  std::string crlf;
+  for (const auto& l : split_lines(print_snapshot(n))) crlf += l + "\r\n";
+  EXPECT_FALSE(diff_documents(print_snapshot(n), crlf));
+}
+
+TEST(DocumentDiff, AChangedLineReportsBothSidesAndItsKind) {
+  const Node n = sample_node();
+  const std::string expected = print_snapshot(n);
+  const std::string slot = line_starting(expected, "slot 2 1 ");
+  const std::string changed = "slot 2 1 3.0000000000000004";
+  const auto d = diff_documents(expected, replace_line(expected, slot, changed));
+  ASSERT_TRUE(d);
+  EXPECT_EQ(d->expected_line, slot);
+  EXPECT_EQ(d->observed_line, changed);
+  EXPECT_EQ(d->kind, "slot");
+  EXPECT_NE(d->describe().find(slot), std::string::npos) << d->describe();
+  EXPECT_NE(d->describe().find(changed), std::string::npos) << d->describe();
+
+  // Stored numbers are exact: one ulp on a vertex is a difference.
+  const std::string vertex = line_starting(expected, "vertex 1 ");
+  const std::string nudged = "vertex 1 " + format_f64(std::nextafter(1.0, 2.0)) + " 0 0.5";
+  ASSERT_EQ(vertex, "vertex 1 1 0 0.5");
+  const auto dv = diff_documents(expected, replace_line(expected, vertex, nudged));
+  ASSERT_TRUE(dv);
+  EXPECT_EQ(dv->kind, "vertex");
+  EXPECT_EQ(dv->observed_line, nudged);
+}
+
+TEST(DocumentDiff, AMissingAndAnExtraLine) {
+  const Node n = sample_node();
+  const std::string expected = print_snapshot(n);
+  const std::string bone = line_starting(expected, "bone 1 ");
+  const auto missing = diff_documents(expected, replace_line(expected, bone + "\n", ""));
+  ASSERT_TRUE(missing);
+  EXPECT_EQ(missing->expected_line, bone);
+  EXPECT_EQ(missing->observed_line, "");
+  EXPECT_EQ(missing->kind, "bone");
+  EXPECT_NE(missing->describe().find("missing"), std::string::npos) << missing->describe();
+
+  const std::string extra_line = "polygon 7 0 1 2 0xFFFFFFFF";
+  const std::string polygon = line_starting(expected, "polygon 0 ");
+  const auto extra = diff_documents(expected, replace_line(expected, polygon + "\n", polygon + "\n" + extra_line + "\n"));
+  ASSERT_TRUE(extra);
+  EXPECT_EQ(extra->expected_line, "");
+  EXPECT_EQ(extra->observed_line, extra_line);
+  EXPECT_EQ(extra->kind, "polygon");
+  EXPECT_NE(extra->describe().find("unexpected"), std::string::npos) << extra->describe();
+
+  // An extra line at the very end, after "end".
+  const auto trailing = diff_documents(expected, expected + "garbage 1\n");
+  ASSERT_TRUE(trailing);
+  EXPECT_EQ(trailing->observed_line, "garbage 1");
+  EXPECT_EQ(trailing->kind, "garbage");
+}
+
+TEST(DocumentDiff, BonePoseWithinToleranceMatchesAndBeyondDiffers) {
+  const double base[7] = {1000, -2.5, 0.125, 0, 0.6, 0, 0.8};
+  const std::string e = pose_doc(pose_line(4, base));
+  for (int i = 0; i < 7; ++i) {
+    double within[7], beyond[7];
+    std::copy(base, base + 7, within);
+    std::copy(base, base + 7, beyond);
+    // Relative to max(1, |a|, |b|): half the tolerance passes, a thousand times it fails.
+    const double scale = std::max(1.0, std::fabs(base[i]));
+    within[i] += 0.5 * kPoseTolerance * scale;
+    beyond[i] += 1e3 * kPoseTolerance * scale;
+    EXPECT_FALSE(diff_documents(e, pose_doc(pose_line(4, within)))) << "component " << i;
+    const auto d = diff_documents(e, pose_doc(pose_line(4, beyond)));
+    ASSERT_TRUE(d) << "component " << i << " off by 1e-6 relative passed";
+    EXPECT_EQ(d->kind, "bone_pose");
+    EXPECT_EQ(d->expected_line, pose_line(4, base));
+    EXPECT_EQ(d->observed_line, pose_line(4, beyond));
+  }
+  EXPECT_DOUBLE_EQ(kPoseTolerance, 1e-9);  // the clause text (BONE-DOWNSTREAM-1) says 1e-9
+  // Another bone id is another line, however close the numbers.
+  EXPECT_TRUE(diff_documents(e, pose_doc(pose_line(5, base))));
+  // A pose that is not a number is different.
+  EXPECT_TRUE(diff_documents(e, pose_doc("bone_pose 4 1000 -2.5 0.125 0 0.6 0 x")));
+}
+
+TEST(DocumentDiff, ARotationEqualsItsNegation) {
+  const double q[7] = {1, 2, 3, 0.1, -0.7, 0.1, 0.7};
+  const double minus_q[7] = {1, 2, 3, -0.1, 0.7, -0.1, -0.7};
+  EXPECT_FALSE(diff_documents(pose_doc(pose_line(0, q)), pose_doc(pose_line(0, minus_q))));
+  // Only the whole quaternion may flip: one flipped component is a different rotation.
+  const double half[7] = {1, 2, 3, -0.1, -0.7, 0.1, 0.7};
+  EXPECT_TRUE(diff_documents(pose_doc(pose_line(0, q)), pose_doc(pose_line(0, half))));
+  // The position does not flip.
+  const double minus_pos[7] = {-1, -2, -3, -0.1, 0.7, -0.1, -0.7};
+  EXPECT_TRUE(diff_documents(pose_doc(pose_line(0, q)), pose_doc(pose_line(0, minus_pos))));
+}
+
+TEST(DocumentDiff, OnlyBonePosesHaveATolerance) {
+  // The same relative wobble on a stored real slot is a difference.
+  const std::string e = "vgc-snapshot 1\nslot 2 0 1000\nend\n";
+  const std::string o = "vgc-snapshot 1\nslot 2 0 " + format_f64(1000 + 0.5e-9 * 1000) + "\nend\n";
+  const auto d = diff_documents(e, o);
+  ASSERT_TRUE(d);
+  EXPECT_EQ(d->kind, "slot");
+}
+
+}  // namespace
+}  // namespace vgc

@@ -1,0 +1,276 @@
+// report_test.cpp — write_report (report.h): a run directory holding
+// report.json, junit.xml, summary.md and one replayable counterexample per
+// failing clause, written whole or not at all, with reports/latest pointing
+// at it. Every file is read back with a real parser (nlohmann::json,
+// pugixml, vgc::parse_commands), not searched for strings only.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <pugixml.hpp>
+#include <sstream>
+
+#include "command_text.h"
+#include "exec_implementation.h"  // shell_quote
+#include "faulty_implementation.h"
+#include "reference_implementation.h"
+#include "report.h"
+#include "runner.h"
+#include "verdict.h"
+
+namespace vgc {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr const char* kFault = "bone-cycles-accepted";
+constexpr const char* kClause = "BONE-FOREST-1";
+
+std::string read(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  EXPECT_TRUE(in) << "cannot read " << p;
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+class TempDir {
+ public:
+  TempDir() {
+    path_ = fs::temp_directory_path() / ("vgc_report_test_" + std::to_string(::getpid()) + "_" + std::to_string(counter_++));
+    fs::remove_all(path_);
+    fs::create_directories(path_);
+  }
+  ~TempDir() {
+    std::error_code ec;
+    fs::remove_all(path_, ec);
+  }
+  const fs::path& path() const { return path_; }
+
+ private:
+  static inline int counter_ = 0;
+  fs::path path_;
+};
+
+// One certification of the faulty node, restricted to the bone clauses so
+// that it takes a second; BONE-FOREST-1 fails, the other BONE-* pass.
+const RunResult& faulty_run() {
+  static const RunResult run = [] {
+    faults::FaultyImplementation impl(faults::find_fault(kFault));
+    RunOptions o;
+    o.seed = 21;
+    o.cases = 30;
+    o.max_size = 30;
+    o.clause_glob = "BONE-*";
+    return run_certification(impl, o);
+  }();
+  return run;
+}
+
+const ClauseOutcome& failing_clause(const RunResult& run) {
+  for (const auto& co : run.clauses)
+    if (co.clause->id == kClause) return co;
+  ADD_FAILURE() << kClause << " not in the run";
+  return run.clauses.front();
+}
+
+struct Written {
+  ReportContext ctx;
+  Verdict verdict;
+  fs::path root, dir;
+  bool ok = false;
+  std::string error;
+};
+
+Written write(const fs::path& root, const RunResult& run, const std::string& impl_spec, const std::string& started) {
+  Written w;
+  w.ctx.implementation_spec = impl_spec;
+  w.ctx.command_line = "./vgc certify --impl " + shell_quote(impl_spec) + " --seed " + std::to_string(run.options.seed);
+  w.ctx.started = started;
+  w.root = root;
+  w.ctx.run_dir = default_run_dir(root.string(), run, w.ctx);
+  w.dir = w.ctx.run_dir;
+  w.verdict = judge(run, nullptr);
+  w.ok = write_report(root.string(), run, w.verdict, w.ctx, &w.error);
+  return w;
+}
+
+class Report : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    const RunResult& run = faulty_run();
+    ASSERT_TRUE(failing_clause(run).finding) << "the fault was not found; nothing to report";
+    w_ = write(tmp_.path() / "reports", run, "exec:./my host --serve", "2026-11-22T04:00:00Z");
+    ASSERT_TRUE(w_.ok) << w_.error;
+  }
+  TempDir tmp_;
+  Written w_;
+};
+
+TEST_F(Report, JsonHasVerdictSeedAndEveryClause) {
+  const RunResult& run = faulty_run();
+  const auto j = nlohmann::json::parse(read(w_.dir / "report.json"));
+  EXPECT_EQ(j.at("verdict"), "not-conformant");
+  EXPECT_EQ(j.at("exit_code"), 1);
+  EXPECT_EQ(j.at("seed"), 21);
+  EXPECT_EQ(j.at("implementation"), "exec:./my host --serve");
+  ASSERT_TRUE(j.at("clauses").is_array());
+  ASSERT_EQ(j.at("clauses").size(), run.clauses.size());
+  int failures = 0;
+  for (std::size_t i = 0; i < run.clauses.size(); ++i) {
+    const auto& c = j.at("clauses")[i];
+    const ClauseOutcome& co = run.clauses[i];
+    EXPECT_EQ(c.at("id"), std::string(co.clause->id));
+    EXPECT_EQ(c.at("status"), co.status);
+    EXPECT_EQ(c.at("level"), std::string(clause_level_name(co.clause->level)));
+    if (c.at("status") == "pass") EXPECT_FALSE(c.contains("counterexample")) << c.dump();
+    if (co.finding) {
+      ++failures;
+      const std::string file = c.at("counterexample");
+      EXPECT_TRUE(fs::is_regular_file(w_.dir / file)) << file;
+      const std::string replay = c.at("replay");
+      EXPECT_EQ(replay.rfind("./vgc replay ", 0), 0u) << replay;
+      EXPECT_NE(replay.find((w_.dir / file).string()), std::string::npos) << replay;
+      EXPECT_NE(replay.find("--impl " + shell_quote("exec:./my host --serve")), std::string::npos) << replay;
+      EXPECT_EQ(c.at("counterexample_commands"), co.program.commands.size());
+    }
+  }
+  EXPECT_GE(failures, 1);
+  const auto it = std::find_if(j.at("clauses").begin(), j.at("clauses").end(),
+                               [](const auto& c) { return c.at("id") == kClause; });
+  ASSERT_NE(it, j.at("clauses").end());
+  EXPECT_EQ(it->at("status"), "fail");
+  EXPECT_EQ(it->at("level"), "IMPLEMENTATION-DEFINED");
+  EXPECT_EQ(it->at("counterexample"), std::string("counterexamples/") + kClause + ".vgc");
+  EXPECT_EQ(j.at("new_failures"), nlohmann::json::array({kClause}));
+}
+
+TEST_F(Report, JunitHasATestcasePerClauseAndAFailureForTheFailingOne) {
+  const RunResult& run = faulty_run();
+  pugi::xml_document doc;
+  const auto parsed = doc.load_string(read(w_.dir / "junit.xml").c_str());
+  ASSERT_TRUE(parsed) << parsed.description();
+  const auto suites = doc.child("testsuites");
+  ASSERT_TRUE(suites);
+  int testcases = 0, failures = 0;
+  bool failing_has_failure = false;
+  for (auto suite : suites.children("testsuite")) {
+    int in_suite = 0, failures_in_suite = 0;
+    for (auto tc : suite.children("testcase")) {
+      ++testcases, ++in_suite;
+      const std::string name = tc.attribute("name").as_string();
+      const bool failed = tc.child("failure") || tc.child("error");
+      failures += failed;
+      failures_in_suite += failed;
+      if (name.rfind(std::string(kClause) + " ", 0) == 0) {
+        ASSERT_TRUE(tc.child("failure")) << name;
+        failing_has_failure = true;
+        const std::string body = tc.child("failure").text().as_string();
+        EXPECT_NE(body.find("vgc replay"), std::string::npos) << body;
+        EXPECT_FALSE(std::string(tc.child("failure").attribute("message").as_string()).empty());
+      }
+      for (const auto& co : run.clauses)
+        if (name.rfind(std::string(co.clause->id) + " ", 0) == 0 && co.status == "pass")
+          EXPECT_FALSE(failed) << name << " passed but has a failure element";
+    }
+    EXPECT_EQ(suite.attribute("tests").as_int(), in_suite);
+    EXPECT_EQ(suite.attribute("failures").as_int() + suite.attribute("errors").as_int(), failures_in_suite);
+  }
+  EXPECT_TRUE(failing_has_failure);
+  EXPECT_EQ(testcases, static_cast<int>(run.clauses.size()));
+  EXPECT_EQ(suites.attribute("tests").as_int(), testcases);
+  int findings = 0;
+  for (const auto& co : run.clauses) findings += co.finding && co.clause->level != ClauseLevel::Should;
+  EXPECT_EQ(failures, findings);
+}
+
+TEST_F(Report, SummaryStartsWithTheVerdictAndShowsTheReplay) {
+  const RunResult& run = faulty_run();
+  const ClauseOutcome& co = failing_clause(run);
+  const std::string s = read(w_.dir / "summary.md");
+  const std::string first = s.substr(0, s.find('\n'));
+  EXPECT_EQ(first.rfind("# vgc certify: exec:./my host --serve", 0), 0u) << first;
+  EXPECT_NE(first.find("NOT CONFORMANT"), std::string::npos) << first;
+  EXPECT_NE(s.find(std::string("### ") + kClause), std::string::npos);
+  EXPECT_NE(s.find("```\n" + print_commands(co.program.commands) + "```"), std::string::npos)
+      << "the shrunk counterexample is not inline";
+  const std::string replay = replay_command((w_.dir / counterexample_path(co)).string(), "exec:./my host --serve");
+  EXPECT_NE(s.find("Replay: `" + replay + "`"), std::string::npos) << replay;
+}
+
+TEST_F(Report, CounterexamplesParseAndReplayToTheSameClause) {
+  const RunResult& run = faulty_run();
+  int files = 0;
+  for (const auto& e : fs::directory_iterator(w_.dir / "counterexamples")) {
+    ++files;
+    std::vector<Command> commands;
+    TextError error;
+    ASSERT_TRUE(parse_commands(read(e.path()), &commands, &error)) << e.path() << ": " << error.to_string();
+    const std::string id = e.path().stem().string();
+    const ClauseOutcome* co = nullptr;
+    for (const auto& c : run.clauses)
+      if (c.clause->id == id) co = &c;
+    ASSERT_NE(co, nullptr) << "a counterexample for " << id << ", which the run does not report";
+    ASSERT_TRUE(co->finding);
+    ASSERT_EQ(commands.size(), co->program.commands.size());
+    for (std::size_t i = 0; i < commands.size(); ++i) EXPECT_TRUE(bit_equal(commands[i], co->program.commands[i]));
+    faults::FaultyImplementation impl(faults::find_fault(kFault));
+    const ReplayResult r = replay_program(Program{commands}, impl);
+    ASSERT_TRUE(r.failure) << id;
+    EXPECT_EQ(r.failure->clause, id);
+  }
+  int findings = 0;
+  for (const auto& co : run.clauses) findings += co.finding.has_value();
+  EXPECT_EQ(files, findings);
+  EXPECT_TRUE(fs::is_regular_file(w_.dir / "counterexamples" / (std::string(kClause) + ".vgc")));
+}
+
+TEST_F(Report, NothingPartialIsLeftAndLatestPointsAtTheRun) {
+  for (const auto& e : fs::recursive_directory_iterator(tmp_.path()))
+    EXPECT_EQ(e.path().filename().string().find(".partial"), std::string::npos) << e.path();
+  const fs::path latest = w_.root / "latest";
+  ASSERT_TRUE(fs::is_symlink(latest));
+  EXPECT_EQ(fs::canonical(latest), fs::canonical(w_.dir));
+  // A second run moves latest to it; the first run stays whole.
+  ReferenceImplementation ref;
+  RunOptions o;
+  o.seed = 22;
+  o.cases = 3;
+  o.clause_glob = "BONE-VALUE-1";
+  const RunResult second = run_certification(ref, o);
+  const Written w2 = write(w_.root, second, "reference", "2026-11-22T04:05:00Z");
+  ASSERT_TRUE(w2.ok) << w2.error;
+  EXPECT_NE(w2.dir, w_.dir);
+  EXPECT_EQ(fs::canonical(latest), fs::canonical(w2.dir));
+  EXPECT_TRUE(fs::is_regular_file(w_.dir / "summary.md"));
+  const auto j = nlohmann::json::parse(read(w2.dir / "report.json"));
+  EXPECT_EQ(j.at("verdict"), "conformant");
+  EXPECT_EQ(j.at("exit_code"), 0);
+  EXPECT_TRUE(fs::is_empty(w2.dir / "counterexamples"));
+  for (const auto& e : fs::recursive_directory_iterator(tmp_.path()))
+    EXPECT_EQ(e.path().filename().string().find(".partial"), std::string::npos) << e.path();
+}
+
+TEST(ReportFailure, AnUncreatablePathFailsAndLeavesNothing) {
+  TempDir tmp;
+  const fs::path blocker = tmp.path() / "not-a-directory";
+  {
+    std::ofstream f(blocker);
+    f << "a file where the reports directory should go\n";
+  }
+  RunResult run;  // an empty run is enough: the directory cannot be made
+  run.options.seed = 1;
+  run.complete = true;
+  const Written w = write(blocker / "reports", run, "reference", "2026-11-22T04:00:00Z");
+  EXPECT_FALSE(w.ok);
+  EXPECT_FALSE(w.error.empty());
+  std::vector<fs::path> entries;
+  for (const auto& e : fs::recursive_directory_iterator(tmp.path())) entries.push_back(e.path());
+  EXPECT_EQ(entries, std::vector<fs::path>{blocker});
+  EXPECT_EQ(read(blocker), "a file where the reports directory should go\n");
+}
+
+}  // namespace
+}  // namespace vgc
