@@ -28,6 +28,8 @@
 //                 child rule's mask by the rest.
 // Holes (spec 001 face "hole" edits) are a per-face flag inherited by every
 // child face; they change no position.
+// Decision: a vertex in no polygon keeps its position at every level (the
+// smooth rule is undefined for valence 0; OpenSubdiv is not compared there).
 #pragma once
 
 #include <array>

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
+#include "crease_sharpness.h"
 #include "hierarchical_edit.h"
 #include "osd_subdivision.h"
 #include "subdivision_support.h"
@@ -158,6 +159,28 @@ RC_GTEST_PROP(HierarchicalEdit, HoleFlagsEveryDescendantAndNothingElse, ()) {
     }
   const auto base = plain(m, 3);
   for (int l = 0; l <= 3; ++l) RC_ASSERT(L[static_cast<std::size_t>(l)].positions == base[static_cast<std::size_t>(l)].positions);
+}
+
+RC_GTEST_PROP(HierarchicalEdit, SharpnessSetThenRead, ()) {
+  const MeshArrays m = mixed_with_pentagon();
+  const int level = *rc::gen::inRange(0, 3);
+  HierarchicalEdit e;
+  e.kind = *rc::gen::element(EditKind::VertexSharpness, EditKind::EdgeSharpness);
+  e.face = random_path(m, level);
+  e.index = *rc::gen::inRange(0, 3);
+  e.sharpness = static_cast<float>(*rc::gen::inRange(1, 40)) * 0.25f;
+  std::vector<SubdivisionLevel> L;
+  RC_ASSERT(subdivide_with_edits(m, 3, {e}, &L) == EditStatus::Ok);
+  const SubdivisionLevel& l = L[static_cast<std::size_t>(level)];
+  if (e.kind == EditKind::VertexSharpness) {
+    RC_ASSERT(l.vertex_sharpness[static_cast<std::size_t>(resolve_vertex(L, e.face, e.index))] == e.sharpness);
+  } else {
+    const auto edge = static_cast<std::size_t>(resolve_edge(L, e.face, e.index));
+    // Boundary edges stay infinitely sharp (the documented decision).
+    RC_ASSERT(l.edge_sharpness[edge] == (l.edge_face_count[edge] == 2 ? e.sharpness : kSharpnessInfinite));
+  }
+  const auto base = plain(m, 3);
+  for (int k = 0; k < level; ++k) RC_ASSERT(L[static_cast<std::size_t>(k)].positions == base[static_cast<std::size_t>(k)].positions);
 }
 
 TEST(HierarchicalEdit, BaseHolesAgreeWithOpenSubdiv) {
