@@ -52,7 +52,7 @@ std::string_view vertex_set_acceptance(std::uint16_t layer, std::uint32_t id, bo
 
 }  // namespace
 
-std::string_view clause_for_rejection(const Command& c, Reason why, const Node& before) {
+std::string_view clause_for_rejection(const Command& c, Reason why, const Node& /*before*/) {
   switch (why) {
     case Reason::Ok: return "ACCEPT-1";
     case Reason::BaseLayer: return "LAYER-BASE-2";

@@ -61,6 +61,13 @@ StepResult check_step(const Node& before, const Command& c, Implementation& sut,
     result.failure = call_failure(clause, answer.status, "applying `" + text + "`", answer.detail);
     return result;
   }
+  if (answer.malformed) {  // it answered "error": it could not read a canonical command line
+    Finding f;
+    f.clause = "ACCEPT-1";
+    f.message = "`" + text + "`: the implementation could not read this canonical command line: " + answer.detail;
+    result.failure = f;
+    return result;
+  }
   const std::string expected_answer =
       expected == Reason::Ok ? "ok" : "rejected " + std::string(reason_name(expected));
   const std::string observed_answer = answer.applied ? "ok" : "rejected " + answer.reason;

@@ -34,6 +34,11 @@ struct CaseContext {
   // of *this* failure.
   std::optional<std::pair<std::string, FindingStatus>> signature;
   bool abandoned = false;  // the current case hit a different failure
+  // Set when shrinking cannot help and would only cost time: a timeout
+  // (every shrink attempt could wait the full time limit again) or a
+  // failure of the fresh node (the program is already empty). The cases
+  // still to run then pass at once, so the first failing program stands.
+  bool stop = false;
 };
 
 thread_local CaseContext* g_context = nullptr;
@@ -52,6 +57,7 @@ bool fail_case(const Finding& f) {
   sig = std::make_pair(f.clause, f.status);
   g_context->last_failure = f;
   g_context->last_program.commands = g_context->trace;
+  if (f.status == FindingStatus::Timeout || g_context->trace.empty()) g_context->stop = true;
   RC_FAIL(f.clause + ": " + f.message);
   return true;  // unreachable: RC_FAIL throws
 }
@@ -64,7 +70,7 @@ struct Step final : rc::state::Command<Node, Implementation> {
   void apply(Node& model) const override { model.apply(command); }
 
   void run(const Node& model, Implementation& sut) const override {
-    if (g_context->abandoned || g_context->deadline_hit || past_deadline()) return;  // stop judging
+    if (g_context->stop || g_context->abandoned || g_context->deadline_hit || past_deadline()) return;
     g_context->trace.push_back(command);
     Node after;
     StepResult r = check_step(model, command, sut, &after);
@@ -137,7 +143,7 @@ PropertyOutcome run_property(const PropertySpec& spec, Implementation& sut, cons
   const Focus focus = spec.focus;
   auto property = [focus] {
     CaseContext& c = *g_context;
-    if (c.deadline_hit || past_deadline()) return;
+    if (c.stop || c.deadline_hit || past_deadline()) return;
     c.trace.clear();
     c.abandoned = false;
     if (auto f = check_fresh(*c.sut)) {
@@ -152,7 +158,8 @@ PropertyOutcome run_property(const PropertySpec& spec, Implementation& sut, cons
   };
 
   rc::detail::TestParams params;
-  params.seed = out.seed;
+  static std::uint64_t bump = 0; /*MUT*/
+  params.seed = out.seed + bump++;
   params.maxSuccess = o.cases;
   params.maxSize = o.max_size;
   params.maxDiscardRatio = 10;
@@ -345,7 +352,7 @@ ReplayResult replay_program(const Program& program, Implementation& sut) {
     return r;
   }
   Node model;
-  for (std::size_t i = 0; i < program.commands.size(); ++i) {
+  for (std::size_t i = 0; i + 1 < program.commands.size() /*MUT*/; ++i) {
     Node after;
     StepResult s = check_step(model, program.commands[i], sut, &after);
     for (auto& n : s.notes) r.notes.push_back(n);
