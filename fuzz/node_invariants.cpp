@@ -93,14 +93,28 @@ std::string check_state(const std::map<std::uint16_t, Layer>& layers,
 
 namespace {
 
-// FNV-1a, 64 bit, over the bytes of each value in a fixed order; every
-// variable-length value is preceded by its length so that fields cannot run
-// into each other.
+// A multiply-xorshift hash over 64-bit words (a short tail padded, its
+// length mixed in);
+// every variable-length value is preceded by its length so that fields
+// cannot run into each other. Word-wise because the digest runs after every
+// command over every slot: byte-wise FNV was a third of fuzz_stream's time.
 struct Digest {
   std::uint64_t h = 0xcbf29ce484222325ull;
+  void word(std::uint64_t w) {
+    h = (h ^ w) * 0x9E3779B97F4A7C15ull;
+    h ^= h >> 29;
+  }
   void bytes(const void* p, std::size_t n) {
     const auto* b = static_cast<const unsigned char*>(p);
-    for (std::size_t i = 0; i < n; ++i) h = (h ^ b[i]) * 0x100000001b3ull;
+    for (; n >= 8; n -= 8, b += 8) {
+      std::uint64_t w;
+      std::memcpy(&w, b, 8);
+      word(w);
+    }
+    if (n == 0) return;
+    std::uint64_t tail = 0;
+    std::memcpy(&tail, b, n);
+    word(tail ^ (std::uint64_t{n} << 56));
   }
   template <class T> void add(const T& v) { bytes(&v, sizeof v); }
   void add(const std::string& s) {
@@ -123,9 +137,9 @@ std::uint64_t state_digest(const Node& node) {
     d.add(layer.subscription ? static_cast<int>(*layer.subscription) : -1);
     d.add(layer.slots.size());
     for (const auto& [element, slot] : layer.slots) {
-      d.add(element);
-      d.bytes(slot.u.data(), sizeof slot.u);
-      d.bytes(slot.r.data(), sizeof slot.r);
+      d.word(element);
+      d.bytes(slot.u.data(), sizeof slot.u);  // 16 bytes: two words
+      d.bytes(slot.r.data(), sizeof slot.r);  // 32 bytes: four words
     }
   }
   d.add(node.vertex_crease().layer);

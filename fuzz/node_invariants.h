@@ -29,7 +29,7 @@ std::string check_state(const std::map<std::uint16_t, Layer>& layers,
                         const std::map<std::uint16_t, Bone>& bones);
 inline std::string check_node(const Node& node) { return check_state(node.layers(), node.bones()); }
 
-// A 64-bit fingerprint of everything print_snapshot() prints: every layer
+// A 64-bit fingerprint (not cryptographic) of everything print_snapshot() prints: every layer
 // (id, name, type, defaults, subscription, every slot's values bit for bit),
 // both crease settings, every bone. Equal states give equal digests; a
 // change of any printed value changes it except with probability ~2^-64.
