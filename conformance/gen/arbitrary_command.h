@@ -272,8 +272,23 @@ inline rc::Gen<Command> gen_command_for(const Node& node) {
   const Gen<std::uint32_t> value = rg::weightedOneOf<std::uint32_t>(
       {{4, rg::inRange<std::uint32_t>(0, 4)}, {1, rg::just(kNone32)}, {1, rg::arbitrary<std::uint32_t>()}});
   const Gen<std::uint8_t> type = rg::weightedOneOf<std::uint8_t>(
-      {{12, rg::element<std::uint8_t>(0, 1, 2, 128, 129, 130, 131, 132)}, {1, gen_layer_type_byte()}});
+      {{12, rg::element<std::uint8_t>(0, 1, 2, 128, 129, 130, 131, 132)},
+       {6, rg::element<std::uint8_t>(1, 2)},  // weight and crease layers
+       {1, gen_layer_type_byte()}});
   const Gen<std::string> name = gen_small_name();
+  // Bones need an existing VERTEX_UINT32 / VERTEX_REAL weight layer (and a
+  // VERTEX_UINT32 reference layer): prefer the names of such layers.
+  std::vector<std::string> weight_names, reference_names;
+  for (const auto& [lid, l] : node.layers()) {
+    if (l.type == LayerType::VertexUint32 || l.type == LayerType::VertexReal) weight_names.push_back(l.name);
+    if (l.type == LayerType::VertexUint32) reference_names.push_back(l.name);
+  }
+  const Gen<std::string> weight =
+      weight_names.empty() ? name : rg::weightedOneOf<std::string>({{6, rg::elementOf(weight_names)}, {1, name}});
+  const Gen<std::string> reference =
+      rg::weightedOneOf<std::string>({{3, rg::just(std::string())},
+                                      {2, reference_names.empty() ? name : rg::elementOf(reference_names)},
+                                      {1, name}});
   const Gen<std::array<std::uint32_t, 4>> corners = rg::exec([vertex] {
     std::array<std::uint32_t, 4> v{*vertex, *vertex, *vertex,
                                    *rg::weightedOneOf<std::uint32_t>({{1, rg::just(kNone32)}, {2, vertex}})};
@@ -307,8 +322,8 @@ inline rc::Gen<Command> gen_command_for(const Node& node) {
       {3, rg::exec([=] {
          cmd::BoneCreate b;
          b.bone_id = *bone;
-         b.weight = *name;
-         b.reference = *rg::weightedOneOf<std::string>({{2, rg::just(std::string())}, {1, name}});
+         b.weight = *weight;
+         b.reference = *reference;
          b.parent = *bone;
          b.pos = {*real, *real, *real};
          b.rot = {*real, *real, *real, *real};
