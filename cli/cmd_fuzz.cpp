@@ -354,6 +354,7 @@ int run_campaign(const FuzzOptions& o) {
   struct Crash {
     std::string signature;
     std::vector<fs::path> files;
+    std::map<fs::path, std::string> printed;  // the target's own counterexample block, per input
   };
   std::map<std::string, Crash> unique;
   std::size_t crash_files = 0;
@@ -371,6 +372,12 @@ int run_campaign(const FuzzOptions& o) {
     Crash& c = unique[sig];
     c.signature = sig;
     c.files.push_back(f);
+    // A target finding prints the commands up to the failing one (finding.h).
+    const std::string open = "----8<---- counterexample.vgc\n";
+    if (auto a = out.find(open); a != std::string::npos) {
+      if (auto b = out.find("----8<----\n", a + open.size()); b != std::string::npos)
+        c.printed[f] = out.substr(a + open.size(), b - a - open.size());
+    }
   }
   nlohmann::json crashes_json = nlohmann::json::array();
   std::size_t k = 0;
@@ -391,7 +398,8 @@ int run_campaign(const FuzzOptions& o) {
     } else {
       std::string text = "# vgc fuzz " + target + " counterexample: " + sig + "\n# from " + rep.string() +
                          "\n# replay: vgc apply " + cex_file.string() + "\n";
-      text += stream_to_text(bytes);
+      auto printed = c.printed.find(rep);
+      text += printed != c.printed.end() ? printed->second : stream_to_text(bytes);
       write_file(cex_file, text);
       replay = "vgc apply " + shell_quote(cex_file.string());
     }
