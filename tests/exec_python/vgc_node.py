@@ -880,7 +880,12 @@ def qmul(a, b):
 
 
 def normalize(q):
+    # Not in the docs (found by probing `vgc serve`): a quaternion whose
+    # squared norm underflows to 0 or overflows to infinity (|component| below
+    # ~1e-162 or above ~1e154) normalizes to the identity (0, 0, 0, 1).
     n = math.sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3])
+    if n == 0.0 or math.isinf(n):
+        return [0.0, 0.0, 0.0, 1.0]
     q = [c / n for c in q]
     if q[3] < 0:
         q = [-c for c in q]
@@ -921,7 +926,7 @@ def main():
                 return 0
             else:
                 sys.stderr.write("unknown request %r\n" % req)
-                answer("error unknown request\n")
+                answer(b"error unknown request " + req + b"\n")
             continue
         try:
             parsed = parse_command(line)
@@ -929,7 +934,7 @@ def main():
             answer("error line 1, column %d: %s\n" % (e.column, e.message.replace("\n", " ")))
             continue
         if parsed is None:
-            answer("error line 1, column 1: expected a command verb, found end of line\n")
+            answer("error line 1, column 1: expected a command, found an empty line or a comment\n")
             continue
         verb, fields = parsed
         try:
