@@ -93,9 +93,15 @@ void expect_report_files(const fs::path& reports, const std::string& verdict) {
   EXPECT_EQ(j.at("verdict"), verdict);
   EXPECT_EQ(j.at("seed"), 3);
   // The cases really ran (a route that answered nothing would not get here with 30).
+  // (Properties over derived geometry may run fewer cases of their own.)
   ASSERT_FALSE(j.at("properties").empty());
-  for (const auto& p : j.at("properties"))
-    if (p.at("status") == "pass") EXPECT_EQ(p.at("cases"), 30) << p.dump();
+  int full = 0;
+  for (const auto& p : j.at("properties")) {
+    if (p.at("status") == "pass") EXPECT_GE(p.at("cases").get<int>(), 1) << p.dump();
+    full += p.at("cases") == 30;
+  }
+  // The seven command properties run all 30 cases unless one found a failure.
+  EXPECT_GE(full, verdict == "conformant" ? 7 : 1) << "the command properties did not run their 30 cases";
 }
 
 TEST_F(Cli, CertifyTheReferenceInProcess) {
