@@ -259,8 +259,16 @@ std::string normalize_target(std::string t) {
 
 int run_campaign(const FuzzOptions& o) {
   const std::string name = normalize_target(o.target);
-  if (name != "stream" && name != "text" && name != "differential") {
-    fmt::print(stderr, "vgc fuzz: unknown target '{}': expected stream, text or differential\n", o.target);
+  // property_<group>: a conformance property as a target (fuzz/property_target.cpp).
+  const bool property = name.rfind("property_", 0) == 0;
+  static const char* const kGroups[] = {"layers", "polygons", "creases", "bones", "values", "ids", "commands"};
+  bool known_group = false;
+  for (const char* g : kGroups) known_group = known_group || name == std::string("property_") + g;
+  if (name != "stream" && name != "text" && name != "differential" && !known_group) {
+    fmt::print(stderr,
+               "vgc fuzz: unknown target '{}': expected stream, text, differential or property_<group> "
+               "(layers, polygons, creases, bones, values, ids, commands)\n",
+               o.target);
     return 2;
   }
   const std::string target = "fuzz_" + name;
@@ -278,8 +286,9 @@ int run_campaign(const FuzzOptions& o) {
   std::vector<std::string> env_add;
   std::string plugin;
   if (!o.impl.empty() && o.impl != "reference") {
-    if (name != "differential" || o.impl.rfind("plugin:", 0) != 0) {
-      fmt::print(stderr, "vgc fuzz: --impl takes plugin:PATH (or reference), for the differential target only\n");
+    if ((name != "differential" && !property) || o.impl.rfind("plugin:", 0) != 0) {
+      fmt::print(stderr,
+                 "vgc fuzz: --impl takes plugin:PATH (or reference), for the differential and property targets only\n");
       return 2;
     }
     plugin = fs::absolute(o.impl.substr(7)).string();
@@ -399,9 +408,14 @@ int run_campaign(const FuzzOptions& o) {
       std::string text = "# vgc fuzz " + target + " counterexample: " + sig + "\n# from " + rep.string() +
                          "\n# replay: vgc apply " + cex_file.string() + "\n";
       auto printed = c.printed.find(rep);
-      text += printed != c.printed.end() ? printed->second : stream_to_text(bytes);
+      if (printed != c.printed.end()) text += printed->second;
+      else if (property) text += "# the target printed no command file (a sanitizer finding): replay the input\n";
+      else text += stream_to_text(bytes);
       write_file(cex_file, text);
-      replay = "vgc apply " + shell_quote(cex_file.string());
+      // A property finding replays as a certify counterexample, against the same implementation.
+      replay = property ? "vgc replay " + shell_quote(cex_file.string()) + " --impl " +
+                              shell_quote(plugin.empty() ? std::string("reference") : "plugin:" + plugin)
+                        : "vgc apply " + shell_quote(cex_file.string());
     }
     crashes_json.push_back({{"signature", sig},
                             {"inputs", c.files.size()},
