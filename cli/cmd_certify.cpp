@@ -10,6 +10,10 @@
 #include <memory>
 
 #include "baseline.h"
+#if __has_include("capability_checks.h")
+#include "capability_checks.h"
+#define VGC_HAVE_CAPABILITY_CHECKS 1
+#endif
 #include "exec_implementation.h"  // shell_quote
 #include "implementation.h"
 #include "progress_line.h"
@@ -112,6 +116,9 @@ int run(const Options& o) {
                             p.property, p.cases_done, p.cases_total, p.shrinking ? "  shrinking a failure" : "",
                             p.elapsed_seconds));
   };
+#ifdef VGC_HAVE_CAPABILITY_CHECKS
+  register_capability_checks();  // the oracles judge the optional capabilities
+#endif
   const RunResult result = run_certification(*sut, ro);
   line.finish();
   const Verdict verdict = judge(result, ctx.baseline);

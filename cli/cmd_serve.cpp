@@ -9,7 +9,8 @@
 // process (open_implementation with isolate_plugin). One line in, one line
 // out, flushed: a command answers "ok", "rejected <REASON>" or "error line
 // 1, column N: ..." (the TextError of a line that does not parse), and the
-// requests ?hello ?reset ?snapshot ?derived ?quit are answered as the
+// requests ?hello ?reset ?snapshot ?derived ?quit and the optional
+// ?capabilities ?classify ?subdivide are answered as the
 // protocol says. Exit codes: 0 at ?quit or end of input; 2 when the
 // implementation cannot be opened; 3 when writing the answer fails.
 #include <fmt/core.h>
@@ -60,6 +61,12 @@ std::string answer_line(Implementation& impl, const std::string& line) {
   if (line == "?snapshot" || line == "?derived") {
     const Document d = line == "?snapshot" ? impl.snapshot() : impl.derived();
     return d.status == CallStatus::Ok ? d.text : failure_line(d.status, d.detail);
+  }
+  if (line == "?capabilities" || line == "?classify" || line.rfind("?subdivide", 0) == 0) {
+    const Document d = impl.request(line);
+    if (d.status == CallStatus::Ok) return d.text;
+    if (d.detail == "not supported") return "error unknown request " + one_line(line) + "\n";
+    return failure_line(d.status, d.detail);
   }
   if (!line.empty() && line[0] == '?') return "error unknown request " + one_line(line) + "\n";
   Command c;

@@ -231,6 +231,22 @@ const std::vector<Clause>& clause_catalog() {
        "(silent) An implementation answers every call.",
        "The implementation neither crashes nor hangs on any command sequence; a crash or timeout is attributed "
        "to the clause of the command it happened on and recorded with a reproducer."},
+      {"MESH-CLASSIFY-1", "derived", MUST, "002 (winged edge, manifold rules); optional capability \"manifold\"",
+       "\"Each edge in the polygon mesh can be the edge of either one or two polygons\"; the neighbourhood of "
+       "every point is \"topologically equivalent to a disc ... or a half disc\".",
+       "MUST when claimed (?capabilities names \"manifold\"), not claimed otherwise. The ?classify answer on "
+       "the node's live polygons agrees with CGAL Polygon Mesh Processing: polygon_mesh with "
+       "is_polygon_soup_a_polygon_mesh; for a polygon mesh closed, oriented, euler (V - E + F, vertices in no "
+       "polygon not counted), components and boundary_loops with the Surface_mesh CGAL builds from it "
+       "(definitions of reference/mesh_topology.h; docs/adapters.md \"Optional capabilities\")."},
+      {"SUBD-CATMARK-1", "derived", MUST, "000 2.6; optional capability \"subdivision\"",
+       "\"Verse has a single primitive ...: Catmull/Clark subdivision surfaces\" with \"creases with which one "
+       "can control the degree of subdivision allowed for each vertex and edge\".",
+       "MUST when claimed (?capabilities names \"subdivision\"), not claimed otherwise. The ?subdivide N "
+       "vertices (N = 1..3) agree with OpenSubdiv Catmark refinement of the node's polygons (uniform creasing, "
+       "edge-only boundaries, the crease-to-sharpness mapping of reference/crease_sharpness.h) as a bijection "
+       "within 1e-9 of the coordinate scale, and the vertex and face counts agree. Compared where the polygons "
+       "form a polygon mesh (manifold, consistently oriented); vertices in no polygon are left out."},
   };
   return catalog;
 }

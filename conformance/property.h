@@ -25,6 +25,11 @@ struct PropertySpec {
   std::string_view title;  // one line for reports
   Focus focus;
   std::vector<std::string_view> clauses;  // the clauses this property is meant to check
+  // Empty for the core properties. Otherwise an optional capability
+  // (capability.h): the property runs only when the implementation claims
+  // it, with a quarter of the cases, and after each case's commands calls
+  // the registered check for it on the final state.
+  std::string_view capability = {};
 };
 
 // Every property, in run order.

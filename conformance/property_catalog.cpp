@@ -28,6 +28,10 @@ const std::vector<PropertySpec>& property_catalog() {
        {"LAYER-ID-PICK-1", "VERTEX-ID-PICK-1", "BONE-ID-PICK-1", "ID-BOUND-1"}},
       {"commands.atomic", "any command on any state: applied whole or rejected with nothing changed",
        Focus::Anything, {"ATOMIC-1", "ACCEPT-1", "REASON-1", "STABLE-1"}},
+      {"derived.manifold", "optional capability: ?classify agrees with CGAL on the node's polygons",
+       Focus::Polygons, {"MESH-CLASSIFY-1"}, "manifold"},
+      {"derived.subdivision", "optional capability: ?subdivide agrees with OpenSubdiv Catmark, creases included",
+       Focus::Creases, {"SUBD-CATMARK-1"}, "subdivision"},
   };
   return catalog;
 }

@@ -8,10 +8,12 @@
 #include <unistd.h>
 #include <rapidcheck/state.h>
 
+#include <algorithm>
 #include <chrono>
 #include <map>
 #include <sstream>
 
+#include "capability.h"
 #include "command_text.h"
 #include "property.h"
 
@@ -26,6 +28,7 @@ struct CaseContext {
   Clock::time_point deadline;
   bool deadline_hit = false;
   std::vector<Command> trace;           // commands of the current case so far
+  Node model;                           // the reference state after trace
   std::optional<Finding> last_failure;  // the most recent failing case: after
   Program last_program;                 // shrinking, the smallest one
   std::map<std::string, std::pair<Finding, Program>> notes;
@@ -74,6 +77,7 @@ struct Step final : rc::state::Command<Node, Implementation> {
     g_context->trace.push_back(command);
     Node after;
     StepResult r = check_step(model, command, sut, &after);
+    g_context->model = after;
     for (auto& note : r.notes) {
       auto it = g_context->notes.find(note.clause);
       if (it == g_context->notes.end() || it->second.second.commands.size() > g_context->trace.size())
@@ -111,6 +115,30 @@ class ProgressListener final : public rc::detail::TestListener {
   Clock::time_point start_;
 };
 
+// The start of every capability case: a 3 x 2 grid of quads on a curved
+// height field (12 vertices, 6 polygons, one boundary loop).
+const std::vector<vgc::Command>& capability_start_commands() {
+  static const std::vector<vgc::Command> commands = [] {
+    std::string text;
+    for (int j = 0; j < 3; ++j)
+      for (int i = 0; i < 4; ++i)
+        text += "vertex_set_xyz_real64 0 " + std::to_string(j * 4 + i) + " " + std::to_string(i) + " " +
+                std::to_string(j) + " " + std::to_string((i * j) % 3) + "\n";
+    int p = 0;
+    for (int j = 0; j < 2; ++j)
+      for (int i = 0; i < 3; ++i) {
+        const int a = j * 4 + i;
+        text += "polygon_set_corner_uint32 1 " + std::to_string(p++) + " " + std::to_string(a) + " " +
+                std::to_string(a + 4) + " " + std::to_string(a + 5) + " " + std::to_string(a + 1) + "\n";
+      }
+    std::vector<vgc::Command> out;
+    TextError error;
+    parse_commands(text, &out, &error);
+    return out;
+  }();
+  return commands;
+}
+
 // A fresh node must look like the reference's fresh node.
 std::optional<Finding> check_fresh(Implementation& sut) {
   const Answer a = sut.reset();
@@ -141,25 +169,49 @@ PropertyOutcome run_property(const PropertySpec& spec, Implementation& sut, cons
   g_context = &ctx;
 
   const Focus focus = spec.focus;
-  auto property = [focus] {
+  const CapabilityCheck* capability =
+      spec.capability.empty() ? nullptr : find_capability_check(std::string(spec.capability));
+  auto property = [focus, capability] {
     CaseContext& c = *g_context;
     if (c.stop || c.deadline_hit || past_deadline()) return;
     c.trace.clear();
+    c.model = Node{};
     c.abandoned = false;
     if (auto f = check_fresh(*c.sut)) {
       if (!fail_case(*f)) return;
     }
-    const auto commands = *rc::state::gen::commands(Node{}, [focus](const Node& model) {
+    // A capability case starts from a small open surface, so that its
+    // random commands edit a mesh rather than mostly build nothing.
+    Node start;
+    if (capability) {
+      for (const auto& cmd : capability_start_commands()) {
+        c.trace.push_back(cmd);
+        Node after;
+        StepResult r = check_step(start, cmd, *c.sut, &after);
+        if (r.failure) {
+          fail_case(*r.failure);
+          return;
+        }
+        start = std::move(after);
+      }
+      c.model = start;
+    }
+    const auto commands = *rc::state::gen::commands(start, [focus](const Node& model) {
       return rc::gen::map(gen_command(model, focus), [](vgc::Command cmd) {
         return std::shared_ptr<const rc::state::Command<Node, Implementation>>(std::make_shared<Step>(cmd));
       });
     });
-    rc::state::runAll(commands, Node{}, *c.sut);
+    rc::state::runAll(commands, start, *c.sut);
+    // An optional capability: judged on the final state, the variant
+    // (subdivision level) chosen by the case.
+    if (capability && !c.stop && !c.abandoned && !c.deadline_hit && !past_deadline()) {
+      if (auto f = capability->check(c.model, *c.sut, static_cast<int>(c.trace.size() % 3) + 1)) fail_case(*f);
+    }
   };
 
   rc::detail::TestParams params;
   params.seed = out.seed;
-  params.maxSuccess = o.cases;
+  params.maxSuccess = spec.capability.empty() ? o.cases : std::max(1, o.cases / 4);
   params.maxSize = o.max_size;
   params.maxDiscardRatio = 10;
   rc::detail::TestMetadata meta;
@@ -264,6 +316,8 @@ RunResult run_certification(Implementation& sut, const RunOptions& o) {
                                     std::chrono::duration<double>(o.budget_seconds));
 
   const auto& props = property_catalog();
+  std::vector<std::string> claimed;
+  bool asked = false;
   RunProgress progress;
   progress.property_count = static_cast<int>(props.size());
   for (std::size_t i = 0; i < props.size(); ++i) {
@@ -285,10 +339,23 @@ RunResult run_certification(Implementation& sut, const RunOptions& o) {
       run.properties.push_back(skipped);
       continue;
     }
+    if (!spec.capability.empty()) {
+      if (!asked) claimed = query_capabilities(sut), asked = true;
+      if (std::find(claimed.begin(), claimed.end(), spec.capability) == claimed.end()) {
+        skipped.note = "not claimed";
+        run.properties.push_back(skipped);
+        continue;
+      }
+      if (!find_capability_check(std::string(spec.capability))) {
+        skipped.note = "no oracle linked";
+        run.properties.push_back(skipped);
+        continue;
+      }
+    }
     progress.property = skipped.id;
     progress.property_index = static_cast<int>(i);
     progress.cases_done = 0;
-    progress.cases_total = o.cases;
+    progress.cases_total = spec.capability.empty() ? o.cases : std::max(1, o.cases / 4);
     progress.shrinking = false;
     run.properties.push_back(run_property(spec, sut, o, deadline, &progress, start));
   }
@@ -325,6 +392,9 @@ RunResult run_certification(Implementation& sut, const RunOptions& o) {
       continue;  // not asked for and nothing found
     } else if (declared_and_ran && !declared_cut_short) {
       co.status = "pass";
+    } else if (skip_note == "not claimed") {
+      co.status = "not-claimed";  // an optional capability the implementation does not offer
+      co.note = skip_note;
     } else {
       co.status = "skipped";
       co.note = skip_note.empty() ? "no property ran" : skip_note;

@@ -63,7 +63,10 @@ struct PropertyOutcome {
 
 struct ClauseOutcome {
   const Clause* clause = nullptr;
-  std::string status;       // "pass", "fail", "crash", "timeout", "skipped"
+  // "pass", "fail", "crash", "timeout", "skipped", or "not-claimed" (an
+  // optional capability the implementation does not claim: neither a
+  // failure nor a gap in completeness)
+  std::string status;
   std::string note;
   std::vector<std::string> properties;  // that declare it and ran
   std::string found_by;     // property that found the failure

@@ -511,7 +511,7 @@ Answer ExecImplementation::apply(const Command& c) {
   return a;
 }
 
-Document ExecImplementation::request_document(const char* request, const char* header) {
+Document ExecImplementation::request_document(const char* request, const char* header, bool error_allowed) {
   Document d;
   if (failed_ != CallStatus::Ok) {
     const Answer a = failed_answer();
@@ -523,6 +523,10 @@ Document ExecImplementation::request_document(const char* request, const char* h
   std::string line;
   Io io = exchange(request, &line, dl);
   const std::string head = std::string(header) + " ";
+  if (io == Io::Ok && error_allowed && (line == "error" || line.rfind("error ", 0) == 0)) {
+    d.text = line + "\n";
+    return d;
+  }
   if (io == Io::Ok && line != header && line.rfind(head, 0) != 0) {
     fail(CallStatus::ProtocolError, std::string("answered ") + request + " with " + quote_line(line) +
                                         "; a document must start with \"" + header + " 1\"");
@@ -547,5 +551,12 @@ Document ExecImplementation::request_document(const char* request, const char* h
 
 Document ExecImplementation::snapshot() { return request_document("?snapshot", "vgc-snapshot"); }
 Document ExecImplementation::derived() { return request_document("?derived", "vgc-derived"); }
+
+Document ExecImplementation::request(const std::string& line) {
+  const char* header = line == "?capabilities" ? "capabilities"
+                       : line == "?classify"   ? "vgc-classify"
+                                               : "vgc-subdivision";
+  return request_document(line.c_str(), header, true);
+}
 
 }  // namespace vgc

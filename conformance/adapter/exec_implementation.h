@@ -45,6 +45,9 @@ class ExecImplementation final : public Implementation {
   Answer apply(const Command& c) override;
   Document snapshot() override;
   Document derived() override;
+  // ?capabilities, ?classify, ?subdivide N: read as a document like
+  // ?snapshot; an "error ..." answer is returned as it is (status Ok).
+  Document request(const std::string& line) override;
 
   // Sends one raw line (without the newline) and reads one answer line.
   // For tests and for requests outside the Command set. Failure rules as apply().
@@ -76,7 +79,7 @@ class ExecImplementation final : public Implementation {
   std::string kill_and_reap(std::chrono::milliseconds grace);
   void close_fds();
   Answer failed_answer() const;
-  Document request_document(const char* request, const char* header);
+  Document request_document(const char* request, const char* header, bool error_allowed = false);
   Clock::time_point deadline() const;
 
   std::string command_;

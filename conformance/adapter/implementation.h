@@ -61,6 +61,16 @@ class Implementation {
   // What the implementation says it is: the free text of its ?hello answer
   // (exec), the table's name (plugin), or name(). For reports only.
   virtual std::string identity() const { return name(); }
+  // One optional capability request (docs/adapters.md "Optional
+  // capabilities"): "?capabilities", "?classify" or "?subdivide <level>".
+  // Ok with the whole document (ending in "end\n"), or Ok with one line
+  // "error <message>\n" when the implementation refused the request (an
+  // implementation that predates the requests answers so). The default
+  // implements none: ProtocolError with detail "not supported".
+  virtual Document request(const std::string& line) {
+    (void)line;
+    return {CallStatus::ProtocolError, {}, "not supported"};
+  }
 };
 
 struct OpenOptions {

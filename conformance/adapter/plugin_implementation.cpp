@@ -75,6 +75,7 @@ std::unique_ptr<PluginImplementation> PluginImplementation::load(const std::stri
   impl->handle_ = handle;
   impl->table_ = table;
   impl->node_ = node;
+  if (void* req = dlsym(handle, VGC_PLUGIN_REQUEST_ENTRY)) std::memcpy(&impl->request_, &req, sizeof impl->request_);
   return impl;
 }
 
@@ -174,5 +175,36 @@ Document PluginImplementation::document(const char* (*get)(vgc_node*), const cha
 
 Document PluginImplementation::snapshot() { return document(table_->snapshot, "snapshot", "vgc-snapshot"); }
 Document PluginImplementation::derived() { return document(table_->derived, "derived", "vgc-derived"); }
+
+Document PluginImplementation::request(const std::string& line) {
+  Document d;
+  if (!request_) {
+    d.text = "error not supported\n";
+    return d;
+  }
+  if (failed_ != CallStatus::Ok) {
+    d.status = failed_;
+    d.detail = "not asked: an earlier call failed and reset() has not been called; that failure: " + failed_detail_;
+    return d;
+  }
+  const char* text = request_(node_, line.c_str());
+  std::string problem;
+  if (!text) {
+    problem = "returned NULL";
+  } else {
+    d.text = text;
+    const std::size_t n = d.text.size();
+    const bool error = d.text.rfind("error", 0) == 0 && d.text.find('\n') == n - 1;
+    if (!error && (n < 5 || d.text.compare(n - 5, 5, "\nend\n") != 0 || d.text.find("\nend\n") != n - 5))
+      problem = "returned a document that does not end in its only line \"end\"";
+  }
+  if (!problem.empty()) {
+    const Answer a = fail(std::string(VGC_PLUGIN_REQUEST_ENTRY "(") + format_quoted(line) + ") " + problem);
+    d.status = a.status;
+    d.detail = a.detail;
+    d.text.clear();
+  }
+  return d;
+}
 
 }  // namespace vgc

@@ -38,6 +38,9 @@ class PluginImplementation final : public Implementation {
   Answer apply(const Command& c) override;
   Document snapshot() override;
   Document derived() override;
+  // Calls the optional vgc_plugin_request_v1; without it, Ok with
+  // "error not supported\n" (the plugin claims no capability).
+  Document request(const std::string& line) override;
 
   // Applies one raw line of text (for `vgc serve`, which already parsed it).
   Answer apply_line(const std::string& line);
@@ -51,6 +54,7 @@ class PluginImplementation final : public Implementation {
   void* handle_ = nullptr;
   const vgc_plugin_v1_table* table_ = nullptr;
   vgc_node* node_ = nullptr;
+  vgc_plugin_request_v1_fn request_ = nullptr;  // optional symbol
   CallStatus failed_ = CallStatus::Ok;  // sticky ProtocolError until reset()
   std::string failed_detail_;
 };

@@ -1,6 +1,7 @@
 // reference_implementation.cpp — see reference_implementation.h.
 #include "reference_implementation.h"
 
+#include "capability_documents.h"
 #include "snapshot.h"
 
 namespace vgc {
@@ -32,5 +33,10 @@ Answer ReferenceImplementation::apply(const Command& c) {
 
 Document ReferenceImplementation::snapshot() { return {CallStatus::Ok, print_snapshot(node_), {}}; }
 Document ReferenceImplementation::derived() { return {CallStatus::Ok, print_derived(node_), {}}; }
+
+Document ReferenceImplementation::request(const std::string& line) {
+  auto text = answer_capability_request(node_, line);
+  return {CallStatus::Ok, text ? *text : "error unknown request\n", {}};
+}
 
 }  // namespace vgc

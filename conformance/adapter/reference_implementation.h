@@ -16,6 +16,7 @@ class ReferenceImplementation final : public Implementation {
   Answer apply(const Command& c) override;
   Document snapshot() override;
   Document derived() override;
+  Document request(const std::string& line) override;  // capability_documents.h
   const Node& node() const { return node_; }
 
  private:

@@ -53,6 +53,16 @@ typedef struct vgc_plugin_v1_table {
 typedef const vgc_plugin_v1_table* (*vgc_plugin_v1_fn)(void);
 #define VGC_PLUGIN_ENTRY "vgc_plugin_v1"
 
+/* Optional, ABI v1 stays valid without it: a plugin that offers the
+ * optional capabilities (docs/adapters.md "Optional capabilities") also
+ * exports
+ *   VGC_PLUGIN_EXPORT const char* vgc_plugin_request_v1(vgc_node* node, const char* request_line);
+ * answering "?capabilities", "?classify" and "?subdivide <level>" with the
+ * whole document (ending in "end\n") or one line "error <message>\n".
+ * Ownership as for snapshot. */
+typedef const char* (*vgc_plugin_request_v1_fn)(vgc_node* node, const char* request_line);
+#define VGC_PLUGIN_REQUEST_ENTRY "vgc_plugin_request_v1"
+
 #ifdef __cplusplus
 }
 #endif

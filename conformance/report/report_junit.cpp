@@ -50,7 +50,7 @@ std::string render_junit(const RunResult& run, const Verdict& v, const ReportCon
       f.text().set(body.str().c_str());
       ++(is_error ? errors : failures);
       ++counts[group][is_error ? "errors" : "failures"];
-    } else if (co.status == "skipped" || (co.finding && known)) {
+    } else if (co.status == "skipped" || co.status == "not-claimed" || (co.finding && known)) {
       auto s = tc.append_child("skipped");
       s.append_attribute("message") =
           (co.finding ? "known deviation (baseline): " + ctx.baseline->reasons.at(std::string(co.clause->id))

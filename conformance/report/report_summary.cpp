@@ -10,21 +10,22 @@ namespace vgc {
 
 std::string render_summary(const RunResult& run, const Verdict& v, const ReportContext& ctx) {
   std::string out;
-  int pass = 0, fail = 0, crash = 0, timeout = 0, skipped = 0;
+  int pass = 0, fail = 0, crash = 0, timeout = 0, skipped = 0, not_claimed = 0;
   for (const auto& co : run.clauses) {
     if (co.status == "pass") ++pass;
     else if (co.status == "fail") ++fail;
     else if (co.status == "crash") ++crash;
     else if (co.status == "timeout") ++timeout;
+    else if (co.status == "not-claimed") ++not_claimed;
     else ++skipped;
   }
   const char* headline = v.name == "conformant"       ? "CONFORMANT"
                          : v.name == "not-conformant" ? "NOT CONFORMANT"
                                                       : "INCOMPLETE";
   out += fmt::format("# vgc certify: {} — {}\n\n", ctx.implementation_spec, headline);
-  out += fmt::format("{} clauses: {} pass, {} fail, {} crash, {} timeout, {} skipped. Seed {}, {} cases per "
+  out += fmt::format("{} clauses: {} pass, {} fail, {} crash, {} timeout, {} skipped, {} not claimed. Seed {}, {} cases per "
                      "property, {:.1f} s.\n\n",
-                     run.clauses.size(), pass, fail, crash, timeout, skipped, run.options.seed, run.options.cases,
+                     run.clauses.size(), pass, fail, crash, timeout, skipped, not_claimed, run.options.seed, run.options.cases,
                      run.seconds);
   out += "Re-run exactly: `" + ctx.command_line + "`\n\n";
   if (v.name == "incomplete")

@@ -12,6 +12,7 @@
 #include <new>
 #include <string>
 
+#include "capability_documents.h"
 #include "command_text.h"
 #include "node.h"
 #include "reason.h"
@@ -77,3 +78,14 @@ const vgc_plugin_v1_table kTable = {
 }  // namespace
 
 extern "C" VGC_PLUGIN_EXPORT const vgc_plugin_v1_table* vgc_plugin_v1(void) { return &kTable; }
+
+// The optional capability requests (vgc_plugin.h, capability_documents.h).
+extern "C" VGC_PLUGIN_EXPORT const char* vgc_plugin_request_v1(vgc_node* n, const char* line) {
+  try {
+    auto text = vgc::answer_capability_request(n->node, line ? line : "");
+    n->document = text ? *text : "error unknown request\n";
+    return n->document.c_str();
+  } catch (const std::exception&) {
+    return nullptr;
+  }
+}

@@ -23,6 +23,7 @@ class FaultyImplementation final : public Implementation {
   }
   Document snapshot() override { return {CallStatus::Ok, node_.snapshot(), ""}; }
   Document derived() override { return {CallStatus::Ok, node_.derived(), ""}; }
+  Document request(const std::string& line) override { return {CallStatus::Ok, node_.request(line), ""}; }
 
  private:
   int fault_;

@@ -10,6 +10,7 @@
 #include <thread>
 
 #include "bone_pose.h"
+#include "capability_documents.h"
 #include "crease.h"
 #include "number_text.h"
 #include "snapshot.h"
@@ -44,6 +45,9 @@ const std::vector<FaultInfo>& fault_catalog() {
       {"crash-on-self-parent", "BONE-FOREST-1", "crash", "aborts on a bone that names itself as parent (its cycle check)"},
       {"hang-on-subscribe-real64", "LAYER-SUBSCRIBE-1", "timeout", "never answers a REAL64 subscription"},
       {"wrong-reason-codes", "REASON-1", "fail", "rejects with the right verdict but always says REJECTED (SHOULD)"},
+      {"subdivision-ignores-creases", "SUBD-CATMARK-1", "fail",
+       "claims subdivision; ?subdivide refines as if every crease were 0"},
+      {"classify-misses-boundary", "MESH-CLASSIFY-1", "fail", "claims manifold; ?classify says boundary_loops 0"},
   };
   return catalog;
 }
@@ -206,6 +210,14 @@ FaultyAnswer FaultyNode::apply(const Command& original) {
 }
 
 std::string FaultyNode::snapshot() const { return print_snapshot(node_); }
+
+std::string FaultyNode::request(const std::string& line) const {
+  CapabilityDocumentFaults f;
+  f.ignore_creases = is("subdivision-ignores-creases");
+  f.zero_boundary_loops = is("classify-misses-boundary");
+  auto text = answer_capability_request(node_, line, f);
+  return text ? *text : "error unknown request\n";
+}
 
 std::string FaultyNode::derived() const {
   if (!is("edge-crease-off-by-one") && !is("wrong-type-crease-layer-used") && !is("bone-rotation-not-inherited"))

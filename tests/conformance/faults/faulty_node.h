@@ -43,6 +43,9 @@ class FaultyNode {
   FaultyAnswer apply(const Command& c);  // may abort() or hang, for the crash and hang faults
   std::string snapshot() const;
   std::string derived() const;
+  // The optional capability requests (capability_documents.h), with the
+  // capability faults applied.
+  std::string request(const std::string& line) const;
 
  private:
   bool is(std::string_view name) const;
