@@ -54,26 +54,6 @@ std::vector<std::pair<std::string, std::string>> document_lines(const std::strin
   return out;
 }
 
-// The mesh restricted to vertices some polygon uses (order kept).
-MeshArrays used_only(const MeshArrays& in) {
-  std::vector<int> remap(in.positions.size(), -1);
-  for (int v : in.face_vertices) remap[static_cast<std::size_t>(v)] = 0;
-  MeshArrays out;
-  int next = 0;
-  for (std::size_t v = 0; v < in.positions.size(); ++v) {
-    if (remap[v] < 0) continue;
-    remap[v] = next++;
-    out.vertex_ids.push_back(in.vertex_ids[v]);
-    out.positions.push_back(in.positions[v]);
-    out.vertex_creases.push_back(in.vertex_creases[v]);
-  }
-  out.polygon_ids = in.polygon_ids;
-  out.face_sizes = in.face_sizes;
-  out.face_offsets = in.face_offsets;
-  for (int v : in.face_vertices) out.face_vertices.push_back(remap[static_cast<std::size_t>(v)]);
-  out.corner_edge_creases = in.corner_edge_creases;
-  return out;
-}
 
 // OpenSubdiv's input with the reference's crease mapping (crease_sharpness.h):
 // an edge's crease is the maximum its polygons store; OpenSubdiv applies its
@@ -169,7 +149,7 @@ std::optional<Finding> check_subdivision(const Node& model, Implementation& sut,
   }
   if (got_level != level) return finding(kClause, request + ": the document says level " + std::to_string(got_level));
 
-  const MeshArrays mesh = used_only(extract_mesh(model));
+  const MeshArrays mesh = remove_unused_vertices(extract_mesh(model));
   if (mesh.face_count() == 0) {
     if (!got.empty() || faces != 0)
       return finding(kClause, request + ": no polygons, yet " + std::to_string(got.size()) + " vertices and " +

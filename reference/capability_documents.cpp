@@ -13,26 +13,6 @@ namespace {
 
 const char* yes_no(bool b) { return b ? "yes" : "no"; }
 
-// The mesh restricted to vertices used by some polygon (order kept).
-MeshArrays used_vertices_only(const MeshArrays& in) {
-  std::vector<int> remap(in.positions.size(), -1);
-  for (int v : in.face_vertices) remap[static_cast<std::size_t>(v)] = 0;
-  MeshArrays out;
-  int next = 0;
-  for (std::size_t v = 0; v < in.positions.size(); ++v) {
-    if (remap[v] < 0) continue;
-    remap[v] = next++;
-    out.vertex_ids.push_back(in.vertex_ids[v]);
-    out.positions.push_back(in.positions[v]);
-    out.vertex_creases.push_back(in.vertex_creases[v]);
-  }
-  out.polygon_ids = in.polygon_ids;
-  out.face_sizes = in.face_sizes;
-  out.face_offsets = in.face_offsets;
-  for (int v : in.face_vertices) out.face_vertices.push_back(remap[static_cast<std::size_t>(v)]);
-  out.corner_edge_creases = in.corner_edge_creases;
-  return out;
-}
 
 }  // namespace
 
@@ -56,7 +36,7 @@ std::string print_classify(const Node& node, const CapabilityDocumentFaults& fau
 
 std::string print_subdivision(const Node& node, int level, const CapabilityDocumentFaults& faults) {
   if (level < 1 || level > 3) return "error ?subdivide takes a level from 1 to 3\n";
-  MeshArrays mesh = used_vertices_only(extract_mesh(node));
+  MeshArrays mesh = remove_unused_vertices(extract_mesh(node));
   if (faults.ignore_creases) {
     for (auto& c : mesh.vertex_creases) c = 0;
     for (auto& c : mesh.corner_edge_creases) c = 0;

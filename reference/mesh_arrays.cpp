@@ -29,6 +29,26 @@ MeshArrays extract_mesh(const Node& node) {
   return m;
 }
 
+MeshArrays remove_unused_vertices(const MeshArrays& in) {
+  std::vector<int> remap(in.positions.size(), -1);
+  for (int v : in.face_vertices) remap[static_cast<std::size_t>(v)] = 0;
+  MeshArrays out;
+  int next = 0;
+  for (std::size_t v = 0; v < in.positions.size(); ++v) {
+    if (remap[v] < 0) continue;
+    remap[v] = next++;
+    out.vertex_ids.push_back(in.vertex_ids[v]);
+    out.positions.push_back(in.positions[v]);
+    out.vertex_creases.push_back(in.vertex_creases[v]);
+  }
+  out.polygon_ids = in.polygon_ids;
+  out.face_sizes = in.face_sizes;
+  out.face_offsets = in.face_offsets;
+  for (int v : in.face_vertices) out.face_vertices.push_back(remap[static_cast<std::size_t>(v)]);
+  out.corner_edge_creases = in.corner_edge_creases;
+  return out;
+}
+
 void update_face_offsets(MeshArrays& mesh) {
   mesh.face_offsets.clear();
   int offset = 0;

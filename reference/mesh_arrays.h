@@ -38,6 +38,10 @@ struct MeshArrays {
 // Every corner index is valid because live polygons name live vertices.
 MeshArrays extract_mesh(const Node& node);
 
+// The same mesh without the vertices no face uses (the rest keep their
+// order and ids). Precondition: every face_vertices index is in range.
+MeshArrays remove_unused_vertices(const MeshArrays& mesh);
+
 // Recomputes face_offsets from face_sizes (for meshes built by hand).
 void update_face_offsets(MeshArrays& mesh);
 
