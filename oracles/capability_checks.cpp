@@ -55,39 +55,6 @@ std::vector<std::pair<std::string, std::string>> document_lines(const std::strin
 }
 
 
-// OpenSubdiv's input with the reference's crease mapping (crease_sharpness.h):
-// an edge's crease is the maximum its polygons store; OpenSubdiv applies its
-// own boundary rule.
-OsdInput osd_input(const MeshArrays& m, int levels) {
-  OsdInput in;
-  in.scheme = OsdScheme::CatmullClark;
-  in.levels = levels;
-  in.positions = m.positions;
-  in.face_sizes = m.face_sizes;
-  in.face_vertices = m.face_vertices;
-  std::map<std::pair<int, int>, std::vector<std::uint32_t>> stored;
-  for (int f = 0; f < m.face_count(); ++f)
-    for (int c = 0; c < m.face_sizes[f]; ++c) {
-      const int a = m.face_vertices[m.face_offsets[f] + c];
-      const int b = m.face_vertices[m.face_offsets[f] + (c + 1) % m.face_sizes[f]];
-      stored[{std::min(a, b), std::max(a, b)}].push_back(m.corner_edge_creases[m.face_offsets[f] + c]);
-    }
-  for (const auto& [e, creases] : stored) {
-    const float s = crease_to_sharpness(combine_edge_creases(creases));
-    if (s > 0) {
-      in.crease_edges.push_back({e.first, e.second});
-      in.crease_sharpness.push_back(s);
-    }
-  }
-  for (int v = 0; v < m.vertex_count(); ++v) {
-    const float s = crease_to_sharpness(m.vertex_creases[static_cast<std::size_t>(v)]);
-    if (s > 0) {
-      in.corner_vertices.push_back(v);
-      in.corner_sharpness.push_back(s);
-    }
-  }
-  return in;
-}
 
 std::string point_text(const std::array<double, 3>& p) {
   return "(" + format_f64(p[0]) + ", " + format_f64(p[1]) + ", " + format_f64(p[2]) + ")";
@@ -158,7 +125,7 @@ std::optional<Finding> check_subdivision(const Node& model, Implementation& sut,
   }
   const MeshTopology topo = classify_mesh(mesh);
   if (topo.status != MeshStatus::Ok || !topo.is_polygon_mesh) return std::nullopt;  // not compared (clause reading)
-  const OsdResult osd = osd_refine_uniform(osd_input(mesh, level));
+  const OsdResult osd = osd_refine_uniform(osd_input_from_mesh(mesh, OsdScheme::CatmullClark, level));
   if (!osd.ok || osd.levels.size() != static_cast<std::size_t>(level) + 1) return std::nullopt;
   const OsdLevel& want = osd.levels.back();
 

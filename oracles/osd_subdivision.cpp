@@ -7,7 +7,10 @@
 #include <opensubdiv/far/topologyDescriptor.h>
 #include <opensubdiv/far/topologyRefinerFactory.h>
 
+#include <map>
 #include <memory>
+
+#include "crease_sharpness.h"
 
 namespace vgc {
 namespace {
@@ -150,6 +153,37 @@ OsdResult osd_refine_uniform(const OsdInput& in) {
   g_messages = nullptr;
   result.ok = true;
   return result;
+}
+
+OsdInput osd_input_from_mesh(const MeshArrays& m, OsdScheme scheme, int levels) {
+  OsdInput in;
+  in.scheme = scheme;
+  in.levels = levels;
+  in.positions = m.positions;
+  in.face_sizes = m.face_sizes;
+  in.face_vertices = m.face_vertices;
+  std::map<std::pair<int, int>, std::vector<std::uint32_t>> stored;
+  for (int f = 0; f < m.face_count(); ++f)
+    for (int c = 0; c < m.face_sizes[f]; ++c) {
+      const int a = m.face_vertices[m.face_offsets[f] + c];
+      const int b = m.face_vertices[m.face_offsets[f] + (c + 1) % m.face_sizes[f]];
+      stored[{std::min(a, b), std::max(a, b)}].push_back(m.corner_edge_creases[m.face_offsets[f] + c]);
+    }
+  for (const auto& [e, creases] : stored) {
+    const float s = crease_to_sharpness(combine_edge_creases(creases));
+    if (s > 0) {
+      in.crease_edges.push_back({e.first, e.second});
+      in.crease_sharpness.push_back(s);
+    }
+  }
+  for (int v = 0; v < m.vertex_count(); ++v) {
+    const float s = crease_to_sharpness(m.vertex_creases[static_cast<std::size_t>(v)]);
+    if (s > 0) {
+      in.corner_vertices.push_back(v);
+      in.corner_sharpness.push_back(s);
+    }
+  }
+  return in;
 }
 
 }  // namespace vgc

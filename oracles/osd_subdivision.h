@@ -18,6 +18,8 @@
 #include <string>
 #include <vector>
 
+#include "mesh_arrays.h"
+
 namespace vgc {
 
 enum class OsdScheme { CatmullClark, Loop };
@@ -62,5 +64,12 @@ struct OsdResult {
 // before OpenSubdiv sees it (an out-of-range one is `failure`, not a
 // crash). Not thread-safe: OpenSubdiv's callbacks are global.
 OsdResult osd_refine_uniform(const OsdInput& input);
+
+// OpenSubdiv's input for a node's mesh with the reference's crease mapping
+// (reference/crease_sharpness.h): an edge's sharpness comes from the stored
+// creases of its polygons combined by combine_edge_creases, a vertex's from
+// its crease (as a corner); the boundary rule is left to OpenSubdiv.
+// Precondition: `m` passes check_mesh (indices in range).
+OsdInput osd_input_from_mesh(const MeshArrays& m, OsdScheme scheme, int levels);
 
 }  // namespace vgc

@@ -239,33 +239,7 @@ inline void add_random_creases(MeshArrays& m, double p_vertex, double p_edge, st
 // shared-edge rule and mapped to sharpness, vertex creases as corners; the
 // boundary rule is left to OpenSubdiv.
 inline OsdInput to_osd_input(const MeshArrays& m, OsdScheme scheme, int levels) {
-  OsdInput in;
-  in.scheme = scheme;
-  in.levels = levels;
-  in.positions = m.positions;
-  in.face_sizes = m.face_sizes;
-  in.face_vertices = m.face_vertices;
-  std::map<std::pair<int, int>, std::vector<std::uint32_t>> stored;
-  for (int f = 0; f < m.face_count(); ++f)
-    for (int c = 0; c < m.face_sizes[f]; ++c) {
-      int a = m.face_vertices[m.face_offsets[f] + c], b = m.face_vertices[m.face_offsets[f] + (c + 1) % m.face_sizes[f]];
-      stored[{std::min(a, b), std::max(a, b)}].push_back(m.corner_edge_creases[m.face_offsets[f] + c]);
-    }
-  for (const auto& [e, creases] : stored) {
-    const float s = crease_to_sharpness(combine_edge_creases(creases));
-    if (s > 0) {
-      in.crease_edges.push_back({e.first, e.second});
-      in.crease_sharpness.push_back(s);
-    }
-  }
-  for (int v = 0; v < m.vertex_count(); ++v) {
-    const float s = crease_to_sharpness(m.vertex_creases[v]);
-    if (s > 0) {
-      in.corner_vertices.push_back(v);
-      in.corner_sharpness.push_back(s);
-    }
-  }
-  return in;
+  return osd_input_from_mesh(m, scheme, levels);
 }
 
 inline double mesh_scale(const MeshArrays& m) {
