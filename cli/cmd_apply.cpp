@@ -7,13 +7,11 @@
 // cannot be read or does not parse (the error names line and column).
 #include <fmt/core.h>
 
-#include <fstream>
-#include <iostream>
 #include <memory>
-#include <sstream>
 
 #include "command_text.h"
 #include "node.h"
+#include "read_file.h"
 #include "snapshot.h"
 #include "subcommand.h"
 
@@ -29,18 +27,10 @@ struct ApplyOptions {
 int run_apply(const ApplyOptions& o) {
   std::string text;
   if (o.file == "-") {
-    std::ostringstream ss;
-    ss << std::cin.rdbuf();
-    text = ss.str();
-  } else {
-    std::ifstream in(o.file, std::ios::binary);
-    if (!in) {
-      fmt::print(stderr, "vgc apply: cannot read {}\n", o.file);
-      return 2;
-    }
-    std::ostringstream ss;
-    ss << in.rdbuf();
-    text = ss.str();
+    read_stdin(&text);
+  } else if (!read_file(o.file, &text)) {
+    fmt::print(stderr, "vgc apply: cannot read {}\n", o.file);
+    return 2;
   }
   std::vector<Command> commands;
   std::vector<std::size_t> lines;

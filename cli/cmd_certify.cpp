@@ -10,12 +10,9 @@
 #include <memory>
 
 #include "baseline.h"
-#if __has_include("capability_checks.h")
-#include "capability_checks.h"
-#define VGC_HAVE_CAPABILITY_CHECKS 1
-#endif
 #include "exec_implementation.h"  // shell_quote
 #include "implementation.h"
+#include "open_impl.h"
 #include "progress_line.h"
 #include "report.h"
 #include "runner.h"
@@ -90,14 +87,8 @@ int run(const Options& o) {
       return 2;
     }
   }
-  OpenOptions open;
-  open.timeout_seconds = o.timeout;
-  std::string error;
-  auto sut = open_implementation(o.impl, open, &error);
-  if (!sut) {
-    fmt::print(stderr, "vgc certify: {}\n", error);
-    return 2;
-  }
+  auto sut = open_impl_or_report("certify", o.impl, o.timeout);
+  if (!sut) return 2;
 
   ReportContext ctx;
   ctx.implementation_spec = o.impl;
@@ -116,14 +107,13 @@ int run(const Options& o) {
                             p.property, p.cases_done, p.cases_total, p.shrinking ? "  shrinking a failure" : "",
                             p.elapsed_seconds));
   };
-#ifdef VGC_HAVE_CAPABILITY_CHECKS
-  register_capability_checks();  // the oracles judge the optional capabilities
-#endif
+  register_oracle_checks();  // the oracles judge the optional capabilities
   const RunResult result = run_certification(*sut, ro);
   line.finish();
   const Verdict verdict = judge(result, ctx.baseline);
   ctx.run_dir = default_run_dir(o.reports, result, ctx);
   std::filesystem::create_directories(std::filesystem::path(ctx.run_dir).parent_path());
+  std::string error;
   if (!write_report(o.reports, result, verdict, ctx, &error)) {
     fmt::print(stderr, "vgc certify: {}\n", error);
     return 2;
@@ -145,6 +135,11 @@ int run(const Options& o) {
     fmt::print("  stale    {:<24} in the baseline but passes now: remove it\n", id);
   for (const auto& p : result.properties)
     if (p.status == "incomplete") fmt::print("  incomplete {}: {}\n", p.id, p.note);
+  // Selected clauses nothing judged (a claimed capability without an oracle,
+  // a pattern no property checks) make the run incomplete: say which.
+  for (const auto& co : result.clauses)
+    if (co.status == "skipped" && co.note.find("shard") == std::string::npos)
+      fmt::print("  not judged {:<24} {}\n", co.clause->id, co.note);
   fmt::print("report: {}/summary.md\n", ctx.run_dir);
   fmt::print("re-run: {}\n", ctx.command_line);
   return verdict.exit_code;

@@ -38,6 +38,7 @@
 
 #include "command_binary.h"
 #include "command_text.h"
+#include "read_file.h"
 #include "subcommand.h"
 
 namespace vgc::cli {
@@ -58,13 +59,6 @@ struct FuzzOptions {
   std::string to_binary;
   std::string output;
 };
-
-bool read_file(const fs::path& p, std::string* out) {
-  std::ifstream in(p, std::ios::binary);
-  if (!in) return false;
-  out->assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-  return true;
-}
 
 bool write_file(const fs::path& p, const std::string& s) {
   std::ofstream out(p, std::ios::binary);

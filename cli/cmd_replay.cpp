@@ -1,20 +1,27 @@
 // cmd_replay.cpp — `vgc replay FILE --impl ...`: re-run one counterexample
 // command file against an implementation, command by command, with the
-// same comparison certify uses, and say where it diverges.
+// same comparison certify uses, and say where it diverges. A file that ends
+// with a capability directive ("#! capability NAME variant N",
+// program_text.h) then repeats that capability check, judged by the same
+// oracles certify registers.
 //
 // Exit codes: 0 the implementation agrees with the reference on the whole
-// file; 1 it does not (the finding is printed); 2 usage error or a file
-// that does not parse (line and column named).
+// file (and passes its capability check); 1 it does not (the finding and
+// its clause are printed); 2 usage error, a file that does not parse (line
+// and column named), an implementation that cannot be started, or a
+// capability check that cannot be judged (the implementation does not
+// claim the capability, or this vgc has no oracle for it).
 #include <fmt/core.h>
 
-#include <fstream>
 #include <memory>
-#include <sstream>
 
 #include "check_step.h"
 #include "clause.h"
 #include "command_text.h"
 #include "implementation.h"
+#include "open_impl.h"
+#include "program_text.h"
+#include "read_file.h"
 #include "runner.h"
 #include "subcommand.h"
 
@@ -28,38 +35,41 @@ struct Options {
 };
 
 int run(const Options& o) {
-  std::ifstream in(o.file, std::ios::binary);
-  if (!in) {
+  std::string text;
+  if (!read_file(o.file, &text)) {
     fmt::print(stderr, "vgc replay: cannot read {}\n", o.file);
     return 2;
   }
-  std::ostringstream ss;
-  ss << in.rdbuf();
   Program program;
   std::vector<std::size_t> lines;
+  std::size_t directive_line = 0;
   TextError error;
-  if (!parse_commands(ss.str(), &program.commands, &error, &lines)) {
+  if (!parse_program(text, &program, &error, &lines, &directive_line)) {
     fmt::print(stderr, "{}:{}:{}: error: {}\n", o.file, error.line, error.column, error.message);
     return 2;
   }
-  OpenOptions open;
-  open.timeout_seconds = o.timeout;
-  std::string open_error;
-  auto sut = open_implementation(o.impl, open, &open_error);
-  if (!sut) {
-    fmt::print(stderr, "vgc replay: {}\n", open_error);
-    return 2;
-  }
+  auto sut = open_impl_or_report("replay", o.impl, o.timeout);
+  if (!sut) return 2;
+  register_oracle_checks();  // as certify: the oracles judge the capability checks
   const ReplayResult r = replay_program(program, *sut);
   for (const auto& n : r.notes) fmt::print("note     {:<24} {}\n", n.clause, n.message);
   if (!r.failure) {
     fmt::print("{}: agrees with the reference on all {} commands of {}\n", o.impl, program.commands.size(), o.file);
+    if (!program.request) return 0;
+    if (!r.not_judged.empty()) {
+      fmt::print("{}:{}: cannot repeat the capability check: {}\n", o.file, directive_line, r.not_judged);
+      return 2;
+    }
+    fmt::print("{}: passes the check of capability \"{}\" (variant {}) of {}\n", o.impl, program.request->capability,
+               program.request->variant, capability_clauses(program.request->capability));
     return 0;
   }
   const Clause* clause = find_clause(r.failure->clause);
-  if (r.failed_at >= 0)
-    fmt::print("{}:{}: {}\n", o.file, lines[static_cast<std::size_t>(r.failed_at)],
-               print_command(program.commands[static_cast<std::size_t>(r.failed_at)]));
+  const auto at = static_cast<std::size_t>(r.failed_at);
+  if (r.failed_at >= 0 && at < program.commands.size())
+    fmt::print("{}:{}: {}\n", o.file, lines[at], print_command(program.commands[at]));
+  else if (program.request && at == program.commands.size())
+    fmt::print("{}:{}: {}", o.file, directive_line, print_capability_directive(*program.request));
   fmt::print("{} {} ({}): {}\n", finding_status_name(r.failure->status), r.failure->clause,
              clause ? clause_level_name(clause->level) : "?", r.failure->message);
   if (clause) fmt::print("spec ({}): {}\n", clause->source, clause->text);

@@ -29,7 +29,7 @@ std::vector<Command> commands_from_bytes(const std::uint8_t* data, std::size_t s
 
 std::optional<Finding> check_byte_case(const std::uint8_t* data, std::size_t size, Focus focus,
                                        Implementation& sut, std::vector<Command>* program) {
-  Program p{commands_from_bytes(data, size, focus)};
+  Program p{commands_from_bytes(data, size, focus), std::nullopt};
   const ReplayResult r = replay_program(p, sut);
   if (program) {
     program->assign(p.commands.begin(), r.failed_at < 0 ? p.commands.begin() : p.commands.begin() + r.failed_at + 1);

@@ -54,12 +54,14 @@ bool past_deadline() {
 
 // Records `f` and fails the case, unless it is a different failure from the
 // one being shrunk; returns false in that case (the case then passes).
-bool fail_case(const Finding& f) {
+// `request` is the capability check that found it, if one did.
+bool fail_case(const Finding& f, std::optional<CapabilityRequest> request = std::nullopt) {
   auto& sig = g_context->signature;
   if (sig && (sig->first != f.clause || sig->second != f.status)) return false;
   sig = std::make_pair(f.clause, f.status);
   g_context->last_failure = f;
   g_context->last_program.commands = g_context->trace;
+  g_context->last_program.request = std::move(request);
   if (f.status == FindingStatus::Timeout || g_context->trace.empty()) g_context->stop = true;
   RC_FAIL(f.clause + ": " + f.message);
   return true;  // unreachable: RC_FAIL throws
@@ -81,7 +83,7 @@ struct Step final : rc::state::Command<Node, Implementation> {
     for (auto& note : r.notes) {
       auto it = g_context->notes.find(note.clause);
       if (it == g_context->notes.end() || it->second.second.commands.size() > g_context->trace.size())
-        g_context->notes[note.clause] = {note, Program{g_context->trace}};
+        g_context->notes[note.clause] = {note, Program{g_context->trace, std::nullopt}};
     }
     // A different failure while shrinking: the rest of this case proves nothing.
     if (r.failure && !fail_case(*r.failure)) g_context->abandoned = true;
@@ -205,7 +207,9 @@ PropertyOutcome run_property(const PropertySpec& spec, Implementation& sut, cons
     // An optional capability: judged on the final state, the variant
     // (subdivision level) chosen by the case.
     if (capability && !c.stop && !c.abandoned && !c.deadline_hit && !past_deadline()) {
-      if (auto f = capability->check(c.model, *c.sut, static_cast<int>(c.trace.size() % 3) + 1)) fail_case(*f);
+      const int variant = static_cast<int>(c.trace.size() % 3) + 1;
+      if (auto f = capability->check(c.model, *c.sut, variant))
+        fail_case(*f, CapabilityRequest{capability->capability, variant});
     }
   };
 
@@ -414,8 +418,24 @@ RunResult run_certification(Implementation& sut, const RunOptions& o) {
   return run;
 }
 
+std::string capability_clauses(const std::string& capability) {
+  std::string out;
+  for (const PropertySpec& spec : property_catalog()) {
+    if (spec.capability != capability) continue;
+    for (auto c : spec.clauses)
+      if (out.find(std::string(c)) == std::string::npos) out += (out.empty() ? "" : ",") + std::string(c);
+  }
+  return out;
+}
+
 ReplayResult replay_program(const Program& program, Implementation& sut) {
   ReplayResult r;
+  // As in certify, the claim is asked before the node is reset.
+  bool claimed = false;
+  if (program.request) {
+    const auto names = query_capabilities(sut);
+    claimed = std::find(names.begin(), names.end(), program.request->capability) != names.end();
+  }
   if (auto f = check_fresh(sut)) {
     r.failure = f;
     return r;
@@ -431,6 +451,25 @@ ReplayResult replay_program(const Program& program, Implementation& sut) {
       return r;
     }
     model = std::move(after);
+  }
+  if (!program.request) return r;
+  const CapabilityRequest& q = *program.request;
+  std::string clauses = capability_clauses(q.capability);
+  if (clauses.empty()) clauses = "no clause of this vgc";
+  if (!claimed) {
+    r.not_judged = sut.name() + " does not claim the capability \"" + q.capability + "\" (certify reports " +
+                   clauses + " as not-claimed)";
+    return r;
+  }
+  const CapabilityCheck* check = find_capability_check(q.capability);
+  if (!check) {
+    r.not_judged = "this vgc has no oracle linked for the capability \"" + q.capability + "\" (" + clauses +
+                   " cannot be judged)";
+    return r;
+  }
+  if (auto f = check->check(model, sut, q.variant)) {
+    r.failure = f;
+    r.failed_at = static_cast<int>(program.commands.size());
   }
   return r;
 }

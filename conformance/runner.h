@@ -45,8 +45,19 @@ struct RunOptions {
   std::function<void(const RunProgress&)> progress;  // called often; may be empty
 };
 
+// A check of an optional capability (capability.h) to repeat after a
+// program's commands: the registered check for `capability`, with the
+// variant the case chose (1..3, e.g. the subdivision level).
+struct CapabilityRequest {
+  std::string capability;  // "manifold", "subdivision", ... (a registry name)
+  int variant = 1;
+};
+
 struct Program {
   std::vector<Command> commands;  // from a fresh node
+  // Set when the finding is a capability check's: it is shown by that check
+  // on the state after the commands, not by a command.
+  std::optional<CapabilityRequest> request;
 };
 
 struct PropertyOutcome {
@@ -95,13 +106,23 @@ bool clause_selected(const std::string& glob, std::string_view id);
 // The seed a property runs with (the run's seed mixed with the property id).
 std::uint64_t property_seed(std::uint64_t run_seed, std::string_view property_id);
 
-// Replays `program` from a fresh node; the first finding, if any, and the
-// index of the command it was found on (-1 for the fresh-node check).
+// Replays `program` from a fresh node, then repeats its capability request
+// if it has one, as certify checks it: the first finding, if any, and the
+// index of the command it was found on (-1 for the fresh-node check,
+// commands.size() for the capability request). A request that cannot be
+// judged (sut does not claim the capability, or no check is registered for
+// it) is no finding: `not_judged` says why, naming the clause(s). Never
+// throws for anything the implementation does.
 struct ReplayResult {
   std::optional<Finding> failure;
   int failed_at = -1;
   std::vector<Finding> notes;
+  std::string not_judged;  // empty, or why program.request could not be judged
 };
 ReplayResult replay_program(const Program& program, Implementation& sut);
+
+// The clause ids the properties of `capability` declare, comma-separated
+// ("SUBD-CATMARK-1"); empty for a capability no property checks.
+std::string capability_clauses(const std::string& capability);
 
 }  // namespace vgc

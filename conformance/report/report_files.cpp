@@ -6,6 +6,7 @@
 
 #include "command_text.h"
 #include "exec_implementation.h"  // shell_quote
+#include "program_text.h"
 #include "report.h"
 
 namespace vgc {
@@ -69,8 +70,15 @@ std::string render_counterexample(const ClauseOutcome& co, const ReportContext& 
   out += "# finding: " + msg + "\n";
   out += "# spec (" + std::string(co.clause->source) + "): " + std::string(co.clause->text) + "\n";
   out += "# replay: " + replay_command(file, ctx.implementation_spec) + "\n";
-  out += "# " + std::to_string(co.program.commands.size()) + " commands from a fresh node; the last one shows it.\n";
-  out += print_commands(co.program.commands);
+  if (co.program.request) {
+    out += "# " + std::to_string(co.program.commands.size()) +
+           " commands from a fresh node; then the check of the capability \"" + co.program.request->capability +
+           "\" (variant " + std::to_string(co.program.request->variant) +
+           ") shows it. The last line (\"#! capability\") tells vgc replay to repeat that check.\n";
+  } else {
+    out += "# " + std::to_string(co.program.commands.size()) + " commands from a fresh node; the last one shows it.\n";
+  }
+  out += print_program(co.program);
   return out;
 }
 

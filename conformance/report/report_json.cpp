@@ -30,7 +30,7 @@ std::string render_report_json(const RunResult& run, const Verdict& v, const Rep
   j["stale_baseline"] = v.stale_baseline;
   if (ctx.baseline) j["baseline"] = ctx.baseline_path;
 
-  json counts = {{"pass", 0}, {"fail", 0}, {"crash", 0}, {"timeout", 0}, {"skipped", 0}};
+  json counts = {{"pass", 0}, {"fail", 0}, {"crash", 0}, {"timeout", 0}, {"skipped", 0}, {"not-claimed", 0}};
   json clauses = json::array();
   for (const ClauseOutcome& co : run.clauses) {
     counts[co.status] = counts.value(co.status, 0) + 1;
@@ -50,6 +50,9 @@ std::string render_report_json(const RunResult& run, const Verdict& v, const Rep
       c["seed"] = co.seed;
       c["counterexample"] = file;
       c["counterexample_commands"] = co.program.commands.size();
+      if (co.program.request)  // the capability check vgc replay repeats after the commands
+        c["capability_check"] = {{"capability", co.program.request->capability},
+                                 {"variant", co.program.request->variant}};
       c["replay"] = replay_command((std::filesystem::path(ctx.run_dir) / file).string(), ctx.implementation_spec);
     }
     clauses.push_back(c);

@@ -4,6 +4,7 @@
 #include <filesystem>
 
 #include "command_text.h"
+#include "program_text.h"
 #include "report.h"
 
 namespace vgc {
@@ -28,9 +29,17 @@ std::string render_summary(const RunResult& run, const Verdict& v, const ReportC
                      run.clauses.size(), pass, fail, crash, timeout, skipped, not_claimed, run.options.seed, run.options.cases,
                      run.seconds);
   out += "Re-run exactly: `" + ctx.command_line + "`\n\n";
-  if (v.name == "incomplete")
-    out += "Some properties did not finish within the budget (see Properties below); the verdict is neither a "
-           "pass nor a failure. Raise `--budget`.\n\n";
+  if (v.name == "incomplete") {
+    // Why: a property the budget cut short, or a selected clause nothing
+    // judged (e.g. a claimed capability this vgc has no oracle for).
+    out += "The run is incomplete: the verdict is neither a pass nor a failure.\n\n";
+    for (const auto& p : run.properties)
+      if (p.status == "incomplete") out += fmt::format("- property `{}` did not finish: {}\n", p.id, p.note);
+    for (const auto& co : run.clauses)
+      if (co.status == "skipped" && co.note.find("shard") == std::string::npos)
+        out += fmt::format("- clause {} was not judged: {}\n", co.clause->id, co.note);
+    out += "\n";
+  }
 
   auto section = [&](const std::vector<std::string>& ids, const std::string& title) {
     if (ids.empty()) return;
@@ -46,7 +55,7 @@ std::string render_summary(const RunResult& run, const Verdict& v, const ReportC
       if (ctx.baseline && ctx.baseline->reasons.count(std::string(co.clause->id)))
         out += fmt::format("Baseline says: {}\n\n", ctx.baseline->reasons.at(std::string(co.clause->id)));
       out += fmt::format("Shrunk counterexample ({} commands, from a fresh node; found by `{}`, seed {}):\n\n```\n{}```\n\n",
-                         co.program.commands.size(), co.found_by, co.seed, print_commands(co.program.commands));
+                         co.program.commands.size(), co.found_by, co.seed, print_program(co.program));
       out += fmt::format("Replay: `{}`\n\n", replay_command(file, ctx.implementation_spec));
     }
   };

@@ -8,6 +8,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -19,6 +20,9 @@
 #include "clause.h"
 #include "command_text.h"
 #include "exec_implementation.h"  // shell_quote
+#include "faulty_node.h"
+#include "program_text.h"
+#include "property.h"
 
 namespace vgc {
 namespace {
@@ -169,6 +173,111 @@ TEST_F(Cli, AFaultIsRejectedReplaysAndCanBeBaselined) {
       vgc("certify --impl " + shell_quote(impl) + " --reports rep2 --baseline baseline.txt" + kFast, env);
   EXPECT_EQ(known.exit_code, 0) << context(known);
   EXPECT_NE(known.out.find("known"), std::string::npos) << context(known);
+}
+
+// A capability fault (one whose clause a capability property declares):
+// certify fails it through the plugin route; the counterexample records the
+// check to repeat ("#! capability NAME variant N") and still runs under
+// `vgc apply`; `vgc replay` repeats the check and fails naming the clause,
+// passes against the reference, and says it cannot judge an implementation
+// that no longer claims the capability (exit 2).
+TEST_F(Cli, ACapabilityFaultReplaysItsCapabilityCheck) {
+  int tried = 0;
+  for (const auto& fault : faults::fault_catalog()) {
+    const PropertySpec* property = nullptr;
+    for (const PropertySpec& p : property_catalog())
+      if (!p.capability.empty())
+        for (auto c : p.clauses)
+          if (c == fault.expected_clause) property = &p;
+    if (!property) continue;
+    ++tried;
+    const std::string clause(fault.expected_clause), capability(property->capability);
+    SCOPED_TRACE(std::string(fault.name) + " / " + clause);
+    const std::string env = "VGC_FAULT=" + std::string(fault.name);
+    const std::string impl = std::string("plugin:") + VGC_FAULT_PLUGIN_REQUESTS;
+    const std::string reports = "rep-" + clause;
+    const Result r = vgc("certify --impl " + shell_quote(impl) + " --reports " + reports + " --clauses " + clause +
+                             " --quiet --cases 100 --max-size 30 --seed 1",
+                         env);
+    ASSERT_EQ(r.exit_code, 1) << context(r);
+    EXPECT_NE(r.out.find(clause), std::string::npos) << context(r);
+
+    const fs::path run_dir = fs::canonical(dir_ / reports / "latest");
+    const fs::path file = run_dir / "counterexamples" / (clause + ".vgc");
+    ASSERT_TRUE(fs::is_regular_file(file)) << file;
+    const std::string text = read(file);
+    Program program;
+    TextError error;
+    ASSERT_TRUE(parse_program(text, &program, &error)) << error.to_string() << "\n" << text;
+    ASSERT_TRUE(program.request.has_value()) << "no capability directive in\n" << text;
+    EXPECT_EQ(program.request->capability, capability);
+    EXPECT_GE(program.request->variant, 1);
+    EXPECT_LE(program.request->variant, 3);
+    // The commands alone, as any command-file reader sees them: the same ones.
+    std::vector<Command> commands;
+    ASSERT_TRUE(parse_commands(text, &commands, &error)) << error.to_string();
+    EXPECT_EQ(print_commands(commands), print_commands(program.commands));
+    const Result applied = vgc("apply " + shell_quote(file.string()));
+    EXPECT_EQ(applied.exit_code, 0) << context(applied);
+    // report.json names the same check.
+    const auto j = nlohmann::json::parse(read(run_dir / "report.json"));
+    bool in_json = false;
+    for (const auto& c : j.at("clauses"))
+      if (c.at("id") == clause) {
+        in_json = true;
+        EXPECT_EQ(c.at("status"), "fail");
+        EXPECT_EQ(c.at("capability_check").at("capability"), capability) << c.dump();
+        EXPECT_EQ(c.at("capability_check").at("variant"), program.request->variant) << c.dump();
+      }
+    EXPECT_TRUE(in_json);
+
+    // Replay against the same faulty implementation: the check fails again.
+    const Result again = vgc("replay " + shell_quote(file.string()) + " --impl " + shell_quote(impl), env);
+    EXPECT_EQ(again.exit_code, 1) << context(again);
+    EXPECT_NE(again.out.find("fail " + clause), std::string::npos) << context(again);
+    EXPECT_NE(again.out.find("#! capability " + capability), std::string::npos) << context(again);
+    // The replay line report.json prints, run as printed.
+    for (const auto& c : j.at("clauses"))
+      if (c.at("id") == clause) {
+        const std::string line = c.at("replay");
+        ASSERT_EQ(line.rfind("./vgc ", 0), 0u) << line;
+        const Result printed = vgc(line.substr(6), env);
+        EXPECT_EQ(printed.exit_code, 1) << context(printed);
+      }
+    // Against the reference: exit 0, the check passes.
+    const Result clean = vgc("replay " + shell_quote(file.string()) + " --impl reference");
+    EXPECT_EQ(clean.exit_code, 0) << context(clean);
+    EXPECT_NE(clean.out.find("passes the check of capability \"" + capability + "\""), std::string::npos)
+        << context(clean);
+    // The same fault without the requests (claims nothing): the check cannot be repeated.
+    const Result unclaimed =
+        vgc("replay " + shell_quote(file.string()) + " --impl " + shell_quote(std::string("plugin:") + VGC_FAULT_PLUGIN),
+            env);
+    EXPECT_EQ(unclaimed.exit_code, 2) << context(unclaimed);
+    EXPECT_NE(unclaimed.out.find("does not claim the capability \"" + capability + "\""), std::string::npos)
+        << context(unclaimed);
+    EXPECT_NE(unclaimed.out.find(clause), std::string::npos) << context(unclaimed);
+  }
+  EXPECT_GE(tried, 2) << "no seeded capability faults";
+}
+
+TEST_F(Cli, AMalformedCapabilityDirectiveNamesLineAndColumn) {
+  const std::string cube = read(std::string(VGC_SOURCE_DIR) + "/corpora/examples/cube.vgc");
+  const std::size_t lines = static_cast<std::size_t>(std::count(cube.begin(), cube.end(), '\n'));
+  write("bad_variant.vgc", cube + "#! capability subdivision variant two\n");
+  const Result bad = vgc("replay bad_variant.vgc --impl reference");
+  EXPECT_EQ(bad.exit_code, 2) << context(bad);
+  EXPECT_NE(bad.err.find("bad_variant.vgc:" + std::to_string(lines + 1) + ":35:"), std::string::npos) << context(bad);
+  write("early.vgc", "#! capability manifold variant 1\n" + cube);
+  const Result early = vgc("replay early.vgc --impl reference");
+  EXPECT_EQ(early.exit_code, 2) << context(early);
+  EXPECT_NE(early.err.find("early.vgc:1:1:"), std::string::npos) << context(early);
+  // `vgc apply` reads both as plain command files.
+  EXPECT_EQ(vgc("apply bad_variant.vgc").exit_code, 0);
+  // A well-formed one on the cube: the reference passes it.
+  write("cube_manifold.vgc", cube + "#! capability manifold variant 1\n");
+  const Result fine = vgc("replay cube_manifold.vgc --impl reference");
+  EXPECT_EQ(fine.exit_code, 0) << context(fine);
 }
 
 TEST_F(Cli, UsageErrorsExitTwo) {

@@ -9,12 +9,15 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <fmt/format.h>
 #include <pugixml.hpp>
+#include <set>
 #include <sstream>
 
 #include "command_text.h"
 #include "exec_implementation.h"  // shell_quote
 #include "faulty_implementation.h"
+#include "property.h"
 #include "reference_implementation.h"
 #include "report.h"
 #include "runner.h"
@@ -217,7 +220,7 @@ TEST_F(Report, CounterexamplesParseAndReplayToTheSameClause) {
     ASSERT_EQ(commands.size(), co->program.commands.size());
     for (std::size_t i = 0; i < commands.size(); ++i) EXPECT_TRUE(bit_equal(commands[i], co->program.commands[i]));
     faults::FaultyImplementation impl(faults::find_fault(kFault));
-    const ReplayResult r = replay_program(Program{commands}, impl);
+    const ReplayResult r = replay_program(Program{commands, std::nullopt}, impl);
     ASSERT_TRUE(r.failure) << id;
     EXPECT_EQ(r.failure->clause, id);
   }
@@ -251,6 +254,126 @@ TEST_F(Report, NothingPartialIsLeftAndLatestPointsAtTheRun) {
   EXPECT_TRUE(fs::is_empty(w2.dir / "counterexamples"));
   for (const auto& e : fs::recursive_directory_iterator(tmp_.path()))
     EXPECT_EQ(e.path().filename().string().find(".partial"), std::string::npos) << e.path();
+}
+
+// The reference with the capability requests switched off (the default
+// Implementation::request): it claims no optional capability.
+class ClaimsNothing final : public Implementation {
+ public:
+  std::string name() const override { return "claims-nothing"; }
+  Answer reset() override { return ref_.reset(); }
+  Answer apply(const Command& c) override { return ref_.apply(c); }
+  Document snapshot() override { return ref_.snapshot(); }
+  Document derived() override { return ref_.derived(); }
+
+ private:
+  ReferenceImplementation ref_;
+};
+
+// The clauses the capability properties declare (whatever their names).
+std::set<std::string> capability_clause_ids() {
+  std::set<std::string> ids;
+  for (const PropertySpec& p : property_catalog())
+    if (!p.capability.empty())
+      for (auto c : p.clauses) ids.insert(std::string(c));
+  return ids;
+}
+
+// The cells of the summary's table row for `id` ("| ID | LEVEL | status |"), or empty.
+std::vector<std::string> table_row(const std::string& summary, const std::string& id) {
+  std::istringstream in(summary);
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.rfind("| " + id + " |", 0) != 0) continue;
+    std::vector<std::string> cells;
+    std::istringstream row(line.substr(1));
+    std::string cell;
+    while (std::getline(row, cell, '|')) {
+      const auto b = cell.find_first_not_of(' '), e = cell.find_last_not_of(' ');
+      cells.push_back(b == std::string::npos ? "" : cell.substr(b, e - b + 1));
+    }
+    return cells;
+  }
+  return {};
+}
+
+TEST(ReportNotClaimed, JsonJunitAndSummaryShowANotClaimedCapability) {
+  const std::set<std::string> ids = capability_clause_ids();
+  ASSERT_FALSE(ids.empty());
+  std::string glob = "BONE-VALUE-1";  // one core clause, so that a pass sits next to them
+  for (const auto& id : ids) glob += "," + id;
+  ClaimsNothing impl;
+  RunOptions o;
+  o.seed = 23;
+  o.cases = 5;
+  o.clause_glob = glob;
+  const RunResult run = run_certification(impl, o);
+  TempDir tmp;
+  const Written w = write(tmp.path() / "reports", run, "exec:./old-host", "2026-11-22T04:10:00Z");
+  ASSERT_TRUE(w.ok) << w.error;
+  EXPECT_EQ(w.verdict.name, "conformant");
+
+  // report.json: status "not-claimed" with its note, counted, no finding.
+  const auto j = nlohmann::json::parse(read(w.dir / "report.json"));
+  EXPECT_EQ(j.at("verdict"), "conformant");
+  EXPECT_EQ(j.at("exit_code"), 0);
+  EXPECT_EQ(j.at("counts").at("not-claimed"), static_cast<int>(ids.size()));
+  EXPECT_EQ(j.at("counts").at("pass"), 1);
+  EXPECT_EQ(j.at("counts").at("skipped"), 0);
+  std::set<std::string> in_json;
+  for (const auto& c : j.at("clauses")) {
+    const std::string id = c.at("id");
+    if (!ids.count(id)) {
+      EXPECT_EQ(c.at("status"), "pass") << c.dump();
+      continue;
+    }
+    in_json.insert(id);
+    EXPECT_EQ(c.at("status"), "not-claimed") << c.dump();
+    EXPECT_EQ(c.at("note"), "not claimed") << c.dump();
+    EXPECT_FALSE(c.contains("counterexample")) << c.dump();
+    EXPECT_FALSE(c.contains("message")) << c.dump();
+  }
+  EXPECT_EQ(in_json, ids);
+
+  // junit.xml: each a testcase with <skipped message="not claimed">, neither failure nor error.
+  pugi::xml_document doc;
+  const auto parsed = doc.load_string(read(w.dir / "junit.xml").c_str());
+  ASSERT_TRUE(parsed) << parsed.description();
+  const auto suites = doc.child("testsuites");
+  std::set<std::string> in_junit;
+  int skipped_in_suites = 0;
+  for (auto suite : suites.children("testsuite")) {
+    int skipped_here = 0;
+    for (auto tc : suite.children("testcase")) {
+      const std::string name = tc.attribute("name").as_string();
+      const std::string id = name.substr(0, name.find(' '));
+      skipped_here += static_cast<bool>(tc.child("skipped"));
+      if (!ids.count(id)) continue;
+      in_junit.insert(id);
+      EXPECT_FALSE(tc.child("failure")) << name;
+      EXPECT_FALSE(tc.child("error")) << name;
+      ASSERT_TRUE(tc.child("skipped")) << name;
+      EXPECT_STREQ(tc.child("skipped").attribute("message").as_string(), "not claimed") << name;
+    }
+    EXPECT_EQ(suite.attribute("skipped").as_int(), skipped_here) << suite.attribute("name").as_string();
+    EXPECT_EQ(suite.attribute("failures").as_int(), 0);
+    EXPECT_EQ(suite.attribute("errors").as_int(), 0);
+    skipped_in_suites += skipped_here;
+  }
+  EXPECT_EQ(in_junit, ids);
+  EXPECT_EQ(suites.attribute("skipped").as_int(), skipped_in_suites);
+  EXPECT_EQ(skipped_in_suites, static_cast<int>(ids.size()));
+
+  // summary.md: counted in the headline counts, and one table row each.
+  const std::string s = read(w.dir / "summary.md");
+  EXPECT_NE(s.find(fmt::format("{} not claimed.", ids.size())), std::string::npos) << s;
+  EXPECT_NE(s.find(" 0 skipped,"), std::string::npos) << s;
+  for (const auto& id : ids) {
+    const auto cells = table_row(s, id);
+    ASSERT_EQ(cells.size(), 3u) << id << " has no row in\n" << s;
+    EXPECT_EQ(cells[2].rfind("not-claimed", 0), 0u) << cells[2];
+  }
+  EXPECT_EQ(table_row(s, "BONE-VALUE-1").at(2), "pass");
 }
 
 TEST(ReportFailure, AnUncreatablePathFailsAndLeavesNothing) {

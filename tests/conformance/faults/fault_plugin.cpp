@@ -3,7 +3,14 @@
 // VGC_FAULT (see faulty_node.cpp for the list), so one library serves every
 // fault, through every route:
 //   VGC_FAULT=bone-cycles-accepted ./vgc certify --impl plugin:build/tests/conformance/libvgc_fault_plugin.so
+// It exports no vgc_plugin_request_v1, so it claims no optional capability.
+// Built with VGC_FAULT_PLUGIN_REQUESTS (libvgc_fault_plugin_requests.so) it
+// also answers the capability requests, so the capability faults reach
+// certify and replay through the plugin route:
+//   VGC_FAULT=subdivision-ignores-creases ./vgc certify --impl plugin:PATH
+// with PATH build/tests/conformance/libvgc_fault_plugin_requests.so.
 #include <cstdlib>
+#include <exception>
 #include <new>
 #include <string>
 
@@ -58,3 +65,15 @@ const vgc_plugin_v1_table kTable = {VGC_PLUGIN_ABI_VERSION, "vgc faulty referenc
 }  // namespace
 
 extern "C" __attribute__((visibility("default"))) const vgc_plugin_v1_table* vgc_plugin_v1(void) { return &kTable; }
+
+#ifdef VGC_FAULT_PLUGIN_REQUESTS
+// The optional capability requests, with the capability faults applied.
+extern "C" __attribute__((visibility("default"))) const char* vgc_plugin_request_v1(vgc_node* n, const char* line) {
+  try {
+    n->text = n->node.request(line ? line : "");
+    return n->text.c_str();
+  } catch (const std::exception&) {
+    return nullptr;
+  }
+}
+#endif

@@ -1,0 +1,116 @@
+// program_text.cpp — see program_text.h.
+#include "program_text.h"
+
+namespace vgc {
+namespace {
+
+bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r'; }
+
+bool is_name_char(char c) {
+  return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '-' || c == '_';
+}
+
+// The blank-separated tokens of `line` from byte `from` on, with their
+// 1-based columns.
+std::vector<std::pair<std::string, std::size_t>> tokens(std::string_view line, std::size_t from) {
+  std::vector<std::pair<std::string, std::size_t>> out;
+  std::size_t i = from;
+  while (i < line.size()) {
+    while (i < line.size() && is_blank(line[i])) ++i;
+    if (i >= line.size()) break;
+    const std::size_t start = i;
+    while (i < line.size() && !is_blank(line[i])) ++i;
+    out.emplace_back(std::string(line.substr(start, i - start)), start + 1);
+  }
+  return out;
+}
+
+void set_error(TextError* error, std::size_t line, std::size_t column, std::string message) {
+  error->line = line;
+  error->column = column;
+  error->message = std::move(message);
+}
+
+}  // namespace
+
+std::string print_capability_directive(const CapabilityRequest& request) {
+  return "#! capability " + request.capability + " variant " + std::to_string(request.variant) + "\n";
+}
+
+std::string print_program(const Program& program) {
+  std::string out = print_commands(program.commands);
+  if (program.request) out += print_capability_directive(*program.request);
+  return out;
+}
+
+bool parse_program(std::string_view text, Program* out, TextError* error, std::vector<std::size_t>* lines,
+                   std::size_t* directive_line) {
+  out->commands.clear();
+  out->request.reset();
+  if (directive_line) *directive_line = 0;
+  std::vector<std::size_t> command_lines;
+  if (!parse_commands(text, &out->commands, error, &command_lines)) {
+    if (lines) *lines = command_lines;
+    return false;
+  }
+  if (lines) *lines = command_lines;
+  const std::size_t last_command = command_lines.empty() ? 0 : command_lines.back();
+
+  std::size_t line_number = 0, found = 0;
+  while (!text.empty()) {
+    ++line_number;
+    const std::size_t nl = text.find('\n');
+    const std::string_view line = text.substr(0, nl);
+    text = nl == std::string_view::npos ? std::string_view{} : text.substr(nl + 1);
+    if (line.substr(0, 2) != "#!") continue;
+    const auto t = tokens(line, 2);
+    if (t.empty() || t[0].first != "capability") continue;  // an ordinary comment
+    if (found) {
+      set_error(error, line_number, 1,
+                "a second capability directive (the first is on line " + std::to_string(found) + ")");
+      return false;
+    }
+    if (line_number < last_command) {
+      set_error(error, line_number, 1,
+                "the capability directive must follow the last command (line " + std::to_string(last_command) + ")");
+      return false;
+    }
+    const std::size_t end_column = line.size() + 1;
+    if (t.size() < 2) {
+      set_error(error, line_number, end_column, "expected a capability name after \"capability\"");
+      return false;
+    }
+    for (char c : t[1].first)
+      if (!is_name_char(c)) {
+        set_error(error, line_number, t[1].second, "expected a capability name (letters, digits, - and _), found \"" +
+                                                       t[1].first + "\"");
+        return false;
+      }
+    if (t.size() < 3 || t[2].first != "variant") {
+      set_error(error, line_number, t.size() < 3 ? end_column : t[2].second,
+                "expected \"variant\" after the capability name");
+      return false;
+    }
+    if (t.size() < 4) {
+      set_error(error, line_number, end_column, "expected the variant number");
+      return false;
+    }
+    const std::string& n = t[3].first;
+    bool digits = !n.empty() && n.size() <= 9;
+    for (char c : n) digits = digits && c >= '0' && c <= '9';
+    if (!digits) {
+      set_error(error, line_number, t[3].second, "expected the variant number (1 to 9 digits), found \"" + n + "\"");
+      return false;
+    }
+    if (t.size() > 4) {
+      set_error(error, line_number, t[4].second, "unexpected \"" + t[4].first + "\" after the variant number");
+      return false;
+    }
+    out->request = CapabilityRequest{t[1].first, std::stoi(n)};
+    found = line_number;
+  }
+  if (directive_line) *directive_line = found;
+  return true;
+}
+
+}  // namespace vgc
