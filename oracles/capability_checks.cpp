@@ -504,30 +504,31 @@ std::optional<Finding> check_edits(const Node& model, Implementation& sut, int l
                                   std::to_string(got->faces));
     return std::nullopt;
   };
-  // Each face line, mapped to OpenSubdiv's vertices, must be a face of
-  // `want` (same cycle, any starting corner) whose flag in `allowed` is set.
-  // Each face line must be a face of `want` whose flag in `allowed` is set,
-  // compared by the positions of its corners (same cycle, any starting
-  // corner, within the tolerance: coinciding vertices make a pairing by
-  // index arbitrary), each face of `want` used once.
-  auto faces_among = [&](const SubdivisionAnswer& got, const OsdLevel& want, const std::vector<char>& allowed,
-                         const std::string& request) -> std::optional<Finding> {
-    const double tol = tolerance_of(want.positions);
-    std::vector<std::size_t> offset(want.face_sizes.size() + 1, 0);
-    for (std::size_t f = 0; f < want.face_sizes.size(); ++f) offset[f + 1] = offset[f] + static_cast<std::size_t>(want.face_sizes[f]);
+  // Each face line must be a face of the level (`positions`, `sizes`,
+  // `corners`) whose flag in `allowed` is set, compared by the positions of
+  // its corners (same cycle, any starting corner, within the tolerance:
+  // coinciding vertices make a pairing by index arbitrary), each face used
+  // once.
+  auto faces_among = [&](const SubdivisionAnswer& got, const std::vector<std::array<double, 3>>& positions,
+                         const std::vector<int>& sizes, const std::vector<int>& corners,
+                         const std::vector<char>& allowed, const std::string& request,
+                         const std::string& source) -> std::optional<Finding> {
+    const double tol = tolerance_of(positions);
+    std::vector<std::size_t> offset(sizes.size() + 1, 0);
+    for (std::size_t f = 0; f < sizes.size(); ++f) offset[f + 1] = offset[f] + static_cast<std::size_t>(sizes[f]);
     auto same_cycle = [&](const std::vector<int>& line, std::size_t f) {
       const std::size_t n = line.size();
-      if (n != static_cast<std::size_t>(want.face_sizes[f])) return false;
+      if (n != static_cast<std::size_t>(sizes[f])) return false;
       for (std::size_t r = 0; r < n; ++r) {
         bool same = true;
         for (std::size_t k = 0; same && k < n; ++k)
           same = near(got.vertices[static_cast<std::size_t>(line[k])],
-                      want.positions[static_cast<std::size_t>(want.face_vertices[offset[f] + (k + r) % n])], tol);
+                      positions[static_cast<std::size_t>(corners[offset[f] + (k + r) % n])], tol);
         if (same) return true;
       }
       return false;
     };
-    std::vector<char> used(want.face_sizes.size(), 0);
+    std::vector<char> used(sizes.size(), 0);
     for (std::size_t i = 0; i < got.face_lines.size(); ++i) {
       std::size_t hit = used.size();
       bool removed = false;
@@ -538,8 +539,8 @@ std::optional<Finding> check_edits(const Node& model, Implementation& sut, int l
       }
       if (hit == used.size())
         return finding(kClause, request + ": face line " + std::to_string(i) + " is " +
-                                    (removed ? "a face the hole removes (it or an ancestor is the hole)"
-                                             : "no face of OpenSubdiv's refinement (or one given twice)"));
+                                    (removed ? "a face the hole removes (it or an ancestor is the hole) in " + source
+                                             : "no face of " + source + " (or one given twice)"));
       used[hit] = 1;
     }
     return std::nullopt;
@@ -580,7 +581,8 @@ std::optional<Finding> check_edits(const Node& model, Implementation& sut, int l
     }
     if (auto problem = compare_with_level(got, want.positions, kept, "OpenSubdiv with the hole", &g2w))
       return finding(kClause, request + ": " + *problem);
-    return faces_among(got, want, allowed, request);
+    return faces_among(got, want.positions, want.face_sizes, want.face_vertices, allowed, request,
+                       "OpenSubdiv's refinement with the hole");
   }
   if (kind == kHole || kind == kAddZero) {
     // A hole deeper down removes exactly its descendants at this level
@@ -598,7 +600,9 @@ std::optional<Finding> check_edits(const Node& model, Implementation& sut, int l
                                                         : std::string("OpenSubdiv (add 0 changes nothing)"),
                                           &g2w))
       return finding(kClause, request + ": " + *problem);
-    if (auto f = faces_among(got, plain, std::vector<char>(plain.face_sizes.size(), 1), request)) return f;
+    if (auto f = faces_among(got, plain.positions, plain.face_sizes, plain.face_vertices,
+                             std::vector<char>(plain.face_sizes.size(), 1), request, "OpenSubdiv's refinement"))
+      return f;
     if (kind == kAddZero) return std::nullopt;
   }
   if (edit_level == level && kind != kHole && tolerance_of(plain.positions) <= 1e-3) {
@@ -626,7 +630,10 @@ std::optional<Finding> check_edits(const Node& model, Implementation& sut, int l
   for (unsigned char h : want.face_hole) kept += h ? 0 : 1;
   if (auto problem = compare_with_level(got, want.positions, kept, "the reference's hierarchical edit", &g2w))
     return finding(kClause, request + ": " + *problem);
-  return std::nullopt;
+  std::vector<char> kept_faces(want.face_hole.size());
+  for (std::size_t f = 0; f < kept_faces.size(); ++f) kept_faces[f] = want.face_hole[f] ? 0 : 1;
+  return faces_among(got, want.positions, want.face_sizes, want.face_vertices, kept_faces, request,
+                     "the reference's hierarchical edit");
 }
 
 void register_capability_checks() {

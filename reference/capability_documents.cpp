@@ -173,6 +173,14 @@ std::string print_edit_subdivision(const Node& node, int level, const std::strin
     e.face.children.clear();
     e.index = std::min(e.index, mesh.face_sizes[static_cast<std::size_t>(e.face.base_face)] - 1);
   }
+  if (faults.edit_hole_wrong_face && e.kind == EditKind::FaceHole) {
+    if (e.face.children.empty()) e.face.base_face = (e.face.base_face + 1) % mesh.face_count();
+    else e.face.children.back() = (e.face.children.back() + 1) % (e.face.level() == 1 ? 3 : 4);
+  }
+  if (faults.edit_truncated_path && e.face.level() > level) e.face.children.resize(static_cast<std::size_t>(level));
+  if (faults.edit_add_zero_as_set && e.kind == EditKind::VertexValue && e.op == EditOp::Add &&
+      e.value == std::array<double, 3>{0, 0, 0})
+    e.op = EditOp::Set;
   std::vector<SubdivisionLevel> levels;
   // Refined as deep as the edit, so that its path is checked; a level
   // coarser than the edit is the plain refinement (001: an edit changes its

@@ -30,6 +30,9 @@ struct CapabilityDocumentFaults {
   bool loop_tree_rotated = false;     // ?subdivide-loop face lines start at their second vertex
   bool edit_holes_ignored = false;    // ?subdivide-edit lists the faces of holes too
   bool edit_at_base_level = false;    // ?subdivide-edit applies the edit to the base polygon's vertex
+  bool edit_hole_wrong_face = false;  // ?subdivide-edit holes the next sibling (or base polygon) instead
+  bool edit_truncated_path = false;   // ?subdivide-edit applies a deeper edit at the asked level, path cut
+  bool edit_add_zero_as_set = false;  // ?subdivide-edit treats "add" of (0, 0, 0) as "set" (to the origin)
 };
 
 // The document header a capability request is answered with

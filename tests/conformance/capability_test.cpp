@@ -142,9 +142,10 @@ class DocumentFaults final : public Implementation {
 
 // Each part of a check catches the fault meant for it: the finding names
 // the clause and says which comparison failed.
-void expect_caught(const CapabilityDocumentFaults& f, const char* clause_id, const char* words) {
+void expect_caught(const CapabilityDocumentFaults& f, const char* clause_id, const char* words, int cases = 60) {
   DocumentFaults impl(f);
   RunOptions o = capability_options();
+  o.cases = cases;
   o.clause_glob = clause_id;
   const RunResult run = run_certification(impl, o);
   const ClauseOutcome* co = clause(run, clause_id);
@@ -174,11 +175,41 @@ TEST(Capability, EachPartOfTheLoopCheckHasTeeth) {
 }
 
 TEST(Capability, EachPartOfTheEditsCheckHasTeeth) {
-  CapabilityDocumentFaults holes, base;
+  CapabilityDocumentFaults holes, base, wrong_face, truncated, add_as_set;
   holes.edit_holes_ignored = true;  // against OpenSubdiv's holes / the descendant count
   base.edit_at_base_level = true;   // the edit lands on the base polygon instead of its path
+  wrong_face.edit_hole_wrong_face = true;  // right count, wrong faces
+  truncated.edit_truncated_path = true;    // a coarser level than the edit's is changed
+  add_as_set.edit_add_zero_as_set = true;  // add 0 moves the vertex to the origin
   expect_caught(holes, "EDIT-HIERARCHY-1", "faces; OpenSubdiv");
   expect_caught(base, "EDIT-HIERARCHY-1", "");
+  expect_caught(wrong_face, "EDIT-HIERARCHY-1", "a face the hole removes");
+  expect_caught(truncated, "EDIT-HIERARCHY-1", "so this level is untouched", 400);
+  expect_caught(add_as_set, "EDIT-HIERARCHY-1", "add 0 changes nothing");
+}
+
+// The holes of level 0 are compared with OpenSubdiv's own holes: on the
+// cube, with draws that pick a level-0 hole, the wrong face removed is seen
+// there (and the right one passes).
+TEST(Capability, LevelZeroHolesAreComparedWithOpenSubdivHoles) {
+  CapabilityDocumentFaults wrong_face;
+  wrong_face.edit_hole_wrong_face = true;
+  DocumentFaults faulty(wrong_face);
+  ReferenceImplementation good;
+  Node model;
+  ASSERT_EQ(faulty.reset().status, CallStatus::Ok);
+  for (const auto& c : cube_commands()) {
+    model.apply(c);
+    ASSERT_TRUE(faulty.apply(c).applied);
+    ASSERT_TRUE(good.apply(c).applied);
+  }
+  int seen = 0;
+  for (std::uint32_t draw = 0; draw < 200; ++draw) {
+    EXPECT_FALSE(check_edits(model, good, 2, draw).has_value()) << draw;
+    const auto f = check_edits(model, faulty, 2, draw);
+    if (f && f->message.find("OpenSubdiv's refinement with the hole") != std::string::npos) ++seen;
+  }
+  EXPECT_GT(seen, 0);
 }
 
 TEST(Capability, ServeAnswersTheRequestsForTheCube) {
