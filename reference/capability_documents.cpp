@@ -132,7 +132,9 @@ std::string print_loop_subdivision(const Node& node, int level, const Capability
   if (level < 1 || level > 3) return "error ?subdivide-loop takes a level from 1 to 3\n";
   const MeshArrays mesh = remove_unused_vertices(extract_mesh(node));
   for (int size : mesh.face_sizes)
-    if (size != 3) return "error ?subdivide-loop needs every polygon to be a triangle\n";
+    if (size != 3)
+      return faults.loop_answers_quads ? "vgc-subdivision 1\nlevel " + std::to_string(level) + "\nfaces 0\nend\n"
+                                       : "error ?subdivide-loop needs every polygon to be a triangle\n";
   std::string out = "vgc-subdivision 1\nlevel " + std::to_string(level) + "\n";
   std::size_t faces = 0;
   if (mesh.face_count() > 0) {

@@ -28,6 +28,7 @@ struct CapabilityDocumentFaults {
   bool negate_lone_corners = false;   // ?normals negates the normal of every one-corner fan
   bool loop_warren_weights = false;   // ?subdivide-loop with Warren's vertex weights (LoopFaults)
   bool loop_tree_rotated = false;     // ?subdivide-loop face lines start at their second vertex
+  bool loop_answers_quads = false;    // ?subdivide-loop answers an empty document when a polygon is a quad
   bool edit_holes_ignored = false;    // ?subdivide-edit lists the faces of holes too
   bool edit_at_base_level = false;    // ?subdivide-edit applies the edit to the base polygon's vertex
   bool edit_hole_wrong_face = false;  // ?subdivide-edit holes the next sibling (or base polygon) instead

@@ -172,6 +172,22 @@ TEST(Capability, EachPartOfTheLoopCheckHasTeeth) {
   rotated.loop_tree_rotated = true;   // right vertices and triangles, wrong tree names
   expect_caught(warren, "LOOP-TRIANGLE-1", "OpenSubdiv Loop has a vertex");
   expect_caught(rotated, "LOOP-TRIANGLE-1", "should be child T0");
+  // Loop takes triangles only: a document for the cube's quads is a failure.
+  CapabilityDocumentFaults quads;
+  quads.loop_answers_quads = true;
+  DocumentFaults faulty(quads);
+  ReferenceImplementation good;
+  Node model;
+  for (const auto& c : cube_commands()) {
+    model.apply(c);
+    ASSERT_TRUE(faulty.apply(c).applied);
+    ASSERT_TRUE(good.apply(c).applied);
+  }
+  EXPECT_FALSE(check_loop(model, good, 1).has_value());
+  const auto f = check_loop(model, faulty, 1);
+  ASSERT_TRUE(f.has_value());
+  EXPECT_EQ(f->clause, "LOOP-TRIANGLE-1");
+  EXPECT_NE(f->message.find("is a quad"), std::string::npos) << f->message;
 }
 
 TEST(Capability, EachPartOfTheEditsCheckHasTeeth) {
