@@ -1,15 +1,17 @@
 // capability_documents.h — the reference's answers to the optional
 // capability requests of the exec protocol: ?capabilities, ?classify,
-// ?subdivide <level>, ?normals (docs/adapters.md "Optional capabilities").
+// ?subdivide <level>, ?normals, ?subdivide-loop <level>, ?subdivide-edit
+// <level> <edit> (docs/adapters.md "Optional capabilities").
 //
 // Spec: 002 (manifold rules; clause MESH-CLASSIFY-1), 000 section 2.6
 // (Catmull/Clark subdivision with creases; clause SUBD-CATMARK-1), 003
-// (split normals; clause NORMALS-SPLIT-1).
+// (split normals; clause NORMALS-SPLIT-1), 004 (Loop triangle tree; clause
+// LOOP-TRIANGLE-1), 001 (hierarchical edits; clause EDIT-HIERARCHY-1).
 //
 // Rationale: one text form for the in-process reference, `vgc serve`, the
 // reference plugin and the seeded faults, computed only with the reference
-// modules (mesh_topology.h, catmull_clark.h, split_normals.h). Standard
-// library only.
+// modules (mesh_topology.h, catmull_clark.h, split_normals.h,
+// loop_subdivision.h, hierarchical_edit.h). Standard library only.
 #pragma once
 
 #include <optional>
