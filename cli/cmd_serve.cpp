@@ -10,7 +10,8 @@
 // out, flushed: a command answers "ok", "rejected <REASON>" or "error line
 // 1, column N: ..." (the TextError of a line that does not parse), and the
 // requests ?hello ?reset ?snapshot ?derived ?quit and the optional
-// ?capabilities ?classify ?subdivide are answered as the
+// capability requests (?capabilities ?classify ?subdivide ?normals ...,
+// capability_document_header) are answered as the
 // protocol says. Exit codes: 0 at ?quit or end of input; 2 when the
 // implementation cannot be opened; 3 when writing the answer fails.
 #include <fmt/core.h>
@@ -20,6 +21,7 @@
 #include <memory>
 #include <string>
 
+#include "capability_documents.h"
 #include "command_text.h"
 #include "implementation.h"
 #include "subcommand.h"
@@ -62,7 +64,7 @@ std::string answer_line(Implementation& impl, const std::string& line) {
     const Document d = line == "?snapshot" ? impl.snapshot() : impl.derived();
     return d.status == CallStatus::Ok ? d.text : failure_line(d.status, d.detail);
   }
-  if (line == "?capabilities" || line == "?classify" || line.rfind("?subdivide", 0) == 0) {
+  if (capability_document_header(line)) {
     const Document d = impl.request(line);
     if (d.status == CallStatus::Ok) return d.text;
     if (d.detail == "not supported") return "error unknown request " + one_line(line) + "\n";

@@ -3,7 +3,8 @@
 // that judge them.
 //
 // Spec: clauses MESH-CLASSIFY-1 ("manifold") and SUBD-CATMARK-1
-// ("subdivision"), group "derived".
+// ("subdivision"), group "derived"; NORMALS-SPLIT-1 ("normals"),
+// LOOP-TRIANGLE-1 ("loop"), EDIT-HIERARCHY-1 ("edits"), each its own group.
 //
 // Rationale: the checks compare with oracles (CGAL, OpenSubdiv), and the
 // conformance layer must not depend on the oracle layer. So the oracle
@@ -13,6 +14,7 @@
 // its properties are skipped ("no oracle linked") and the run is incomplete.
 #pragma once
 
+#include <cstdint>
 #include <functional>
 #include <optional>
 #include <string>
@@ -25,11 +27,17 @@
 namespace vgc {
 
 struct CapabilityCheck {
-  std::string capability;  // "manifold", "subdivision"
+  std::string capability;  // "manifold", "subdivision", "normals", "loop", "edits"
   // Compares the implementation (holding the state of `model`) with the
   // oracle; `variant` picks a sub-case (e.g. the subdivision level) and is
   // chosen by the runner from the case. nullopt when they agree.
   std::function<std::optional<Finding>(const Node& model, Implementation& sut, int variant)> check;
+  // Optional; when set the runner calls it instead of `check`, with `draw`,
+  // a value RapidCheck draws for the case (so it is deterministic from the
+  // seed and shrinks towards 0), for checks that choose more than a variant
+  // (the edit of "edits").
+  std::function<std::optional<Finding>(const Node& model, Implementation& sut, int variant, std::uint32_t draw)>
+      check_drawn;
 };
 
 // Adds or replaces the check for check.capability. Not thread-safe: call

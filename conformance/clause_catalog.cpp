@@ -247,6 +247,48 @@ const std::vector<Clause>& clause_catalog() {
        "edge-only boundaries, the crease-to-sharpness mapping of reference/crease_sharpness.h) as a bijection "
        "within 1e-9 of the coordinate scale, and the vertex and face counts agree. Compared where the polygons "
        "form a polygon mesh (manifold, consistently oriented); vertices in no polygon are left out."},
+      {"NORMALS-SPLIT-1", "normals", MUST, "003 (split vertex normals); optional capability \"normals\"",
+       "\"A sharp edge is either tagged as such, non-manifold (i.e. used by more or less than exactly two faces), "
+       "and/or manifold but used by two faces having opposed normals\"; \"Smooth fan: a set of loops sharing the "
+       "same vertex, and belonging to faces joined by smooth edges only\"; \"Each smooth fan has only one "
+       "automatically-computed loop normal\".",
+       "MUST when claimed (?capabilities names \"normals\"), not claimed otherwise. ?normals gives one normal per "
+       "corner of every live polygon. Checked from spec 003 itself: the corners at either end of a smooth edge "
+       "(two polygons, opposite directions, no corner holding edge crease 0xFFFFFFFF: the tag, 000 2.6.2) have "
+       "one normal, and a corner between two sharp edges has its polygon's unit front normal (Newell, clockwise "
+       "front). No external oracle is linked for the fan normal itself: every corner is compared with "
+       "reference/split_normals.h (angle-weighted sum of the fan's face normals, normalized). All within 1e-9; "
+       "not compared where the reference cannot give the polygons normals or a polygon's vertex has a "
+       "coordinate beyond 1e60 in magnitude (its normal's length overflows a double)."},
+      {"LOOP-TRIANGLE-1", "loop", MUST, "004 (MeshEd triangle tree); optional capability \"loop\"",
+       "\"TTree* children[4]\"; \"We have affectionate names for the children; we call them T0, T1, T2, and "
+       "T3\"; \"Sub-triangles are named according to their nearest vertex, with T0 in the center\"; \"Edges are "
+       "named for their opposite vertex\"; \"Sub-vertices are named for their opposite vertex.\"",
+       "MUST when claimed (?capabilities names \"loop\"), not claimed otherwise. When every live polygon is a "
+       "triangle, the ?subdivide-loop N vertices (N = 1..3) agree with OpenSubdiv's Loop scheme (uniform creasing, "
+       "edge-only boundaries, the crease mapping of reference/crease_sharpness.h) as a bijection within 1e-9 of "
+       "the coordinate scale, with the vertex and face counts; and the face lines are the triangle tree, built "
+       "on OpenSubdiv's levels: children T0..T3 of each parent consecutively, T0 = [s0 s1 s2] the centre, "
+       "T(j+1) = [vj' s(j+2) s(j+1)] nearest vertex j, sk the child of the edge opposite vertex k (the oriented "
+       "order of reference/loop_subdivision.h; the spec's figure is not part of it). Compared where the polygons "
+       "form a polygon mesh. When a live polygon is a quad the answer is one line \"error ...\"."},
+      {"EDIT-HIERARCHY-1", "edits", MUST, "001 (hierarchical edits); optional capability \"edits\"",
+       "\"A hierarchical edit is an edit made to any one of the faces, edges, or vertices that arise anywhere "
+       "during subdivision\"; \"'set' indicates the primitive variable value ... is to be set directly\"; \"'add' "
+       "adds a value to the normal result computed via standard subdivision rules\"; \"The faces will be deleted, "
+       "and none of their children will appear\".",
+       "MUST when claimed (?capabilities names \"edits\"), not claimed otherwise. ?subdivide-edit N <edit> (N = "
+       "1..3; edits hole, set, add on a path of spec 001 with the polygon id as the base face, paths to level 3) "
+       "answers the Catmull-Clark refinement with the edit, its face lines the faces that are not holes. Each "
+       "case draws one edit. Checked against OpenSubdiv Catmark: a hole at level 0 against OpenSubdiv's holes "
+       "(vertices, kept faces); a deeper hole moves nothing and removes exactly its 4^(N - k) descendants, the "
+       "rest OpenSubdiv's faces; add 0 changes nothing; the level above an edit at level k >= 2 is the plain "
+       "refinement; at the edit's own level exactly one vertex moves and set puts it at the value (where coordinates are "
+       "at most 1e6, so that the tolerance is far below the move). OpenSubdiv 3 "
+       "has no hierarchical edits, so where the edit moves vertices (set, add at levels above N) the vertices "
+       "are compared with reference/hierarchical_edit.h only (its decisions: an edit applies after its level is "
+       "computed, before the next). Vertices as a bijection within 1e-9 of the coordinate scale; compared where "
+       "the polygons form a polygon mesh."},
   };
   return catalog;
 }

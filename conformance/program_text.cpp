@@ -34,7 +34,9 @@ void set_error(TextError* error, std::size_t line, std::size_t column, std::stri
 }  // namespace
 
 std::string print_capability_directive(const CapabilityRequest& request) {
-  return "#! capability " + request.capability + " variant " + std::to_string(request.variant) + "\n";
+  std::string out = "#! capability " + request.capability + " variant " + std::to_string(request.variant);
+  if (request.draw) out += " draw " + std::to_string(*request.draw);
+  return out + "\n";
 }
 
 std::string print_program(const Program& program) {
@@ -102,11 +104,31 @@ bool parse_program(std::string_view text, Program* out, TextError* error, std::v
       set_error(error, line_number, t[3].second, "expected the variant number (1 to 9 digits), found \"" + n + "\"");
       return false;
     }
-    if (t.size() > 4) {
-      set_error(error, line_number, t[4].second, "unexpected \"" + t[4].first + "\" after the variant number");
+    std::optional<std::uint32_t> draw;
+    std::size_t next = 4;
+    if (t.size() > next && t[next].first == "draw") {
+      if (t.size() < next + 2) {
+        set_error(error, line_number, end_column, "expected the drawn number after \"draw\"");
+        return false;
+      }
+      const std::string& d = t[next + 1].first;
+      bool ok = !d.empty() && d.size() <= 10;
+      for (char c : d) ok = ok && c >= '0' && c <= '9';
+      if (ok && std::stoull(d) > 0xFFFFFFFFull) ok = false;
+      if (!ok) {
+        set_error(error, line_number, t[next + 1].second,
+                  "expected the drawn number (0 to 4294967295), found \"" + d + "\"");
+        return false;
+      }
+      draw = static_cast<std::uint32_t>(std::stoull(d));
+      next += 2;
+    }
+    if (t.size() > next) {
+      set_error(error, line_number, t[next].second,
+                "unexpected \"" + t[next].first + "\" after the " + (next == 4 ? "variant" : "drawn") + " number");
       return false;
     }
-    out->request = CapabilityRequest{t[1].first, std::stoi(n)};
+    out->request = CapabilityRequest{t[1].first, std::stoi(n), draw};
     found = line_number;
   }
   if (directive_line) *directive_line = found;

@@ -6,6 +6,7 @@
 //   vertex_set_xyz_real64 0 0 0 0 0
 //   ...
 //   #! capability subdivision variant 2
+//   #! capability edits variant 3 draw 2718281828   (a check_drawn check)
 //
 // Spec: docs/certify.md "Replaying a failure", docs/commands.md 1
 // (comments); capabilities as in docs/adapters.md section 5.
@@ -29,7 +30,7 @@
 
 namespace vgc {
 
-// "#! capability <name> variant <n>\n" for `request`.
+// "#! capability <name> variant <n>[ draw <d>]\n" for `request`.
 std::string print_capability_directive(const CapabilityRequest& request);
 
 // program.commands one per line (print_commands), then the directive when
@@ -38,8 +39,10 @@ std::string print_program(const Program& program);
 
 // Parses a command file with an optional capability directive. A line that
 // starts with "#!" followed by the word "capability" (blanks between
-// allowed) is a directive; it must read "#! capability NAME variant N"
-// (NAME: letters, digits, '-' and '_'; N: 1 to 9 decimal digits), come after
+// allowed) is a directive; it must read "#! capability NAME variant N",
+// optionally followed by "draw D" (NAME: letters, digits, '-' and '_';
+// N: 1 to 9 decimal digits; D: 0 to 4294967295, the value a check_drawn
+// check drew for the case), come after
 // the last command and appear at most once. Any other comment, "#!" ones
 // included, is an ordinary comment. On an error returns false with *error
 // naming line and column (as parse_commands); `lines`, when given, receives

@@ -32,6 +32,12 @@ const std::vector<PropertySpec>& property_catalog() {
        Focus::Polygons, {"MESH-CLASSIFY-1"}, "manifold"},
       {"derived.subdivision", "optional capability: ?subdivide agrees with OpenSubdiv Catmark, creases included",
        Focus::Creases, {"SUBD-CATMARK-1"}, "subdivision"},
+      {"derived.normals", "optional capability: ?normals gives spec 003 split normals, sharp edges from max creases",
+       Focus::Creases, {"NORMALS-SPLIT-1"}, "normals"},
+      {"derived.loop", "optional capability: ?subdivide-loop agrees with OpenSubdiv Loop; the spec 004 triangle tree",
+       Focus::Creases, {"LOOP-TRIANGLE-1"}, "loop"},
+      {"derived.edits", "optional capability: ?subdivide-edit applies a spec 001 hierarchical edit (drawn per case)",
+       Focus::Creases, {"EDIT-HIERARCHY-1"}, "edits"},
   };
   return catalog;
 }

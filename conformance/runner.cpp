@@ -117,10 +117,13 @@ class ProgressListener final : public rc::detail::TestListener {
   Clock::time_point start_;
 };
 
-// The start of every capability case: a 3 x 2 grid of quads on a curved
-// height field (12 vertices, 6 polygons, one boundary loop).
-const std::vector<vgc::Command>& capability_start_commands() {
-  static const std::vector<vgc::Command> commands = [] {
+// The start of a capability case: a 3 x 2 grid of quads on a curved height
+// field (12 vertices, 6 polygons, one boundary loop); for "loop", which
+// takes triangles only, the same grid with each quad split in two along
+// alternating diagonals (12 triangles; the inner vertices have valence 8
+// and 4, where Loop's weights differ from other schemes', not 6).
+const std::vector<vgc::Command>& capability_start_commands(std::string_view capability) {
+  static const auto build = [](bool triangles) {
     std::string text;
     for (int j = 0; j < 3; ++j)
       for (int i = 0; i < 4; ++i)
@@ -130,15 +133,28 @@ const std::vector<vgc::Command>& capability_start_commands() {
     for (int j = 0; j < 2; ++j)
       for (int i = 0; i < 3; ++i) {
         const int a = j * 4 + i;
-        text += "polygon_set_corner_uint32 1 " + std::to_string(p++) + " " + std::to_string(a) + " " +
-                std::to_string(a + 4) + " " + std::to_string(a + 5) + " " + std::to_string(a + 1) + "\n";
+        const std::string q[4] = {std::to_string(a), std::to_string(a + 4), std::to_string(a + 5),
+                                  std::to_string(a + 1)};
+        if (triangles) {
+          const int d = (i + j) % 2;  // checkerboard diagonals: inner vertices of valence 8 and 4
+          auto tri = [&](int x, int y, int z) {
+            text += "polygon_set_corner_uint32 1 " + std::to_string(p++) + " " + q[x] + " " + q[y] + " " + q[z] +
+                    " 4294967295\n";
+          };
+          if (d == 0) tri(0, 1, 2), tri(0, 2, 3);
+          else tri(0, 1, 3), tri(1, 2, 3);
+        } else {
+          text += "polygon_set_corner_uint32 1 " + std::to_string(p++) + " " + q[0] + " " + q[1] + " " + q[2] + " " +
+                  q[3] + "\n";
+        }
       }
     std::vector<vgc::Command> out;
     TextError error;
     parse_commands(text, &out, &error);
     return out;
-  }();
-  return commands;
+  };
+  static const std::vector<vgc::Command> quads = build(false), triangles = build(true);
+  return capability == "loop" ? triangles : quads;
 }
 
 // A fresh node must look like the reference's fresh node.
@@ -173,7 +189,8 @@ PropertyOutcome run_property(const PropertySpec& spec, Implementation& sut, cons
   const Focus focus = spec.focus;
   const CapabilityCheck* capability =
       spec.capability.empty() ? nullptr : find_capability_check(std::string(spec.capability));
-  auto property = [focus, capability] {
+  const std::string_view capability_name = spec.capability;
+  auto property = [focus, capability, capability_name] {
     CaseContext& c = *g_context;
     if (c.stop || c.deadline_hit || past_deadline()) return;
     c.trace.clear();
@@ -186,7 +203,7 @@ PropertyOutcome run_property(const PropertySpec& spec, Implementation& sut, cons
     // random commands edit a mesh rather than mostly build nothing.
     Node start;
     if (capability) {
-      for (const auto& cmd : capability_start_commands()) {
+      for (const auto& cmd : capability_start_commands(capability_name)) {
         c.trace.push_back(cmd);
         Node after;
         StepResult r = check_step(start, cmd, *c.sut, &after);
@@ -205,11 +222,19 @@ PropertyOutcome run_property(const PropertySpec& spec, Implementation& sut, cons
     });
     rc::state::runAll(commands, start, *c.sut);
     // An optional capability: judged on the final state, the variant
-    // (subdivision level) chosen by the case.
+    // (subdivision level) chosen by the case; a check that needs more
+    // (check_drawn) gets a value drawn for the case.
     if (capability && !c.stop && !c.abandoned && !c.deadline_hit && !past_deadline()) {
       const int variant = static_cast<int>(c.trace.size() % 3) + 1;
-      if (auto f = capability->check(c.model, *c.sut, variant))
-        fail_case(*f, CapabilityRequest{capability->capability, variant});
+      CapabilityRequest request{capability->capability, variant, std::nullopt};
+      std::optional<Finding> f;
+      if (capability->check_drawn) {
+        request.draw = *rc::gen::arbitrary<std::uint32_t>();
+        f = capability->check_drawn(c.model, *c.sut, variant, *request.draw);
+      } else {
+        f = capability->check(c.model, *c.sut, variant);
+      }
+      if (f) fail_case(*f, request);
     }
   };
 
@@ -467,7 +492,10 @@ ReplayResult replay_program(const Program& program, Implementation& sut) {
                    " cannot be judged)";
     return r;
   }
-  if (auto f = check->check(model, sut, q.variant)) {
+  std::optional<Finding> f;
+  if (check->check_drawn) f = check->check_drawn(model, sut, q.variant, q.draw.value_or(0));
+  else f = check->check(model, sut, q.variant);
+  if (f) {
     r.failure = f;
     r.failed_at = static_cast<int>(program.commands.size());
   }

@@ -47,10 +47,13 @@ struct RunOptions {
 
 // A check of an optional capability (capability.h) to repeat after a
 // program's commands: the registered check for `capability`, with the
-// variant the case chose (1..3, e.g. the subdivision level).
+// variant the case chose (1..3, e.g. the subdivision level) and, for a
+// check that draws more (CapabilityCheck::check_drawn, e.g. the edit of
+// "edits"), the value drawn (absent: 0).
 struct CapabilityRequest {
   std::string capability;  // "manifold", "subdivision", ... (a registry name)
   int variant = 1;
+  std::optional<std::uint32_t> draw;
 };
 
 struct Program {

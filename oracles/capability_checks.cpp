@@ -6,16 +6,19 @@
 #include <cmath>
 #include <cstdlib>
 #include <map>
+#include <set>
 #include <sstream>
 #include <string>
 #include <vector>
 
 #include "cgal_manifold.h"
 #include "crease_sharpness.h"
+#include "hierarchical_edit.h"
 #include "mesh_arrays.h"
 #include "mesh_topology.h"
 #include "number_text.h"
 #include "osd_subdivision.h"
+#include "split_normals.h"
 
 namespace vgc {
 namespace {
@@ -60,6 +63,110 @@ std::string point_text(const std::array<double, 3>& p) {
   return "(" + format_f64(p[0]) + ", " + format_f64(p[1]) + ", " + format_f64(p[2]) + ")";
 }
 
+// A ?subdivide-like document: "level", "vertex x y z" lines, optional
+// "face i j k ..." lines (indices into the vertex lines), "faces <count>".
+struct SubdivisionAnswer {
+  long level = -1, faces = -1;
+  std::vector<std::array<double, 3>> vertices;
+  std::vector<std::vector<int>> face_lines;
+};
+
+// Reads `text`; the problem as a message, or nullopt.
+std::optional<std::string> read_subdivision(const std::string& text, SubdivisionAnswer* out) {
+  for (const auto& [k, v] : document_lines(text)) {
+    std::istringstream in(v);
+    if (k == "vertex") {
+      std::string x, y, z;
+      std::array<double, 3> p{};
+      if (!(in >> x >> y >> z) || !parse_f64(x, &p[0]) || !parse_f64(y, &p[1]) || !parse_f64(z, &p[2]))
+        return "unreadable line \"vertex " + v + "\"";
+      out->vertices.push_back(p);
+    } else if (k == "face") {
+      std::vector<int> f;
+      std::string w;
+      while (in >> w) {
+        std::uint32_t i = 0;
+        if (!parse_uint(w, 32, &i) || i > 0x7FFFFFFFu) return "unreadable line \"face " + v + "\"";
+        f.push_back(static_cast<int>(i));
+      }
+      out->face_lines.push_back(std::move(f));
+    } else if (k == "faces") {
+      out->faces = std::strtol(v.c_str(), nullptr, 10);
+    } else if (k == "level") {
+      out->level = std::strtol(v.c_str(), nullptr, 10);
+    }
+  }
+  for (const auto& f : out->face_lines)
+    for (int i : f)
+      if (static_cast<std::size_t>(i) >= out->vertices.size())
+        return "a face line names vertex " + std::to_string(i) + " of " + std::to_string(out->vertices.size());
+  return std::nullopt;
+}
+
+// Pairs every `want` vertex with the nearest unused `got` vertex within
+// `tol` (max norm); got_to_want[g] is the partner of got[g] or -1. The
+// first want vertex left without a partner, or nullopt when all have one;
+// with `all_unmatched`, goes on and lists every want vertex left without.
+std::optional<std::size_t> match_vertices(const std::vector<std::array<double, 3>>& got,
+                                          const std::vector<std::array<double, 3>>& want, double tol,
+                                          std::vector<int>* got_to_want,
+                                          std::vector<std::size_t>* all_unmatched = nullptr) {
+  // Both sides by x: each want vertex takes the nearest unused answer within the tolerance.
+  std::vector<std::size_t> order(got.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return got[a][0] < got[b][0]; });
+  std::vector<double> xs(order.size());
+  for (std::size_t i = 0; i < order.size(); ++i) xs[i] = got[order[i]][0];
+  got_to_want->assign(got.size(), -1);
+  for (std::size_t w = 0; w < want.size(); ++w) {
+    const auto& p = want[w];
+    auto lo = std::lower_bound(xs.begin(), xs.end(), p[0] - tol);
+    std::size_t best = got.size();
+    double best_d = tol;
+    for (auto it = lo; it != xs.end() && *it <= p[0] + tol; ++it) {
+      const std::size_t g = order[static_cast<std::size_t>(it - xs.begin())];
+      if ((*got_to_want)[g] >= 0) continue;
+      const double dist = std::max({std::fabs(got[g][0] - p[0]), std::fabs(got[g][1] - p[1]), std::fabs(got[g][2] - p[2])});
+      if (dist <= best_d) best = g, best_d = dist;
+    }
+    if (best == got.size()) {
+      if (!all_unmatched) return w;
+      all_unmatched->push_back(w);
+      continue;
+    }
+    (*got_to_want)[best] = static_cast<int>(w);
+  }
+  if (all_unmatched && !all_unmatched->empty()) return all_unmatched->front();
+  return std::nullopt;
+}
+
+bool near(const std::array<double, 3>& a, const std::array<double, 3>& b, double tol) {
+  return std::max({std::fabs(a[0] - b[0]), std::fabs(a[1] - b[1]), std::fabs(a[2] - b[2])}) <= tol;
+}
+
+// 1e-9 times the largest coordinate magnitude of `positions` (at least 1).
+double tolerance_of(const std::vector<std::array<double, 3>>& positions) {
+  double scale = 1;
+  for (const auto& p : positions)
+    for (double c : p) scale = std::max(scale, std::fabs(c));
+  return 1e-9 * scale;
+}
+
+// Compares an answer's vertices and face count with a refined level: the
+// counts, then the vertices as a bijection. The message, or nullopt.
+std::optional<std::string> compare_with_level(const SubdivisionAnswer& got, const std::vector<std::array<double, 3>>& want,
+                                              long want_faces, const std::string& oracle, std::vector<int>* got_to_want) {
+  if (got.faces != want_faces)
+    return std::to_string(got.faces) + " faces; " + oracle + " refines to " + std::to_string(want_faces);
+  if (got.vertices.size() != want.size())
+    return std::to_string(got.vertices.size()) + " vertices; " + oracle + " refines to " + std::to_string(want.size());
+  const double tol = tolerance_of(want);
+  if (auto w = match_vertices(got.vertices, want, tol, got_to_want))
+    return oracle + " has a vertex at " + point_text(want[*w]) + " and the answer has none within " + format_f64(tol) +
+           " (not already matched)";
+  return std::nullopt;
+}
+
 }  // namespace
 
 std::optional<Finding> check_classify(const Node& model, Implementation& sut) {
@@ -97,30 +204,15 @@ std::optional<Finding> check_subdivision(const Node& model, Implementation& sut,
   const std::string request = "?subdivide " + std::to_string(level);
   const Document d = sut.request(request);
   if (auto f = check_answer(kClause, request, d, "vgc-subdivision")) return f;
-
-  std::vector<std::array<double, 3>> got;
-  long faces = -1, got_level = -1;
-  for (const auto& [k, v] : document_lines(d.text)) {
-    if (k == "vertex") {
-      std::istringstream in(v);
-      std::string x, y, z;
-      std::array<double, 3> p{};
-      if (!(in >> x >> y >> z) || !parse_f64(x, &p[0]) || !parse_f64(y, &p[1]) || !parse_f64(z, &p[2]))
-        return finding(kClause, request + ": unreadable line \"vertex " + v + "\"");
-      got.push_back(p);
-    } else if (k == "faces") {
-      faces = std::strtol(v.c_str(), nullptr, 10);
-    } else if (k == "level") {
-      got_level = std::strtol(v.c_str(), nullptr, 10);
-    }
-  }
-  if (got_level != level) return finding(kClause, request + ": the document says level " + std::to_string(got_level));
+  SubdivisionAnswer got;
+  if (auto problem = read_subdivision(d.text, &got)) return finding(kClause, request + ": " + *problem);
+  if (got.level != level) return finding(kClause, request + ": the document says level " + std::to_string(got.level));
 
   const MeshArrays mesh = remove_unused_vertices(extract_mesh(model));
   if (mesh.face_count() == 0) {
-    if (!got.empty() || faces != 0)
-      return finding(kClause, request + ": no polygons, yet " + std::to_string(got.size()) + " vertices and " +
-                                  std::to_string(faces) + " faces");
+    if (!got.vertices.empty() || got.faces != 0)
+      return finding(kClause, request + ": no polygons, yet " + std::to_string(got.vertices.size()) + " vertices and " +
+                                  std::to_string(got.faces) + " faces");
     return std::nullopt;
   }
   const MeshTopology topo = classify_mesh(mesh);
@@ -128,48 +220,439 @@ std::optional<Finding> check_subdivision(const Node& model, Implementation& sut,
   const OsdResult osd = osd_refine_uniform(osd_input_from_mesh(mesh, OsdScheme::CatmullClark, level));
   if (!osd.ok || osd.levels.size() != static_cast<std::size_t>(level) + 1) return std::nullopt;
   const OsdLevel& want = osd.levels.back();
+  std::vector<int> got_to_want;
+  if (auto problem = compare_with_level(got, want.positions, static_cast<long>(want.face_sizes.size()), "OpenSubdiv",
+                                        &got_to_want))
+    return finding(kClause, request + ": " + *problem);
+  return std::nullopt;
+}
 
-  if (faces != static_cast<long>(want.face_sizes.size()))
-    return finding(kClause, request + ": " + std::to_string(faces) + " faces; OpenSubdiv refines to " +
-                                std::to_string(want.face_sizes.size()));
-  if (got.size() != want.positions.size())
-    return finding(kClause, request + ": " + std::to_string(got.size()) + " vertices; OpenSubdiv refines to " +
-                                std::to_string(want.positions.size()));
-  double scale = 1;
-  for (const auto& p : want.positions)
-    for (double c : p) scale = std::max(scale, std::fabs(c));
-  const double tol = 1e-9 * scale;
-  // Bijection by nearest position: both sides sorted by x, each expected
-  // vertex takes the nearest unused answer within the tolerance.
-  std::vector<std::size_t> order(got.size());
-  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return got[a][0] < got[b][0]; });
-  std::vector<double> xs(order.size());
-  for (std::size_t i = 0; i < order.size(); ++i) xs[i] = got[order[i]][0];
-  std::vector<char> used(got.size(), 0);
-  for (const auto& p : want.positions) {
-    auto lo = std::lower_bound(xs.begin(), xs.end(), p[0] - tol);
-    std::size_t best = got.size();
-    double best_d = tol;
-    for (auto it = lo; it != xs.end() && *it <= p[0] + tol; ++it) {
-      const std::size_t g = order[static_cast<std::size_t>(it - xs.begin())];
-      if (used[g]) continue;
-      const double dist = std::max({std::fabs(got[g][0] - p[0]), std::fabs(got[g][1] - p[1]), std::fabs(got[g][2] - p[2])});
-      if (dist <= best_d) best = g, best_d = dist;
+std::optional<Finding> check_normals(const Node& model, Implementation& sut) {
+  static const char* kClause = "NORMALS-SPLIT-1";
+  const MeshArrays mesh = extract_mesh(model);
+  const SplitNormals ref = compute_split_normals(mesh);
+  if (ref.status != MeshStatus::Ok) return std::nullopt;  // no reading of spec 003 for such polygons
+  // Products of coordinates beyond 1e60 overflow the normal's length in
+  // doubles; the spec says nothing of such meshes: not compared.
+  for (int v : mesh.face_vertices)
+    for (double c : mesh.positions[static_cast<std::size_t>(v)])
+      if (!(std::fabs(c) <= 1e60)) return std::nullopt;
+  const std::string request = "?normals";
+  const Document d = sut.request(request);
+  if (auto f = check_answer(kClause, request, d, "vgc-normals")) return f;
+
+  // The answer, per corner of the mesh (face_offsets order).
+  std::map<std::uint32_t, int> face_of_id;
+  for (int f = 0; f < mesh.face_count(); ++f) face_of_id[mesh.polygon_ids[static_cast<std::size_t>(f)]] = f;
+  const std::size_t corners = mesh.face_vertices.size();
+  std::vector<std::array<double, 3>> got(corners);
+  std::vector<char> seen(corners, 0);
+  for (const auto& [k, v] : document_lines(d.text)) {
+    std::istringstream in(v);
+    std::string id_text, corner_text, x, y, z;
+    std::uint32_t id = 0, corner = 0;
+    std::array<double, 3> n{};
+    if (k != "corner" || !(in >> id_text >> corner_text >> x >> y >> z) || !parse_uint(id_text, 32, &id) ||
+        !parse_uint(corner_text, 32, &corner) || !parse_f64(x, &n[0]) || !parse_f64(y, &n[1]) || !parse_f64(z, &n[2]))
+      return finding(kClause, request + ": unreadable line \"" + k + " " + v + "\"");
+    auto it = face_of_id.find(id);
+    if (it == face_of_id.end() || static_cast<int>(corner) >= mesh.face_sizes[static_cast<std::size_t>(it->second)])
+      return finding(kClause, request + ": \"corner " + v + "\" names no corner of a live polygon");
+    const auto c = static_cast<std::size_t>(mesh.face_offsets[static_cast<std::size_t>(it->second)]) + corner;
+    if (seen[c]) return finding(kClause, request + ": corner " + id_text + " " + corner_text + " is given twice");
+    seen[c] = 1;
+    got[c] = n;
+  }
+  std::vector<int> corner_face(corners), corner_index(corners);
+  for (int f = 0; f < mesh.face_count(); ++f)
+    for (int k = 0; k < mesh.face_sizes[static_cast<std::size_t>(f)]; ++k) {
+      const auto c = static_cast<std::size_t>(mesh.face_offsets[static_cast<std::size_t>(f)] + k);
+      corner_face[c] = f, corner_index[c] = k;
     }
-    if (best == got.size())
-      return finding(kClause, request + ": OpenSubdiv has a vertex at " + point_text(p) +
-                                  " and the answer has none within " + format_f64(tol) + " (not already matched)");
-    used[best] = 1;
+  auto name = [&](std::size_t c) {
+    return "corner " + std::to_string(corner_index[c]) + " of polygon " +
+           std::to_string(mesh.polygon_ids[static_cast<std::size_t>(corner_face[c])]);
+  };
+  for (std::size_t c = 0; c < corners; ++c)
+    if (!seen[c]) return finding(kClause, request + ": no line for " + name(c));
+  const double tol = 1e-9;
+  auto differ = [&](const std::array<double, 3>& a, const std::array<double, 3>& b) {
+    return std::max({std::fabs(a[0] - b[0]), std::fabs(a[1] - b[1]), std::fabs(a[2] - b[2])}) > tol;
+  };
+  auto corner_at = [&](std::size_t c, int step) {
+    const auto f = static_cast<std::size_t>(corner_face[c]);
+    const int n = mesh.face_sizes[f];
+    return static_cast<std::size_t>(mesh.face_offsets[f] + (corner_index[c] + step + n) % n);
+  };
+  // The edges, as spec 003 defines sharpness: tagged (a corner crease
+  // 0xFFFFFFFF on either side), not used by exactly two faces, or used by
+  // two faces in the same direction. Corner c carries the edge c -> next.
+  std::map<std::pair<int, int>, std::vector<std::size_t>> uses;
+  auto edge_key = [&](std::size_t c) {
+    const int a = mesh.face_vertices[c], b = mesh.face_vertices[corner_at(c, 1)];
+    return std::make_pair(std::min(a, b), std::max(a, b));
+  };
+  for (std::size_t c = 0; c < corners; ++c) uses[edge_key(c)].push_back(c);
+  auto sharp = [&](std::size_t c) {
+    const auto& u = uses[edge_key(c)];
+    if (u.size() != 2 || mesh.face_vertices[u[0]] == mesh.face_vertices[u[1]]) return true;
+    for (std::size_t x : u)
+      if (x < mesh.corner_edge_creases.size() && mesh.corner_edge_creases[x] == 0xFFFFFFFFu) return true;
+    return false;
+  };
+  // (a) Across a smooth edge a -> b (corner c) / b -> a (corner o), the
+  // corners at a (c and next(o)) and at b (next(c) and o) share a fan.
+  for (std::size_t c = 0; c < corners; ++c) {
+    if (sharp(c)) continue;
+    const auto& u = uses[edge_key(c)];
+    const std::size_t o = u[0] == c ? u[1] : u[0];
+    for (const auto& [p, q] : {std::make_pair(c, corner_at(o, 1)), std::make_pair(corner_at(c, 1), o)})
+      if (differ(got[p], got[q]))
+        return finding(kClause, request + ": " + name(p) + " has normal " + point_text(got[p]) + " and " + name(q) +
+                                    " has " + point_text(got[q]) + "; they are one smooth fan (joined by a smooth "
+                                    "edge of polygon " + std::to_string(mesh.polygon_ids[static_cast<std::size_t>(corner_face[c])]) +
+                                    ") and spec 003 gives a smooth fan one normal");
+  }
+  // (b) A corner between two sharp edges is a fan of its own: its normal is
+  // its polygon's front normal (clockwise front: minus Newell's area vector).
+  for (std::size_t c = 0; c < corners; ++c) {
+    if (!sharp(c) || !sharp(corner_at(c, -1))) continue;
+    std::array<double, 3> area{0, 0, 0};
+    for (int k = 0; k < mesh.face_sizes[static_cast<std::size_t>(corner_face[c])]; ++k) {
+      const std::size_t here = corner_at(c, k);
+      const auto& p = mesh.positions[static_cast<std::size_t>(mesh.face_vertices[here])];
+      const auto& q = mesh.positions[static_cast<std::size_t>(mesh.face_vertices[corner_at(here, 1)])];
+      area[0] -= p[1] * q[2] - p[2] * q[1];
+      area[1] -= p[2] * q[0] - p[0] * q[2];
+      area[2] -= p[0] * q[1] - p[1] * q[0];
+    }
+    const double len = std::sqrt(area[0] * area[0] + area[1] * area[1] + area[2] * area[2]);
+    if (!(len > 1e-12)) continue;  // degenerate polygon: no face normal to compare with
+    for (double& x : area) x /= len;
+    if (differ(got[c], area))
+      return finding(kClause, request + ": " + name(c) + " lies between two sharp edges, so its normal is its "
+                                  "polygon's front normal " + point_text(area) + "; the answer says " +
+                                  point_text(got[c]));
+  }
+  // Then every corner against the reference's reading (angle-weighted fans).
+  for (std::size_t c = 0; c < corners; ++c)
+    if (differ(got[c], ref.corner_normals[c]))
+      return finding(kClause, request + ": " + name(c) + " has normal " + point_text(got[c]) +
+                                  "; the reference's split normal (angle-weighted over its smooth fan) is " +
+                                  point_text(ref.corner_normals[c]));
+  return std::nullopt;
+}
+
+std::optional<Finding> check_loop(const Node& model, Implementation& sut, int level) {
+  static const char* kClause = "LOOP-TRIANGLE-1";
+  const std::string request = "?subdivide-loop " + std::to_string(level);
+  const MeshArrays mesh = remove_unused_vertices(extract_mesh(model));
+  const Document d = sut.request(request);
+  bool triangles = true;
+  for (int size : mesh.face_sizes) triangles = triangles && size == 3;
+  if (!triangles) {
+    // Loop subdivides triangles only (OpenSubdiv's SCHEME_LOOP refuses other faces).
+    if (d.status == CallStatus::Ok && (d.text == "error\n" || d.text.rfind("error ", 0) == 0)) return std::nullopt;
+    if (auto f = check_answer(kClause, request, d, "vgc-subdivision")) return f;
+    return finding(kClause, request + ": answered a document although a live polygon is a quad; the answer must be "
+                                "one line \"error ...\"");
+  }
+  if (auto f = check_answer(kClause, request, d, "vgc-subdivision")) return f;
+  SubdivisionAnswer got;
+  if (auto problem = read_subdivision(d.text, &got)) return finding(kClause, request + ": " + *problem);
+  if (got.level != level) return finding(kClause, request + ": the document says level " + std::to_string(got.level));
+  if (mesh.face_count() == 0) {
+    if (!got.vertices.empty() || got.faces != 0 || !got.face_lines.empty())
+      return finding(kClause, request + ": no polygons, yet " + std::to_string(got.vertices.size()) + " vertices and " +
+                                  std::to_string(got.faces) + " faces");
+    return std::nullopt;
+  }
+  const MeshTopology topo = classify_mesh(mesh);
+  if (topo.status != MeshStatus::Ok || !topo.is_polygon_mesh) return std::nullopt;  // not compared (clause reading)
+  const OsdResult osd = osd_refine_uniform(osd_input_from_mesh(mesh, OsdScheme::Loop, level));
+  if (!osd.ok || osd.levels.size() != static_cast<std::size_t>(level) + 1) return std::nullopt;
+  std::vector<int> got_to_want;
+  if (auto problem = compare_with_level(got, osd.levels.back().positions,
+                                        static_cast<long>(osd.levels.back().face_sizes.size()), "OpenSubdiv Loop",
+                                        &got_to_want))
+    return finding(kClause, request + ": " + *problem);
+
+  // The triangle tree (spec 004), built on OpenSubdiv's levels: base
+  // triangles in order; the children of [v0 v1 v2] are T0 = [s0 s1 s2] (the
+  // centre) and T(j+1) = [vj' s(j+2) s(j+1)] (nearest vertex j), sk the
+  // child of the edge opposite vertex k, vj' the child of vertex j. Each
+  // must be one of OpenSubdiv's child faces of the parent, same orientation.
+  struct Tri {
+    int face;
+    std::array<int, 3> v;
+  };
+  std::vector<Tri> tree;
+  const OsdLevel& base = osd.levels.front();
+  for (int f = 0; f < static_cast<int>(base.face_sizes.size()); ++f)
+    tree.push_back({f, {base.face_vertices[3 * f], base.face_vertices[3 * f + 1], base.face_vertices[3 * f + 2]}});
+  for (int l = 1; l <= level; ++l) {
+    const OsdLevel& parent = osd.levels[static_cast<std::size_t>(l - 1)];
+    const OsdLevel& child = osd.levels[static_cast<std::size_t>(l)];
+    std::map<std::pair<int, int>, int> edge_of;
+    for (std::size_t e = 0; e < parent.edges.size(); ++e)
+      edge_of[{std::min(parent.edges[e][0], parent.edges[e][1]), std::max(parent.edges[e][0], parent.edges[e][1])}] =
+          static_cast<int>(e);
+    std::vector<Tri> next;
+    for (const Tri& t : tree) {
+      std::array<int, 3> s{}, vc{};
+      for (int k = 0; k < 3; ++k) {
+        const int a = t.v[static_cast<std::size_t>((k + 1) % 3)], b = t.v[static_cast<std::size_t>((k + 2) % 3)];
+        auto it = edge_of.find({std::min(a, b), std::max(a, b)});
+        if (it == edge_of.end()) return std::nullopt;  // OpenSubdiv's level is not what the tree assumes
+        s[static_cast<std::size_t>(k)] = child.child_of_parent_edge[static_cast<std::size_t>(it->second)];
+        vc[static_cast<std::size_t>(k)] = child.child_of_parent_vertex[static_cast<std::size_t>(t.v[static_cast<std::size_t>(k)])];
+      }
+      const std::array<std::array<int, 3>, 4> kids = {{{s[0], s[1], s[2]},
+                                                       {vc[0], s[2], s[1]},
+                                                       {vc[1], s[0], s[2]},
+                                                       {vc[2], s[1], s[0]}}};
+      for (const auto& kid : kids) {
+        int found = -1;
+        for (int cf : child.child_faces_of_parent_face[static_cast<std::size_t>(t.face)])
+          for (int r = 0; r < 3; ++r) {
+            bool same = true;
+            for (int k = 0; k < 3; ++k)
+              same = same && child.face_vertices[static_cast<std::size_t>(3 * cf + (k + r) % 3)] == kid[static_cast<std::size_t>(k)];
+            if (same) found = cf;
+          }
+        if (found < 0) return std::nullopt;  // OpenSubdiv's children are not what the tree assumes
+        next.push_back({found, kid});
+      }
+    }
+    tree = std::move(next);
+  }
+  if (got.face_lines.size() != tree.size())
+    return finding(kClause, request + ": " + std::to_string(got.face_lines.size()) + " face lines; the triangle tree "
+                                "has " + std::to_string(tree.size()) + " triangles at level " + std::to_string(level));
+  static const char* kChild[] = {"T0 (the centre)", "T1 (nearest vertex 0)", "T2 (nearest vertex 1)",
+                                 "T3 (nearest vertex 2)"};
+  for (std::size_t i = 0; i < tree.size(); ++i) {
+    const auto& line = got.face_lines[i];
+    // By position (the vertices already matched one to one): coinciding
+    // vertices make any pairing by index arbitrary.
+    const double tol = tolerance_of(osd.levels.back().positions);
+    bool same = line.size() == 3;
+    for (std::size_t k = 0; same && k < 3; ++k)
+      same = near(got.vertices[static_cast<std::size_t>(line[k])],
+                  osd.levels.back().positions[static_cast<std::size_t>(tree[i].v[k])], tol);
+    if (!same) {
+      std::string have, want;
+      for (int x : line) have += " " + point_text(got.vertices[static_cast<std::size_t>(x)]);
+      for (int x : tree[i].v) want += " " + point_text(osd.levels.back().positions[static_cast<std::size_t>(x)]);
+      return finding(kClause, request + ": face line " + std::to_string(i) + " should be child " + kChild[i % 4] +
+                                  " of its parent, in the order [vj' s(j+2) s(j+1)] / [s0 s1 s2]:" + want +
+                                  "; the answer has" + have);
+    }
   }
   return std::nullopt;
 }
 
+std::optional<Finding> check_edits(const Node& model, Implementation& sut, int level, std::uint32_t draw) {
+  static const char* kClause = "EDIT-HIERARCHY-1";
+  const MeshArrays mesh = remove_unused_vertices(extract_mesh(model));
+  if (mesh.face_count() == 0) return std::nullopt;  // no face for an edit to name
+  const MeshTopology topo = classify_mesh(mesh);
+  if (topo.status != MeshStatus::Ok || !topo.is_polygon_mesh) return std::nullopt;  // not compared (clause reading)
+  const OsdResult osd = osd_refine_uniform(osd_input_from_mesh(mesh, OsdScheme::CatmullClark, level));
+  if (!osd.ok || osd.levels.size() != static_cast<std::size_t>(level) + 1) return std::nullopt;
+
+  // The edit, from the drawn value (splitmix64, so every bit counts).
+  std::uint64_t r = draw + 0x9E3779B97F4A7C15ull;
+  r = (r ^ (r >> 30)) * 0xBF58476D1CE4E5B9ull;
+  r = (r ^ (r >> 27)) * 0x94D049BB133111EBull;
+  r ^= r >> 31;
+  auto take = [&r](std::uint64_t n) {
+    const std::uint64_t v = r % n;
+    r /= n;
+    return static_cast<int>(v);
+  };
+  enum { kHole, kSet, kAddZero, kAdd };
+  const int kind = take(4);
+  const int edit_level = take(static_cast<std::uint64_t>(level) + 1);
+  HierarchicalEdit e;
+  e.face.base_face = take(static_cast<std::uint64_t>(mesh.face_count()));
+  const int base_size = mesh.face_sizes[static_cast<std::size_t>(e.face.base_face)];
+  for (int d = 0; d < edit_level; ++d) e.face.children.push_back(take(d == 0 ? static_cast<std::uint64_t>(base_size) : 4));
+  e.index = take(edit_level == 0 ? static_cast<std::uint64_t>(base_size) : 4);
+  e.kind = kind == kHole ? EditKind::FaceHole : EditKind::VertexValue;
+  e.op = kind == kSet ? EditOp::Set : EditOp::Add;
+  if (kind == kSet) e.value = {take(41) * 0.25 - 5, take(41) * 0.25 - 5, take(41) * 0.25 + 3};
+  if (kind == kAdd) e.value = {0.5, -0.25, 1 + take(8) * 0.125};
+  std::string path = "(" + std::to_string(mesh.polygon_ids[static_cast<std::size_t>(e.face.base_face)]);
+  for (int c : e.face.children) path += " " + std::to_string(c);
+  std::string edit;
+  if (kind == kHole) {
+    edit = "hole " + path + ")";
+  } else {
+    edit = std::string(kind == kSet ? "set " : "add ") + path + " " + std::to_string(e.index) + ") " +
+           format_f64(e.value[0]) + " " + format_f64(e.value[1]) + " " + format_f64(e.value[2]);
+  }
+
+  auto ask = [&](int at, SubdivisionAnswer* got, std::string* request) -> std::optional<Finding> {
+    *request = "?subdivide-edit " + std::to_string(at) + " " + edit;
+    const Document d = sut.request(*request);
+    if (auto f = check_answer(kClause, *request, d, "vgc-subdivision")) return f;
+    if (auto problem = read_subdivision(d.text, got)) return finding(kClause, *request + ": " + *problem);
+    if (got->level != at) return finding(kClause, *request + ": the document says level " + std::to_string(got->level));
+    if (static_cast<long>(got->face_lines.size()) != got->faces)
+      return finding(kClause, *request + ": " + std::to_string(got->face_lines.size()) + " face lines but faces " +
+                                  std::to_string(got->faces));
+    return std::nullopt;
+  };
+  // Each face line must be a face of the level (`positions`, `sizes`,
+  // `corners`) whose flag in `allowed` is set, compared by the positions of
+  // its corners (same cycle, any starting corner, within the tolerance:
+  // coinciding vertices make a pairing by index arbitrary), each face used
+  // once.
+  auto faces_among = [&](const SubdivisionAnswer& got, const std::vector<std::array<double, 3>>& positions,
+                         const std::vector<int>& sizes, const std::vector<int>& corners,
+                         const std::vector<char>& allowed, const std::string& request,
+                         const std::string& source) -> std::optional<Finding> {
+    const double tol = tolerance_of(positions);
+    std::vector<std::size_t> offset(sizes.size() + 1, 0);
+    for (std::size_t f = 0; f < sizes.size(); ++f) offset[f + 1] = offset[f] + static_cast<std::size_t>(sizes[f]);
+    auto same_cycle = [&](const std::vector<int>& line, std::size_t f) {
+      const std::size_t n = line.size();
+      if (n != static_cast<std::size_t>(sizes[f])) return false;
+      for (std::size_t r = 0; r < n; ++r) {
+        bool same = true;
+        for (std::size_t k = 0; same && k < n; ++k)
+          same = near(got.vertices[static_cast<std::size_t>(line[k])],
+                      positions[static_cast<std::size_t>(corners[offset[f] + (k + r) % n])], tol);
+        if (same) return true;
+      }
+      return false;
+    };
+    std::vector<char> used(sizes.size(), 0);
+    for (std::size_t i = 0; i < got.face_lines.size(); ++i) {
+      std::size_t hit = used.size();
+      bool removed = false;
+      for (std::size_t f = 0; f < used.size() && hit == used.size(); ++f) {
+        if (used[f] || !same_cycle(got.face_lines[i], f)) continue;
+        if (allowed[f]) hit = f;
+        else removed = true;
+      }
+      if (hit == used.size())
+        return finding(kClause, request + ": face line " + std::to_string(i) + " is " +
+                                    (removed ? "a face the hole removes (it or an ancestor is the hole) in " + source
+                                             : "no face of " + source + " (or one given twice)"));
+      used[hit] = 1;
+    }
+    return std::nullopt;
+  };
+
+  // An edit changes its own level and the finer ones: the level just above
+  // it is OpenSubdiv's plain refinement.
+  if (edit_level >= 2) {
+    SubdivisionAnswer got;
+    std::string request;
+    if (auto f = ask(edit_level - 1, &got, &request)) return f;
+    const OsdLevel& plain = osd.levels[static_cast<std::size_t>(edit_level - 1)];
+    std::vector<int> g2w;
+    if (auto problem = compare_with_level(got, plain.positions, static_cast<long>(plain.face_sizes.size()),
+                                          "OpenSubdiv (the edit is at level " + std::to_string(edit_level) +
+                                              ", so this level is untouched)",
+                                          &g2w))
+      return finding(kClause, request + ": " + *problem);
+  }
+
+  SubdivisionAnswer got;
+  std::string request;
+  if (auto f = ask(level, &got, &request)) return f;
+  const OsdLevel& plain = osd.levels.back();
+  std::vector<int> g2w;
+  if (kind == kHole && edit_level == 0) {
+    // Holes at level 0: OpenSubdiv's own holes (TopologyDescriptor holeIndices).
+    OsdInput in = osd_input_from_mesh(mesh, OsdScheme::CatmullClark, level);
+    in.hole_faces.push_back(e.face.base_face);
+    const OsdResult holed = osd_refine_uniform(in);
+    if (!holed.ok || holed.levels.size() != static_cast<std::size_t>(level) + 1) return std::nullopt;
+    const OsdLevel& want = holed.levels.back();
+    std::vector<char> allowed(want.face_sizes.size(), 1);
+    long kept = 0;
+    for (std::size_t f = 0; f < allowed.size(); ++f) {
+      allowed[f] = f < want.face_hole.size() && want.face_hole[f] ? 0 : 1;
+      kept += allowed[f];
+    }
+    if (auto problem = compare_with_level(got, want.positions, kept, "OpenSubdiv with the hole", &g2w))
+      return finding(kClause, request + ": " + *problem);
+    return faces_among(got, want.positions, want.face_sizes, want.face_vertices, allowed, request,
+                       "OpenSubdiv's refinement with the hole");
+  }
+  if (kind == kHole || kind == kAddZero) {
+    // A hole deeper down removes exactly its descendants at this level
+    // (4 per level below it: they are quads) and moves nothing; add 0
+    // changes nothing.
+    long removed = 0;
+    if (kind == kHole) {
+      removed = 1;
+      for (int l = edit_level; l < level; ++l) removed *= 4;
+    }
+    if (auto problem = compare_with_level(got, plain.positions, static_cast<long>(plain.face_sizes.size()) - removed,
+                                          kind == kHole ? "OpenSubdiv (a hole at level " + std::to_string(edit_level) +
+                                                              " moves nothing and removes " + std::to_string(removed) +
+                                                              " faces here)"
+                                                        : std::string("OpenSubdiv (add 0 changes nothing)"),
+                                          &g2w))
+      return finding(kClause, request + ": " + *problem);
+    if (auto f = faces_among(got, plain.positions, plain.face_sizes, plain.face_vertices,
+                             std::vector<char>(plain.face_sizes.size(), 1), request, "OpenSubdiv's refinement"))
+      return f;
+    if (kind == kAddZero) return std::nullopt;
+  }
+  if (edit_level == level && kind != kHole && tolerance_of(plain.positions) <= 1e-3) {
+    // At the edit's own level only the edited vertex moved (OpenSubdiv's
+    // plain vertices for all the others), and "set" puts it at the value.
+    // (Only where the tolerance is far below the move: coordinates up to 1e6.)
+    std::vector<int> w2g;
+    std::vector<std::size_t> unmatched;
+    match_vertices(plain.positions, got.vertices, tolerance_of(plain.positions), &w2g, &unmatched);
+    if (got.vertices.size() != plain.positions.size() || unmatched.size() != 1)
+      return finding(kClause, request + ": " + std::to_string(unmatched.size()) + " of " +
+                                  std::to_string(got.vertices.size()) + " vertices are not OpenSubdiv's (of " +
+                                  std::to_string(plain.positions.size()) +
+                                  "); an edit at the answer's own level moves exactly one");
+    if (kind == kSet && got.vertices[unmatched[0]] != e.value)
+      return finding(kClause, request + ": the moved vertex is at " + point_text(got.vertices[unmatched[0]]) +
+                                  "; \"set\" puts it at " + point_text(e.value));
+  }
+  // The rest has no external oracle (OpenSubdiv 3 dropped hierarchical
+  // edits): the reference's reading (hierarchical_edit.h).
+  std::vector<SubdivisionLevel> ref;
+  if (subdivide_with_edits(mesh, level, {e}, &ref) != EditStatus::Ok) return std::nullopt;
+  const SubdivisionLevel& want = ref.back();
+  long kept = 0;
+  for (unsigned char h : want.face_hole) kept += h ? 0 : 1;
+  if (auto problem = compare_with_level(got, want.positions, kept, "the reference's hierarchical edit", &g2w))
+    return finding(kClause, request + ": " + *problem);
+  std::vector<char> kept_faces(want.face_hole.size());
+  for (std::size_t f = 0; f < kept_faces.size(); ++f) kept_faces[f] = want.face_hole[f] ? 0 : 1;
+  return faces_among(got, want.positions, want.face_sizes, want.face_vertices, kept_faces, request,
+                     "the reference's hierarchical edit");
+}
+
 void register_capability_checks() {
-  register_capability_check({"manifold", [](const Node& m, Implementation& s, int) { return check_classify(m, s); }});
-  register_capability_check({"subdivision", [](const Node& m, Implementation& s, int level) {
-                               return check_subdivision(m, s, level);
-                             }});
+  auto add = [](const char* name, decltype(CapabilityCheck::check) check) {
+    CapabilityCheck c;
+    c.capability = name;
+    c.check = std::move(check);
+    register_capability_check(std::move(c));
+  };
+  add("manifold", [](const Node& m, Implementation& s, int) { return check_classify(m, s); });
+  add("subdivision", [](const Node& m, Implementation& s, int level) { return check_subdivision(m, s, level); });
+  add("normals", [](const Node& m, Implementation& s, int) { return check_normals(m, s); });
+  add("loop", [](const Node& m, Implementation& s, int level) { return check_loop(m, s, level); });
+  CapabilityCheck edits;
+  edits.capability = "edits";
+  edits.check_drawn = [](const Node& m, Implementation& s, int level, std::uint32_t draw) {
+    return check_edits(m, s, level, draw);
+  };
+  register_capability_check(std::move(edits));
 }
 
 }  // namespace vgc

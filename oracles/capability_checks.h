@@ -1,9 +1,14 @@
 // capability_checks.h — the checks of the optional capabilities
 // (conformance/capability.h) against the oracles: ?classify against CGAL
 // (oracles/cgal_manifold.h), ?subdivide against OpenSubdiv
-// (oracles/osd_subdivision.h).
+// (oracles/osd_subdivision.h); ?normals against spec 003's properties and
+// the reference (no external oracle for split normals is linked);
+// ?subdivide-loop against OpenSubdiv's Loop scheme; ?subdivide-edit
+// against OpenSubdiv (holes, unedited parts) and the reference.
 //
-// Spec: clauses MESH-CLASSIFY-1 and SUBD-CATMARK-1 (group "derived");
+// Spec: clauses MESH-CLASSIFY-1 and SUBD-CATMARK-1 (group "derived"),
+// NORMALS-SPLIT-1 (group "normals"), LOOP-TRIANGLE-1 (group "loop"),
+// EDIT-HIERARCHY-1 (group "edits");
 // docs/adapters.md "Optional capabilities" defines the documents.
 //
 // Rationale: the conformance layer cannot depend on the oracles, so this
@@ -15,6 +20,7 @@
 // crease_sharpness.h).
 #pragma once
 
+#include <cstdint>
 #include <optional>
 
 #include "capability.h"
@@ -36,7 +42,44 @@ std::optional<Finding> check_classify(const Node& model, Implementation& sut);
 // them. Precondition: as check_classify. Never throws.
 std::optional<Finding> check_subdivision(const Node& model, Implementation& sut, int level);
 
-// Registers both checks ("manifold", "subdivision") with the runner.
+// Checks sut's ?normals (spec 003 split normals): one "corner" line per
+// corner of every live polygon; then, independently of the reference,
+// (a) the two corners at each end of a smooth edge (two polygons, opposite
+// directions, no corner crease 0xFFFFFFFF) have one normal (so every smooth
+// fan has one), (b) a corner whose two edges are both sharp has its
+// polygon's unit front normal (Newell's, clockwise front, face_normals.h);
+// then every corner against reference/split_normals.h (angle-weighted fan
+// normals). All within 1e-9. Not compared when the reference cannot give
+// the polygons split normals, or a polygon's vertex has a coordinate beyond
+// 1e60 in magnitude. Precondition: as check_classify.
+std::optional<Finding> check_normals(const Node& model, Implementation& sut);
+
+// Compares sut's ?subdivide-loop <level> (1..3) with OpenSubdiv's Loop
+// scheme on the model's polygons: counts and vertices as check_subdivision;
+// then the face lines against the spec 004 triangle tree built on
+// OpenSubdiv's levels (tree order, T0 the centre, each triangle in the
+// oriented order of reference/loop_subdivision.h). When a live polygon is
+// not a triangle the answer must be one "error" line. Compared where the
+// polygons form a polygon mesh. Precondition: as check_classify.
+std::optional<Finding> check_loop(const Node& model, Implementation& sut, int level);
+
+// Checks sut's ?subdivide-edit <level> <edit> (spec 001 hierarchical
+// edits) on the model's polygons, for one edit chosen from `draw` (kind:
+// hole, set, add 0 or add; its level 0..`level`; the path and vertex).
+// Oracle-backed (OpenSubdiv Catmark): a hole at level 0 against
+// OpenSubdiv's holes (vertices, kept faces as vertex cycles); a deeper hole
+// moves nothing and removes exactly its 4^(level - k) descendants, every
+// face line being an OpenSubdiv face; add 0 changes nothing; the level just
+// above the edit's (when it is >= 1) is the plain refinement; at the edit's
+// own level exactly one vertex moves, and "set" puts it at the value
+// (where coordinates are at most 1e6).
+// Without an oracle: the vertices and kept-face count against the
+// reference's hierarchical_edit.h. Compared where the polygons form a
+// polygon mesh. Precondition: as check_classify.
+std::optional<Finding> check_edits(const Node& model, Implementation& sut, int level, std::uint32_t draw);
+
+// Registers the checks ("manifold", "subdivision", "normals", "loop",
+// "edits") with the runner.
 void register_capability_checks();
 
 }  // namespace vgc

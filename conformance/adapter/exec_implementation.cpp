@@ -15,6 +15,7 @@
 #include <mutex>
 #include <thread>
 
+#include "capability_documents.h"
 #include "command_text.h"
 #include "number_text.h"
 
@@ -553,9 +554,8 @@ Document ExecImplementation::snapshot() { return request_document("?snapshot", "
 Document ExecImplementation::derived() { return request_document("?derived", "vgc-derived"); }
 
 Document ExecImplementation::request(const std::string& line) {
-  const char* header = line == "?capabilities" ? "capabilities"
-                       : line == "?classify"   ? "vgc-classify"
-                                               : "vgc-subdivision";
+  const char* header = capability_document_header(line);
+  if (!header) return {CallStatus::ProtocolError, {}, "not supported"};
   return request_document(line.c_str(), header, true);
 }
 

@@ -45,7 +45,8 @@ class ExecImplementation final : public Implementation {
   Answer apply(const Command& c) override;
   Document snapshot() override;
   Document derived() override;
-  // ?capabilities, ?classify, ?subdivide N: read as a document like
+  // ?capabilities, ?classify, ?subdivide N, ?normals ... (the requests
+  // capability_document_header knows): read as a document like
   // ?snapshot; an "error ..." answer is returned as it is (status Ok).
   Document request(const std::string& line) override;
 

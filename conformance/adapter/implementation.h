@@ -62,7 +62,8 @@ class Implementation {
   // (exec), the table's name (plugin), or name(). For reports only.
   virtual std::string identity() const { return name(); }
   // One optional capability request (docs/adapters.md "Optional
-  // capabilities"): "?capabilities", "?classify" or "?subdivide <level>".
+  // capabilities"): "?capabilities", "?classify", "?subdivide <level>",
+  // "?normals", ... (reference/capability_documents.h).
   // Ok with the whole document (ending in "end\n"), or Ok with one line
   // "error <message>\n" when the implementation refused the request (an
   // implementation that predates the requests answers so). The default

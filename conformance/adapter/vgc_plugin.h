@@ -57,7 +57,8 @@ typedef const vgc_plugin_v1_table* (*vgc_plugin_v1_fn)(void);
  * optional capabilities (docs/adapters.md "Optional capabilities") also
  * exports
  *   VGC_PLUGIN_EXPORT const char* vgc_plugin_request_v1(vgc_node* node, const char* request_line);
- * answering "?capabilities", "?classify" and "?subdivide <level>" with the
+ * answering "?capabilities", "?classify", "?subdivide <level>", "?normals"
+ * (and the other requests of docs/adapters.md section 5) with the
  * whole document (ending in "end\n") or one line "error <message>\n".
  * Ownership as for snapshot. */
 typedef const char* (*vgc_plugin_request_v1_fn)(vgc_node* node, const char* request_line);

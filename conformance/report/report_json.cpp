@@ -50,9 +50,11 @@ std::string render_report_json(const RunResult& run, const Verdict& v, const Rep
       c["seed"] = co.seed;
       c["counterexample"] = file;
       c["counterexample_commands"] = co.program.commands.size();
-      if (co.program.request)  // the capability check vgc replay repeats after the commands
+      if (co.program.request) {  // the capability check vgc replay repeats after the commands
         c["capability_check"] = {{"capability", co.program.request->capability},
                                  {"variant", co.program.request->variant}};
+        if (co.program.request->draw) c["capability_check"]["draw"] = *co.program.request->draw;
+      }
       c["replay"] = replay_command((std::filesystem::path(ctx.run_dir) / file).string(), ctx.implementation_spec);
     }
     clauses.push_back(c);

@@ -1,5 +1,5 @@
 // capability_test.cpp — the optional capabilities (issue 4 item 7): the
-// reference claims and passes both on every route, an implementation that
+// reference claims and passes all of them on every route, an implementation that
 // claims nothing gets "not-claimed" and stays conformant, and the seeded
 // capability faults are caught naming their clause. The oracle checks are
 // registered for this whole test binary (runner tests included), as
@@ -11,6 +11,7 @@
 
 #include "capability.h"
 #include "capability_checks.h"
+#include "capability_documents.h"
 #include "command_text.h"
 #include "exec_implementation.h"
 #include "faulty_implementation.h"
@@ -25,12 +26,17 @@ namespace {
 
 const bool kRegistered = (register_capability_checks(), true);
 
+// What the reference claims, and the clauses of those capabilities.
+const std::vector<std::string> kAll = {"manifold", "subdivision", "normals", "loop", "edits"};
+const std::vector<const char*> kClauses = {"MESH-CLASSIFY-1", "SUBD-CATMARK-1", "NORMALS-SPLIT-1", "LOOP-TRIANGLE-1",
+                                           "EDIT-HIERARCHY-1"};
+
 RunOptions capability_options() {
   RunOptions o;
   o.seed = 7;
   o.cases = 60;  // 15 cases per capability property
   o.budget_seconds = 120;
-  o.clause_glob = "MESH-CLASSIFY-1,SUBD-CATMARK-1";
+  o.clause_glob = "MESH-CLASSIFY-1,SUBD-CATMARK-1,NORMALS-SPLIT-1,LOOP-TRIANGLE-1,EDIT-HIERARCHY-1";
   return o;
 }
 
@@ -64,12 +70,12 @@ class NoCapabilities final : public Implementation {
   ReferenceImplementation ref_;
 };
 
-TEST(Capability, TheReferenceClaimsBothAndPassesBoth) {
+TEST(Capability, TheReferenceClaimsAllAndPassesAll) {
   ASSERT_TRUE(kRegistered);
   ReferenceImplementation impl;
-  EXPECT_EQ(query_capabilities(impl), (std::vector<std::string>{"manifold", "subdivision"}));
+  EXPECT_EQ(query_capabilities(impl), kAll);
   const RunResult run = run_certification(impl, capability_options());
-  for (const char* id : {"MESH-CLASSIFY-1", "SUBD-CATMARK-1"}) {
+  for (const char* id : kClauses) {
     const ClauseOutcome* co = clause(run, id);
     ASSERT_NE(co, nullptr) << id;
     EXPECT_EQ(co->status, "pass") << id << ": " << (co->finding ? co->finding->message : co->note);
@@ -82,7 +88,7 @@ TEST(Capability, NotClaimedIsNeitherAFailureNorAGap) {
   NoCapabilities impl;
   EXPECT_TRUE(query_capabilities(impl).empty());
   const RunResult run = run_certification(impl, capability_options());
-  for (const char* id : {"MESH-CLASSIFY-1", "SUBD-CATMARK-1"}) {
+  for (const char* id : kClauses) {
     const ClauseOutcome* co = clause(run, id);
     ASSERT_NE(co, nullptr) << id;
     EXPECT_EQ(co->status, "not-claimed") << id;
@@ -96,11 +102,12 @@ TEST(Capability, NotClaimedIsNeitherAFailureNorAGap) {
   EXPECT_TRUE(run.conformant);
   EXPECT_TRUE(run.complete);
   const std::string summary = render_summary(run, judge(run, nullptr), ReportContext{});
-  EXPECT_NE(summary.find("2 not claimed"), std::string::npos) << summary;
+  EXPECT_NE(summary.find(std::to_string(kClauses.size()) + " not claimed"), std::string::npos) << summary;
 }
 
 TEST(Capability, SeededCapabilityFaultsAreCaughtNamingTheirClause) {
-  for (const char* name : {"subdivision-ignores-creases", "classify-misses-boundary"}) {
+  for (const char* name : {"subdivision-ignores-creases", "classify-misses-boundary", "normals-flat",
+                           "loop-warren-weights", "edit-holes-ignored"}) {
     const int fault = faults::find_fault(name);
     ASSERT_GE(fault, 0) << name;
     faults::FaultyImplementation impl(fault);
@@ -114,13 +121,120 @@ TEST(Capability, SeededCapabilityFaultsAreCaughtNamingTheirClause) {
   }
 }
 
+// The reference with deliberately wrong capability documents.
+class DocumentFaults final : public Implementation {
+ public:
+  explicit DocumentFaults(CapabilityDocumentFaults f) : f_(f) {}
+  std::string name() const override { return "document-faults"; }
+  Answer reset() override { return ref_.reset(); }
+  Answer apply(const Command& c) override { return ref_.apply(c); }
+  Document snapshot() override { return ref_.snapshot(); }
+  Document derived() override { return ref_.derived(); }
+  Document request(const std::string& line) override {
+    auto text = answer_capability_request(ref_.node(), line, f_);
+    return {CallStatus::Ok, text ? *text : "error unknown request\n", ""};
+  }
+
+ private:
+  ReferenceImplementation ref_;
+  CapabilityDocumentFaults f_;
+};
+
+// Each part of a check catches the fault meant for it: the finding names
+// the clause and says which comparison failed.
+void expect_caught(const CapabilityDocumentFaults& f, const char* clause_id, const char* words, int cases = 60) {
+  DocumentFaults impl(f);
+  RunOptions o = capability_options();
+  o.cases = cases;
+  o.clause_glob = clause_id;
+  const RunResult run = run_certification(impl, o);
+  const ClauseOutcome* co = clause(run, clause_id);
+  ASSERT_NE(co, nullptr) << clause_id;
+  EXPECT_EQ(co->status, "fail") << words;
+  ASSERT_TRUE(co->finding.has_value()) << words;
+  EXPECT_NE(co->finding->message.find(words), std::string::npos) << co->finding->message;
+  std::printf("%s (%s): %s\n", clause_id, words, co->finding->message.c_str());
+}
+
+TEST(Capability, EachPartOfTheNormalsCheckHasTeeth) {
+  CapabilityDocumentFaults flat, perturbed, negated;
+  flat.flat_normals = true;            // breaks the one-normal-per-fan rule of spec 003
+  perturbed.perturb_fan_normals = true;  // keeps fans whole: only the reference comparison sees it
+  negated.negate_lone_corners = true;  // the corners between sharp edges (boundary corners of the grid)
+  expect_caught(flat, "NORMALS-SPLIT-1", "one smooth fan");
+  expect_caught(perturbed, "NORMALS-SPLIT-1", "the reference's split normal");
+  expect_caught(negated, "NORMALS-SPLIT-1", "between two sharp edges");
+}
+
+TEST(Capability, EachPartOfTheLoopCheckHasTeeth) {
+  CapabilityDocumentFaults warren, rotated;
+  warren.loop_warren_weights = true;  // vertices off OpenSubdiv's
+  rotated.loop_tree_rotated = true;   // right vertices and triangles, wrong tree names
+  expect_caught(warren, "LOOP-TRIANGLE-1", "OpenSubdiv Loop has a vertex");
+  expect_caught(rotated, "LOOP-TRIANGLE-1", "should be child T0");
+  // Loop takes triangles only: a document for the cube's quads is a failure.
+  CapabilityDocumentFaults quads;
+  quads.loop_answers_quads = true;
+  DocumentFaults faulty(quads);
+  ReferenceImplementation good;
+  Node model;
+  for (const auto& c : cube_commands()) {
+    model.apply(c);
+    ASSERT_TRUE(faulty.apply(c).applied);
+    ASSERT_TRUE(good.apply(c).applied);
+  }
+  EXPECT_FALSE(check_loop(model, good, 1).has_value());
+  const auto f = check_loop(model, faulty, 1);
+  ASSERT_TRUE(f.has_value());
+  EXPECT_EQ(f->clause, "LOOP-TRIANGLE-1");
+  EXPECT_NE(f->message.find("is a quad"), std::string::npos) << f->message;
+}
+
+TEST(Capability, EachPartOfTheEditsCheckHasTeeth) {
+  CapabilityDocumentFaults holes, base, wrong_face, truncated, add_as_set;
+  holes.edit_holes_ignored = true;  // against OpenSubdiv's holes / the descendant count
+  base.edit_at_base_level = true;   // the edit lands on the base polygon instead of its path
+  wrong_face.edit_hole_wrong_face = true;  // right count, wrong faces
+  truncated.edit_truncated_path = true;    // a coarser level than the edit's is changed
+  add_as_set.edit_add_zero_as_set = true;  // add 0 moves the vertex to the origin
+  expect_caught(holes, "EDIT-HIERARCHY-1", "faces; OpenSubdiv");
+  expect_caught(base, "EDIT-HIERARCHY-1", "");
+  expect_caught(wrong_face, "EDIT-HIERARCHY-1", "a face the hole removes");
+  expect_caught(truncated, "EDIT-HIERARCHY-1", "so this level is untouched", 400);
+  expect_caught(add_as_set, "EDIT-HIERARCHY-1", "add 0 changes nothing");
+}
+
+// The holes of level 0 are compared with OpenSubdiv's own holes: on the
+// cube, with draws that pick a level-0 hole, the wrong face removed is seen
+// there (and the right one passes).
+TEST(Capability, LevelZeroHolesAreComparedWithOpenSubdivHoles) {
+  CapabilityDocumentFaults wrong_face;
+  wrong_face.edit_hole_wrong_face = true;
+  DocumentFaults faulty(wrong_face);
+  ReferenceImplementation good;
+  Node model;
+  ASSERT_EQ(faulty.reset().status, CallStatus::Ok);
+  for (const auto& c : cube_commands()) {
+    model.apply(c);
+    ASSERT_TRUE(faulty.apply(c).applied);
+    ASSERT_TRUE(good.apply(c).applied);
+  }
+  int seen = 0;
+  for (std::uint32_t draw = 0; draw < 200; ++draw) {
+    EXPECT_FALSE(check_edits(model, good, 2, draw).has_value()) << draw;
+    const auto f = check_edits(model, faulty, 2, draw);
+    if (f && f->message.find("OpenSubdiv's refinement with the hole") != std::string::npos) ++seen;
+  }
+  EXPECT_GT(seen, 0);
+}
+
 TEST(Capability, ServeAnswersTheRequestsForTheCube) {
   OpenOptions o;
   std::string error;
   auto impl = open_implementation("exec:" + shell_quote(VGC_BINARY) + " serve", o, &error);
   ASSERT_TRUE(impl) << error;
   ASSERT_EQ(impl->reset().status, CallStatus::Ok);
-  EXPECT_EQ(impl->request("?capabilities").text, "capabilities manifold subdivision\nend\n");
+  EXPECT_EQ(impl->request("?capabilities").text, "capabilities manifold subdivision normals loop edits\nend\n");
   for (const auto& c : cube_commands()) ASSERT_TRUE(impl->apply(c).applied);
   // The spec's cube (000 2.6.4): one closed, oriented surface of genus 0.
   EXPECT_EQ(impl->request("?classify").text,
@@ -132,6 +246,31 @@ TEST(Capability, ServeAnswersTheRequestsForTheCube) {
   while ((pos = sub.text.find("\nvertex ", pos)) != std::string::npos) ++vertices, ++pos;
   EXPECT_EQ(vertices, 26u);
   EXPECT_NE(sub.text.find("\nfaces 24\nend\n"), std::string::npos) << sub.text;
+  // The cube's creases are all maximal: every edge is sharp (spec 003's
+  // tag), so each corner has its face's normal; the top face (polygon 0)
+  // faces +y, the front face (polygon 2) +z (000 2.6.4).
+  const Document normals = impl->request("?normals");
+  ASSERT_EQ(normals.status, CallStatus::Ok) << normals.detail;
+  EXPECT_NE(normals.text.find("\ncorner 0 0 0 1 0\n"), std::string::npos) << normals.text;
+  EXPECT_NE(normals.text.find("\ncorner 2 3 0 0 1\n"), std::string::npos) << normals.text;
+  std::size_t corners = 0;
+  pos = 0;
+  while ((pos = normals.text.find("\ncorner ", pos)) != std::string::npos) ++corners, ++pos;
+  EXPECT_EQ(corners, 24u);
+  // The cube has quads: Loop refuses them with an error line.
+  const Document loop = impl->request("?subdivide-loop 1");
+  EXPECT_EQ(loop.status, CallStatus::Ok) << loop.detail;
+  EXPECT_EQ(loop.text.rfind("error ", 0), 0u) << loop.text;
+  // Spec 001: a hole on the top face (polygon 0) at level 0 removes its 4
+  // children at level 1 and moves nothing: 20 faces, 26 vertices.
+  const Document hole = impl->request("?subdivide-edit 1 hole (0)");
+  ASSERT_EQ(hole.status, CallStatus::Ok) << hole.detail;
+  EXPECT_NE(hole.text.find("\nfaces 20\nend\n"), std::string::npos) << hole.text;
+  vertices = 0;
+  pos = 0;
+  while ((pos = hole.text.find("\nvertex ", pos)) != std::string::npos) ++vertices, ++pos;
+  EXPECT_EQ(vertices, 26u);
+  EXPECT_EQ(impl->request("?subdivide-edit 1 hole (9)").text.rfind("error ", 0), 0u);
   const Document bad = impl->request("?subdivide 9");
   EXPECT_EQ(bad.status, CallStatus::Ok);
   EXPECT_EQ(bad.text.rfind("error ", 0), 0u) << bad.text;
@@ -146,10 +285,10 @@ TEST(Capability, ThePluginWithoutTheRequestSymbolClaimsNothing) {
   EXPECT_TRUE(query_capabilities(*plugin).empty());
   auto reference = open_implementation(std::string("plugin:") + VGC_REFERENCE_PLUGIN, o, &error);
   ASSERT_TRUE(reference) << error;
-  EXPECT_EQ(query_capabilities(*reference), (std::vector<std::string>{"manifold", "subdivision"}));
+  EXPECT_EQ(query_capabilities(*reference), kAll);
 }
 
-TEST(Capability, ExecAndIsolatedPluginRoutesCertifyTheReferenceWithBoth) {
+TEST(Capability, ExecAndIsolatedPluginRoutesCertifyTheReferenceWithAll) {
   OpenOptions o;
   o.vgc_binary = VGC_BINARY;
   for (const std::string spec : {"exec:" + shell_quote(VGC_BINARY) + " serve",
@@ -160,7 +299,7 @@ TEST(Capability, ExecAndIsolatedPluginRoutesCertifyTheReferenceWithBoth) {
     RunOptions ro = capability_options();
     ro.cases = 20;
     const RunResult run = run_certification(*impl, ro);
-    for (const char* id : {"MESH-CLASSIFY-1", "SUBD-CATMARK-1"}) {
+    for (const char* id : kClauses) {
       const ClauseOutcome* co = clause(run, id);
       ASSERT_NE(co, nullptr) << spec << " " << id;
       EXPECT_EQ(co->status, "pass") << spec << " " << id << ": " << (co->finding ? co->finding->message : co->note);

@@ -39,7 +39,7 @@ TEST(ClauseCatalog, IdsAreUniqueAndWellFormed) {
   ASSERT_GE(catalog.size(), 30u);
   std::set<std::string_view> seen;
   const std::set<std::string_view> groups = {"layers", "vertices", "polygons", "creases", "bones", "commands",
-                                                 "derived"};
+                                                 "derived", "normals", "loop", "edits"};
   for (const Clause& c : catalog) {
     EXPECT_TRUE(std::regex_match(std::string(c.id), id_pattern())) << "malformed id '" << c.id << "'";
     EXPECT_TRUE(seen.insert(c.id).second) << "duplicate id " << c.id;

@@ -274,6 +274,16 @@ TEST_F(Cli, AMalformedCapabilityDirectiveNamesLineAndColumn) {
   EXPECT_NE(early.err.find("early.vgc:1:1:"), std::string::npos) << context(early);
   // `vgc apply` reads both as plain command files.
   EXPECT_EQ(vgc("apply bad_variant.vgc").exit_code, 0);
+  // A drawn value out of range names its column (a check_drawn check's draw).
+  write("bad_draw.vgc", cube + "#! capability edits variant 1 draw 4294967296\n");
+  const Result big = vgc("replay bad_draw.vgc --impl reference");
+  EXPECT_EQ(big.exit_code, 2) << context(big);
+  EXPECT_NE(big.err.find("bad_draw.vgc:" + std::to_string(lines + 1) + ":36:"), std::string::npos) << context(big);
+  // A well-formed drawn edit on the cube: the reference passes it.
+  write("cube_edit.vgc", cube + "#! capability edits variant 2 draw 123456789\n");
+  const Result edit = vgc("replay cube_edit.vgc --impl reference");
+  EXPECT_EQ(edit.exit_code, 0) << context(edit);
+  EXPECT_NE(edit.out.find("passes the check"), std::string::npos) << context(edit);
   // A well-formed one on the cube: the reference passes it.
   write("cube_manifold.vgc", cube + "#! capability manifold variant 1\n");
   const Result fine = vgc("replay cube_manifold.vgc --impl reference");

@@ -48,6 +48,9 @@ const std::vector<FaultInfo>& fault_catalog() {
       {"subdivision-ignores-creases", "SUBD-CATMARK-1", "fail",
        "claims subdivision; ?subdivide refines as if every crease were 0"},
       {"classify-misses-boundary", "MESH-CLASSIFY-1", "fail", "claims manifold; ?classify says boundary_loops 0"},
+      {"normals-flat", "NORMALS-SPLIT-1", "fail", "claims normals; ?normals gives every corner its face normal"},
+      {"loop-warren-weights", "LOOP-TRIANGLE-1", "fail", "claims loop; ?subdivide-loop uses Warren's vertex weights"},
+      {"edit-holes-ignored", "EDIT-HIERARCHY-1", "fail", "claims edits; ?subdivide-edit keeps the faces of holes"},
   };
   return catalog;
 }
@@ -215,6 +218,9 @@ std::string FaultyNode::request(const std::string& line) const {
   CapabilityDocumentFaults f;
   f.ignore_creases = is("subdivision-ignores-creases");
   f.zero_boundary_loops = is("classify-misses-boundary");
+  f.flat_normals = is("normals-flat");
+  f.loop_warren_weights = is("loop-warren-weights");
+  f.edit_holes_ignored = is("edit-holes-ignored");
   auto text = answer_capability_request(node_, line, f);
   return text ? *text : "error unknown request\n";
 }
