@@ -3,16 +3,29 @@
 # / OSS-Fuzz (docs/fuzzing.md "ClusterFuzzLite").
 #
 # Inputs (the OSS-Fuzz build environment): CC, CXX, CFLAGS, CXXFLAGS (they
-# carry the sanitizer and -fsanitize=fuzzer-no-link), LIB_FUZZING_ENGINE
-# (e.g. -fsanitize=fuzzer), OUT (where the targets go), SRC (checkouts; the
-# project is $SRC/vgc in the image, or the tree holding this script).
-# Outputs in $OUT, per target fuzz_<name>: the binary, <target>_seed_corpus.zip
-# (corpora/fuzz/<target>/ and every fixed crash in corpora/fuzz/<target>-crashes/),
-# <target>.dict and <target>.options.
+# carry the sanitizer, -fsanitize=fuzzer-no-link and, in the image,
+# -stdlib=libc++), LIB_FUZZING_ENGINE (e.g. -fsanitize=fuzzer), OUT (where
+# the targets go), SRC (checkouts; the project is $SRC/vgc in the image, or
+# the tree holding this script), WORK (scratch; a temporary directory if
+# unset).
+# Outputs in $OUT, per target (every name in the build's
+# fuzz/fuzz_targets.txt: fuzz_stream, fuzz_text, fuzz_differential,
+# fuzz_mesh_manifold, fuzz_mesh_subdivision, fuzz_property_<group>): the
+# binary, <target>_seed_corpus.zip (corpora/fuzz/<target>/ and every fixed
+# crash in corpora/fuzz/<target>-crashes/), <target>.dict when the corpus
+# has one, and <target>.options.
 #
-# The targets need only the C++17 standard library, the reference sources
-# and libdl, so this compiles them directly, without CMake and without the
-# suite's other dependencies.
+# How: the project's own CMake with -DVGC_FUZZ=ON, instrumented only by
+# $CXXFLAGS (VGC_FUZZ_SANITIZERS=none) and linked with $LIB_FUZZING_ENGINE
+# (VGC_FUZZ_ENGINE), building only the fuzz targets.
+# Dependencies: the Dockerfile checks out pinned sources of the C++
+# libraries into $SRC (they must be compiled with the image's libc++ and
+# flags); each one present there is built and installed into
+# $WORK/vgc-deps first. Any not present is taken from the system: that is
+# how tests/fuzz/clusterfuzzlite_build.sh runs this script on Debian
+# packages. CGAL is used without GMP/MPFR (the oracle uses
+# Simple_cartesian<double> only), so the binaries need no libgmp at run
+# time; OpenSubdiv is linked statically when built here.
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 if [ -d "$here/../reference" ]; then
   ROOT="$(cd "$here/.." && pwd)"
@@ -20,31 +33,57 @@ else
   ROOT="$SRC/vgc"
 fi
 : "${OUT:?OUT must name the output directory}"
+: "${LIB_FUZZING_ENGINE:?LIB_FUZZING_ENGINE must name the fuzzing engine link flags}"
 mkdir -p "$OUT"
-WORKDIR="$(mktemp -d)"
-trap 'rm -rf "$WORKDIR"' EXIT
-
-flags=(-std=c++17 -I"$ROOT/reference" -I"$ROOT/fuzz" -I"$ROOT/conformance/adapter")
-# shellcheck disable=SC2206
-cxxflags=($CXXFLAGS)
-
-# The reference (every source: it is standard-library only) and the fuzz
-# support code, compiled in parallel into one archive.
-sources=("$ROOT"/reference/*.cpp "$ROOT"/fuzz/node_invariants.cpp "$ROOT"/fuzz/command_mutator.cpp
-         "$ROOT"/fuzz/plugin_node.cpp "$ROOT"/fuzz/reference_plugin_table.cpp "$ROOT"/fuzz/finding.cpp)
+if [ -z "${WORK:-}" ]; then
+  WORK="$(mktemp -d)"
+  trap 'rm -rf "$WORK"' EXIT
+fi
+DEPS="$WORK/vgc-deps"
+BUILD="$WORK/vgc-build"
 jobs="$(nproc 2>/dev/null || echo 2)"
-pids=()
-for src in "${sources[@]}"; do
-  obj="$WORKDIR/$(basename "$(dirname "$src")")_$(basename "$src" .cpp).o"
-  "$CXX" "${cxxflags[@]}" "${flags[@]}" -c "$src" -o "$obj" &
-  pids+=($!)
-  if [ "${#pids[@]}" -ge "$jobs" ]; then wait "${pids[0]}"; pids=("${pids[@]:1}"); fi
-done
-for p in "${pids[@]}"; do wait "$p"; done
-ar rcs "$WORKDIR/libvgc_fuzz.a" "$WORKDIR"/*.o
+SRC="${SRC:-$(dirname "$ROOT")}"
+
+# build_dep DIR [CMAKE ARGS...]: configure, build and install $SRC/DIR into
+# $DEPS with the fuzzing compiler and flags, if the checkout exists.
+build_dep() {
+  local dir=$1
+  shift
+  [ -f "$SRC/$dir/CMakeLists.txt" ] || return 0
+  echo "build.sh: building dependency $dir"
+  cmake -S "$SRC/$dir" -B "$WORK/dep-$dir" -DCMAKE_BUILD_TYPE=Release -DCMAKE_INSTALL_PREFIX="$DEPS" \
+    -DCMAKE_PREFIX_PATH="$DEPS" -DBUILD_SHARED_LIBS=OFF -DBUILD_TESTING=OFF "$@" >"$WORK/dep-$dir.log" 2>&1 ||
+    { tail -40 "$WORK/dep-$dir.log"; exit 1; }
+  cmake --build "$WORK/dep-$dir" -j "$jobs" >>"$WORK/dep-$dir.log" 2>&1 || { tail -40 "$WORK/dep-$dir.log"; exit 1; }
+  cmake --install "$WORK/dep-$dir" >>"$WORK/dep-$dir.log" 2>&1 || { tail -40 "$WORK/dep-$dir.log"; exit 1; }
+}
+build_dep fmt -DFMT_DOC=OFF -DFMT_TEST=OFF
+build_dep rapidcheck -DRC_ENABLE_GTEST=ON
+build_dep googletest -DBUILD_GMOCK=OFF -DINSTALL_GTEST=ON
+build_dep CLI11 -DCLI11_BUILD_TESTS=OFF -DCLI11_BUILD_EXAMPLES=OFF -DCLI11_BUILD_DOCS=OFF
+build_dep json -DJSON_BuildTests=OFF
+build_dep pugixml
+build_dep cgal -DCGAL_DISABLE_GMP=ON
+build_dep OpenSubdiv -DNO_EXAMPLES=ON -DNO_TUTORIALS=ON -DNO_REGRESSION=ON -DNO_DOC=ON -DNO_TESTS=ON \
+  -DNO_GLTESTS=ON -DNO_PTEX=ON -DNO_OMP=ON -DNO_TBB=ON -DNO_CUDA=ON -DNO_OPENCL=ON -DNO_CLEW=ON \
+  -DNO_OPENGL=ON -DNO_METAL=ON -DNO_DX=ON -DNO_GLFW=ON -DNO_GLEW=ON -DNO_MACOS_FRAMEWORK=ON
+
+extra=()
+if [ -f "$DEPS/lib/libosdCPU.a" ]; then
+  extra+=("-DOPENSUBDIV_CPU_LIBRARY=$DEPS/lib/libosdCPU.a")
+fi
+echo "build.sh: configuring vgc (VGC_FUZZ=ON, engine: $LIB_FUZZING_ENGINE)"
+cmake -S "$ROOT" -B "$BUILD" -DCMAKE_BUILD_TYPE=None -DCMAKE_PREFIX_PATH="$DEPS" -DVGC_FUZZ=ON \
+  -DVGC_FUZZ_SANITIZERS=none -DVGC_FUZZ_ENGINE="$LIB_FUZZING_ENGINE" -DCGAL_DISABLE_GMP=ON \
+  -DCGAL_DO_NOT_WARN_ABOUT_CMAKE_BUILD_TYPE=TRUE "${extra[@]}" >"$WORK/vgc-configure.log" 2>&1 ||
+  { tail -40 "$WORK/vgc-configure.log"; exit 1; }
+read -r -a targets <"$BUILD/fuzz/fuzz_targets.txt"
+echo "build.sh: building ${targets[*]}"
+cmake --build "$BUILD" -j "$jobs" --target "${targets[@]}"
 
 zip_dir() {  # zip_dir ARCHIVE DIR... (files only, flat)
-  local archive=$1; shift
+  local archive=$1
+  shift
   local files=()
   for d in "$@"; do
     [ -d "$d" ] || continue
@@ -59,16 +98,18 @@ zip_dir() {  # zip_dir ARCHIVE DIR... (files only, flat)
   fi
 }
 
-for target_src in "$ROOT"/fuzz/fuzz_*.cpp; do
-  target="$(basename "$target_src" .cpp)"
-  "$CXX" "${cxxflags[@]}" "${flags[@]}" "$target_src" "$WORKDIR/libvgc_fuzz.a" \
-    $LIB_FUZZING_ENGINE -ldl -o "$OUT/$target"
+for target in "${targets[@]}"; do
+  cp "$BUILD/fuzz/$target" "$OUT/$target"
   zip_dir "$OUT/${target}_seed_corpus.zip" "$ROOT/corpora/fuzz/$target" "$ROOT/corpora/fuzz/$target-crashes"
   if [ -f "$ROOT/corpora/fuzz/$target.dict" ]; then cp "$ROOT/corpora/fuzz/$target.dict" "$OUT/"; fi
+  case "$target" in
+    fuzz_mesh_*) max_len=256 ;;  # 1 + 16 vertex bytes + 24 faces of at most 8 bytes = 209
+    *) max_len=1024 ;;
+  esac
   {
     echo "[libfuzzer]"
-    echo "max_len = 1024"
+    echo "max_len = $max_len"
     if [ -f "$ROOT/corpora/fuzz/$target.dict" ]; then echo "dict = $target.dict"; fi
   } >"$OUT/$target.options"
 done
-echo "build.sh: built $(ls "$ROOT"/fuzz/fuzz_*.cpp | wc -l) targets into $OUT"
+echo "build.sh: built ${#targets[@]} targets into $OUT"

@@ -5,8 +5,9 @@
 //   vgc fuzz --to-text STREAM          binary stream -> command file (stdout)
 //   vgc fuzz --to-binary FILE -o OUT   command file -> binary stream
 //
-// Spec: docs/fuzzing.md. TARGET is stream, text or differential (fuzz_
-// prefix optional). The libFuzzer binaries come from the clang fuzz build
+// Spec: docs/fuzzing.md. TARGET is stream, text, differential,
+// mesh_manifold, mesh_subdivision or property_<group> (fuzz_ prefix
+// optional). The libFuzzer binaries come from the clang fuzz build
 // (default: build-fuzz next to this program's build directory, or
 // $VGC_FUZZ_BUILD_DIR); the ./vgc script configures and builds it before
 // running `vgc fuzz`. A run lives in reports/fuzz/<target>/<run>/: corpus/
@@ -258,9 +259,12 @@ int run_campaign(const FuzzOptions& o) {
   static const char* const kGroups[] = {"layers", "polygons", "creases", "bones", "values", "ids", "commands"};
   bool known_group = false;
   for (const char* g : kGroups) known_group = known_group || name == std::string("property_") + g;
-  if (name != "stream" && name != "text" && name != "differential" && !known_group) {
+  // mesh_*: a mesh (fuzz/mesh_bytes.h) into the derived-geometry oracles.
+  const bool mesh = name == "mesh_manifold" || name == "mesh_subdivision";
+  if (name != "stream" && name != "text" && name != "differential" && !mesh && !known_group) {
     fmt::print(stderr,
-               "vgc fuzz: unknown target '{}': expected stream, text, differential or property_<group> "
+               "vgc fuzz: unknown target '{}': expected stream, text, differential, mesh_manifold, "
+               "mesh_subdivision or property_<group> "
                "(layers, polygons, creases, bones, values, ids, commands)\n",
                o.target);
     return 2;
@@ -375,8 +379,9 @@ int run_campaign(const FuzzOptions& o) {
     Crash& c = unique[sig];
     c.signature = sig;
     c.files.push_back(f);
-    // A target finding prints the commands up to the failing one (finding.h).
-    const std::string open = "----8<---- counterexample.vgc\n";
+    // A target finding prints the commands up to the failing one (finding.h),
+    // a mesh target the mesh (mesh_bytes.h).
+    const std::string open = mesh ? "----8<---- mesh.txt\n" : "----8<---- counterexample.vgc\n";
     if (auto a = out.find(open); a != std::string::npos) {
       if (auto b = out.find("----8<----\n", a + open.size()); b != std::string::npos)
         c.printed[f] = out.substr(a + open.size(), b - a - open.size());
@@ -391,12 +396,18 @@ int run_campaign(const FuzzOptions& o) {
     std::string bytes;
     read_file(rep, &bytes);
     ++k;
-    const fs::path cex_file = cex / fmt::format("crash-{}.{}", k, name == "text" ? "txt" : "vgc");
+    const fs::path cex_file = cex / fmt::format("crash-{}.{}", k, name == "text" ? "txt" : mesh ? "mesh.txt" : "vgc");
     std::string replay_fuzzer = (plugin.empty() ? "" : "VGC_FUZZ_PLUGIN=" + shell_quote(plugin) + " ") +
                                 shell_quote(binary.string()) + " " + shell_quote(rep.string());
     std::string replay;
     if (name == "text") {
       write_file(cex_file, bytes);  // the input is text already
+      replay = replay_fuzzer;
+    } else if (mesh) {  // no command file: a mesh the node may not hold; the input replays
+      std::string text = "# vgc fuzz " + target + " counterexample: " + sig + "\n# from " + rep.string() + "\n";
+      auto printed = c.printed.find(rep);
+      text += printed != c.printed.end() ? printed->second : "# the target printed no mesh (a sanitizer finding)\n";
+      write_file(cex_file, text);
       replay = replay_fuzzer;
     } else {
       std::string text = "# vgc fuzz " + target + " counterexample: " + sig + "\n# from " + rep.string() +
@@ -512,7 +523,7 @@ int run_fuzz(const FuzzOptions& o) {
     return write_file(o.output, bytes) ? 0 : 2;
   }
   if (o.target.empty()) {
-    fmt::print(stderr, "vgc fuzz: name a target (stream, text, differential) or use --to-text / --to-binary\n");
+    fmt::print(stderr, "vgc fuzz: name a target (stream, text, differential, mesh_manifold, mesh_subdivision, property_<group>) or use --to-text / --to-binary\n");
     return 2;
   }
   return run_campaign(o);
@@ -521,7 +532,7 @@ int run_fuzz(const FuzzOptions& o) {
 void add_fuzz(CLI::App& app, int* exit_code) {
   auto opts = std::make_shared<FuzzOptions>();
   CLI::App* sub = app.add_subcommand("fuzz", "Run a libFuzzer campaign on a fuzz target, or convert fuzz inputs");
-  sub->add_option("target", opts->target, "stream, text or differential");
+  sub->add_option("target", opts->target, "stream, text, differential, mesh_manifold, mesh_subdivision or property_<group>");
   sub->add_option("--time", opts->time_s, "Campaign length in seconds (default 60)");
   sub->add_option("--jobs", opts->jobs, "Parallel fuzzing jobs (libFuzzer -fork=N, default 1)");
   sub->add_option("--impl", opts->impl, "differential: the implementation under test, plugin:PATH");

@@ -1,0 +1,130 @@
+// subdivision_comparison.cpp — see subdivision_comparison.h.
+#include "subdivision_comparison.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <map>
+#include <numeric>
+#include <sstream>
+
+namespace vgc {
+
+namespace {
+
+std::uint64_t pair_key(int a, int b) {
+  if (a > b) std::swap(a, b);
+  return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) | static_cast<std::uint32_t>(b);
+}
+
+}  // namespace
+
+std::string compare_subdivision_by_parent(const std::vector<SubdivisionLevel>& ref, const OsdResult& osd,
+                                          double tolerance, bool face_points) {
+  std::ostringstream why;
+  if (!osd.ok) return "oracle failed: " + osd.failure;
+  if (ref.size() != osd.levels.size()) return "level count differs";
+  // ref index -> osd index, per level.
+  std::vector<int> vmap(static_cast<std::size_t>(ref[0].vertex_count()));
+  std::iota(vmap.begin(), vmap.end(), 0);
+  std::vector<int> fmap(static_cast<std::size_t>(ref[0].face_count()));
+  std::iota(fmap.begin(), fmap.end(), 0);
+  for (std::size_t l = 0; l < ref.size(); ++l) {
+    const SubdivisionLevel& r = ref[l];
+    const OsdLevel& o = osd.levels[l];
+    if (r.vertex_count() != static_cast<int>(o.positions.size()) || r.face_count() != static_cast<int>(o.face_sizes.size()) ||
+        r.edge_count() != static_cast<int>(o.edges.size())) {
+      why << "level " << l << ": counts differ (v " << r.vertex_count() << "/" << o.positions.size() << ", f "
+          << r.face_count() << "/" << o.face_sizes.size() << ", e " << r.edge_count() << "/" << o.edges.size() << ")";
+      return why.str();
+    }
+    if (l > 0) {
+      const SubdivisionLevel& rp = ref[l - 1];
+      const OsdLevel& op = osd.levels[l - 1];
+      std::map<std::uint64_t, int> oedge;
+      for (std::size_t e = 0; e < op.edges.size(); ++e) oedge[pair_key(op.edges[e][0], op.edges[e][1])] = static_cast<int>(e);
+      std::vector<int> child(static_cast<std::size_t>(r.vertex_count()), -1);
+      for (int v = 0; v < rp.vertex_count(); ++v)
+        child[static_cast<std::size_t>(r.child_of_parent_vertex[v])] = o.child_of_parent_vertex[vmap[v]];
+      for (int e = 0; e < rp.edge_count(); ++e) {
+        auto it = oedge.find(pair_key(vmap[rp.edges[e][0]], vmap[rp.edges[e][1]]));
+        if (it == oedge.end()) {
+          why << "level " << l - 1 << ": edge " << e << " has no OpenSubdiv counterpart";
+          return why.str();
+        }
+        child[static_cast<std::size_t>(r.child_of_parent_edge[e])] = o.child_of_parent_edge[it->second];
+      }
+      if (face_points)
+        for (int f = 0; f < rp.face_count(); ++f)
+          child[static_cast<std::size_t>(r.child_of_parent_face[f])] = o.child_of_parent_face[fmap[f]];
+      vmap = child;
+      // Child faces: same vertices up to rotation.
+      std::vector<int> ooffsets(o.face_sizes.size() + 1, 0);
+      for (std::size_t g = 0; g < o.face_sizes.size(); ++g) ooffsets[g + 1] = ooffsets[g] + o.face_sizes[g];
+      std::vector<int> cf(static_cast<std::size_t>(r.face_count()), -1);
+      for (int f = 0; f < rp.face_count(); ++f) {
+        const auto& ochildren = o.child_faces_of_parent_face[fmap[f]];
+        const int first = r.first_child_of_parent_face[f];
+        const int n = (f + 1 < rp.face_count() ? r.first_child_of_parent_face[f + 1] : r.face_count()) - first;
+        if (n != static_cast<int>(ochildren.size())) return "child face counts differ";
+        for (int k = first; k < first + n; ++k) {
+          std::vector<int> rv;
+          for (int c = 0; c < r.face_sizes[k]; ++c) rv.push_back(vmap[r.face_vertices[r.face_offsets[k] + c]]);
+          for (int oc : ochildren) {
+            const int ooff = ooffsets[static_cast<std::size_t>(oc)];
+            std::vector<int> ov(o.face_vertices.begin() + ooff, o.face_vertices.begin() + ooff + o.face_sizes[oc]);
+            if (ov.size() != rv.size()) continue;
+            for (std::size_t rot = 0; rot < ov.size(); ++rot) {
+              std::rotate(ov.begin(), ov.begin() + 1, ov.end());
+              if (ov == rv) cf[static_cast<std::size_t>(k)] = oc;
+            }
+          }
+          if (cf[static_cast<std::size_t>(k)] < 0) {
+            why << "level " << l << ": child face " << k << " of parent face " << f << " has no OpenSubdiv counterpart";
+            return why.str();
+          }
+        }
+      }
+      fmap = cf;
+    }
+    std::vector<int> seen(o.positions.size(), 0);
+    for (int v = 0; v < r.vertex_count(); ++v) {
+      const int ov = vmap[static_cast<std::size_t>(v)];
+      if (ov < 0 || ov >= static_cast<int>(o.positions.size()) || seen[static_cast<std::size_t>(ov)]++) {
+        why << "level " << l << ": vertex " << v << " is not matched one to one";
+        return why.str();
+      }
+      double d = 0;
+      for (int k = 0; k < 3; ++k) d = std::max(d, std::abs(r.positions[v][k] - o.positions[ov][k]));
+      if (!(d <= tolerance)) {
+        why << "level " << l << ": vertex " << v << " differs by " << d << " (ref " << r.positions[v][0] << ","
+            << r.positions[v][1] << "," << r.positions[v][2] << " osd " << o.positions[ov][0] << ","
+            << o.positions[ov][1] << "," << o.positions[ov][2] << ")";
+        return why.str();
+      }
+      if (r.vertex_sharpness[v] != o.vertex_sharpness[ov]) {
+        why << "level " << l << ": vertex " << v << " sharpness " << r.vertex_sharpness[v] << " vs "
+            << o.vertex_sharpness[ov];
+        return why.str();
+      }
+    }
+    std::map<std::uint64_t, int> oedge;
+    for (std::size_t e = 0; e < o.edges.size(); ++e) oedge[pair_key(o.edges[e][0], o.edges[e][1])] = static_cast<int>(e);
+    for (int e = 0; e < r.edge_count(); ++e) {
+      auto it = oedge.find(pair_key(vmap[r.edges[e][0]], vmap[r.edges[e][1]]));
+      if (it == oedge.end() || r.edge_sharpness[e] != o.edge_sharpness[it->second]) {
+        why << "level " << l << ": edge " << e << " missing or sharpness differs";
+        return why.str();
+      }
+    }
+    for (int f = 0; f < r.face_count(); ++f)
+      if (r.face_hole[f] != o.face_hole[fmap[f]]) {
+        why << "level " << l << ": face " << f << " hole flag differs";
+        return why.str();
+      }
+  }
+  return {};
+}
+
+
+}  // namespace vgc
