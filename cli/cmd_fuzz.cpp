@@ -207,11 +207,34 @@ std::string run_capture(const std::string& command) {
   return out;
 }
 
-// A one-line signature of a crash, from the output of re-running it: the
-// fuzz target's own FINDING line (digits folded, data in quotes dropped),
-// else the sanitizer's error kind and first frame of ours, else the first
-// UBSan "runtime error", else "unknown".
-std::string crash_signature(const std::string& output) {
+// Digits folded to N, except inside clause ids (BONE-FOREST-1), which stay
+// exact: "bones.stateful: BONE-FOREST-1 (MUST, fail): bone 3" becomes
+// "bones.stateful: BONE-FOREST-1 (MUST, fail): bone N".
+std::string fold_digits_keep_clauses(const std::string& s) {
+  static const std::regex digits(R"(\d+)");
+  static const std::regex clause(R"(\b[A-Z][A-Z0-9]*(-[A-Z0-9]+)*-[0-9]+\b)");
+  std::string out;
+  auto from = s.cbegin();
+  for (std::sregex_iterator it(s.begin(), s.end(), clause), end; it != end; ++it) {
+    out += std::regex_replace(std::string(from, (*it)[0].first), digits, "N");
+    out += it->str();
+    from = (*it)[0].second;
+  }
+  return out + std::regex_replace(std::string(from, s.cend()), digits, "N");
+}
+
+// How a crash is signed, from the output of re-running it: `key` groups
+// crashes (digits folded everywhere, clause ids included, so that one bug
+// reached with different ids or counts is one crash); `shown` is what the
+// summary prints, the same text with clause ids exact.
+struct CrashSignature {
+  std::string key, shown;
+};
+
+// The fuzz target's own FINDING line (data in quotes dropped), else the
+// sanitizer's error kind and first frame of ours, else the first UBSan
+// "runtime error", else "unknown".
+CrashSignature crash_signature(const std::string& output) {
   std::istringstream in(output);
   std::string line, kind;
   static const std::regex digits(R"(\d+)");
@@ -219,11 +242,13 @@ std::string crash_signature(const std::string& output) {
     if (auto at = line.find("vgc-fuzz: FINDING in "); at != std::string::npos) {
       std::string s = line.substr(at + 10);
       s = s.substr(0, s.find('"'));
-      return std::regex_replace(s, digits, "N");
+      return {std::regex_replace(s, digits, "N"), fold_digits_keep_clauses(s)};
     }
     if (auto at = line.find("runtime error: "); at != std::string::npos) {
       // "file:line:col: runtime error: what"
-      return "ubsan: " + std::regex_replace(line.substr(0, at), std::regex(R"(^.*/)"), "") + line.substr(at + 15);
+      const std::string u =
+          "ubsan: " + std::regex_replace(line.substr(0, at), std::regex(R"(^.*/)"), "") + line.substr(at + 15);
+      return {u, u};
     }
     if (auto at = line.find("ERROR: AddressSanitizer: "); at != std::string::npos && kind.empty()) {
       kind = line.substr(at + 25);
@@ -240,11 +265,12 @@ std::string crash_signature(const std::string& output) {
             f.find("__asan") == std::string::npos && f.find("__ubsan") == std::string::npos &&
             f != "abort" && f != "raise" && f != "__GI_abort" && f != "__GI_raise" &&
             f.find("pthread_kill") == std::string::npos && f.find("libc.so") == std::string::npos)
-          return kind + " in " + f;
+          return {kind + " in " + f, kind + " in " + f};
       }
     }
   }
-  return kind.empty() ? "unknown" : kind;
+  const std::string k = kind.empty() ? "unknown" : kind;
+  return {k, k};
 }
 
 std::string normalize_target(std::string t) {
@@ -359,7 +385,8 @@ int run_campaign(const FuzzOptions& o) {
 
   // Crashes: re-run each saved input alone, sign it, keep the smallest per signature.
   struct Crash {
-    std::string signature;
+    std::string signature;                 // the dedup key (digits folded)
+    std::map<fs::path, std::string> shown;  // per input: its signature with exact clause ids
     std::vector<fs::path> files;
     std::map<fs::path, std::string> printed;  // the target's own counterexample block, per input
   };
@@ -375,9 +402,10 @@ int run_campaign(const FuzzOptions& o) {
     if (!plugin.empty()) env = "VGC_FUZZ_PLUGIN=" + shell_quote(plugin) + " ";
     const std::string out =
         run_capture("timeout 60 env " + env + shell_quote(binary.string()) + " " + shell_quote(f.string()) + " 2>&1");
-    const std::string sig = crash_signature(out);
-    Crash& c = unique[sig];
-    c.signature = sig;
+    const CrashSignature sig = crash_signature(out);
+    Crash& c = unique[sig.key];
+    c.signature = sig.key;
+    c.shown[f] = sig.shown;
     c.files.push_back(f);
     // A target finding prints the commands up to the failing one (finding.h),
     // a mesh target the mesh (mesh_bytes.h).
@@ -393,6 +421,12 @@ int run_campaign(const FuzzOptions& o) {
     std::sort(c.files.begin(), c.files.end(),
               [](const fs::path& a, const fs::path& b) { return fs::file_size(a) < fs::file_size(b); });
     const fs::path& rep = c.files.front();
+    // Shown: the smallest input's signature, then any other exact form in
+    // the group (BONE-FOREST-1 and BONE-FOREST-2 share a key).
+    const std::string shown = c.shown[rep];
+    std::vector<std::string> also;
+    for (const auto& [file, text] : c.shown)
+      if (text != shown && std::find(also.begin(), also.end(), text) == also.end()) also.push_back(text);
     std::string bytes;
     read_file(rep, &bytes);
     ++k;
@@ -410,7 +444,7 @@ int run_campaign(const FuzzOptions& o) {
       write_file(cex_file, text);
       replay = replay_fuzzer;
     } else {
-      std::string text = "# vgc fuzz " + target + " counterexample: " + sig + "\n# from " + rep.string() +
+      std::string text = "# vgc fuzz " + target + " counterexample: " + shown + "\n# from " + rep.string() +
                          "\n# replay: vgc apply " + cex_file.string() + "\n";
       auto printed = c.printed.find(rep);
       if (printed != c.printed.end()) text += printed->second;
@@ -422,7 +456,9 @@ int run_campaign(const FuzzOptions& o) {
                               shell_quote(plugin.empty() ? std::string("reference") : "plugin:" + plugin)
                         : "vgc apply " + shell_quote(cex_file.string());
     }
-    crashes_json.push_back({{"signature", sig},
+    crashes_json.push_back({{"signature", shown},
+                            {"also", also},
+                            {"dedup_key", sig},
                             {"inputs", c.files.size()},
                             {"input", rep.string()},
                             {"counterexample", cex_file.string()},
@@ -466,11 +502,13 @@ int run_campaign(const FuzzOptions& o) {
       crash_files, unique.size(), cmdline);
   if (!unique.empty()) {
     md += "## Crashes\n\n";
-    for (const auto& c : crashes_json)
-      md += fmt::format("- **{}** ({} inputs)\n  - counterexample: `{}`\n  - replay: `{}`\n  - replay the input: `{}`\n",
-                        c["signature"].get<std::string>(), c["inputs"].get<std::size_t>(),
+    for (const auto& c : crashes_json) {
+      md += fmt::format("- **{}** ({} inputs)\n", c["signature"].get<std::string>(), c["inputs"].get<std::size_t>());
+      for (const auto& a : c["also"]) md += fmt::format("  - also: {}\n", a.get<std::string>());
+      md += fmt::format("  - counterexample: `{}`\n  - replay: `{}`\n  - replay the input: `{}`\n",
                         c["counterexample"].get<std::string>(), c["replay"].get<std::string>(),
                         c["replay_fuzzer"].get<std::string>());
+    }
   }
   write_file(dir / "summary.md", md);
   fmt::print("{}", md);

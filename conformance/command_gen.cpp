@@ -6,6 +6,8 @@
 #include <cstring>
 #include <limits>
 
+#include "gen/arbitrary_command.h"  // gen_quaternion_extreme
+
 namespace vgc {
 namespace {
 
@@ -20,8 +22,9 @@ struct View {
   std::vector<std::uint16_t> vertex_uint_layers, vertex_real_layers, vertex_xyz_layers;
   std::vector<std::uint16_t> corner_uint_layers, corner_real_layers, face_u8_layers, face_u32_layers,
       face_real_layers;
-  std::vector<std::string> vertex_uint_names, vertex_real_names, corner_uint_names;
+  std::vector<std::string> vertex_uint_names, vertex_real_names, corner_uint_names, face_uint_names;
   std::vector<std::uint16_t> bones;
+  std::string vertex_crease_layer, edge_crease_layer;  // the crease settings' names ("" for a constant)
 };
 
 View view_of(const Node& m) {
@@ -48,11 +51,16 @@ View view_of(const Node& m) {
         break;
       case LayerType::PolygonCornerReal: v.corner_real_layers.push_back(id); break;
       case LayerType::PolygonFaceUint8: v.face_u8_layers.push_back(id); break;
-      case LayerType::PolygonFaceUint32: v.face_u32_layers.push_back(id); break;
+      case LayerType::PolygonFaceUint32:
+        v.face_u32_layers.push_back(id);
+        v.face_uint_names.push_back(l.name);
+        break;
       case LayerType::PolygonFaceReal: v.face_real_layers.push_back(id); break;
     }
   }
   for (const auto& [id, b] : m.bones()) v.bones.push_back(id);
+  v.vertex_crease_layer = m.vertex_crease().layer;
+  v.edge_crease_layer = m.edge_crease().layer;
   return v;
 }
 
@@ -287,9 +295,15 @@ Gen<Command> write_value(const View& v) {
 Gen<Command> set_crease(const View& v) {
   return gen::exec([v]() -> Command {
     const bool vertex = *gen::arbitrary<bool>();
+    // The names of existing layers a crease could read (of the right type
+    // or not), so that settings and layers meet.
+    std::vector<std::string> existing = vertex ? v.vertex_uint_names : v.corner_uint_names;
+    const auto& wrong = vertex ? v.vertex_real_names : v.face_uint_names;
+    existing.insert(existing.end(), wrong.begin(), wrong.end());
     std::string name = *gen::weightedOneOf<std::string>({
         {3, gen::just(std::string(""))},
         {5, gen::just(std::string(vertex ? "vcrease" : "ecrease"))},
+        {existing.empty() ? 0u : 4u, existing.empty() ? gen::just(std::string()) : gen::elementOf(existing)},
         {2, layer_name(v)},
     });
     if (vertex) return cmd::CreaseSetVertex{name, *crease_value()};
@@ -326,8 +340,17 @@ Gen<Command> write_crease_values(const View& v) {
                                   double(*gen::inRange(0, 1000))};
     if (kind == 2 && !v.face_u32_layers.empty())
       return cmd::PolygonSetFaceUint32{*gen::elementOf(v.face_u32_layers), *live_id(v.polygons), *crease_value()};
-    cmd::PolygonSetCornerUint32 c{*typed_layer(v.corner_uint_layers, v), *live_id(v.polygons), {}};
+    // Corner values: mostly into the layer the edge setting names, and
+    // mostly not all equal (an edge must differ from its neighbour for
+    // the corner-to-edge rule to show).
+    std::vector<std::uint16_t> named;
+    for (std::size_t i = 0; i < v.corner_uint_layers.size(); ++i)
+      if (v.corner_uint_names[i] == v.edge_crease_layer) named.push_back(v.corner_uint_layers[i]);
+    const std::uint16_t layer = named.empty() ? *typed_layer(v.corner_uint_layers, v)
+                                              : *pick<std::uint16_t>(named, typed_layer(v.corner_uint_layers, v));
+    cmd::PolygonSetCornerUint32 c{layer, *live_id(v.polygons), {}};
     for (auto& x : c.v) x = *crease_value();
+    if (c.v[0] == c.v[1] && c.v[1] == c.v[2] && *gen::inRange(0, 4) != 0) c.v[*gen::inRange(0, 3)] ^= 0xFFFFFFFFu;
     return c;
   });
 }
@@ -368,6 +391,10 @@ Gen<Command> create_bone(const View& v) {
          })},
         {1, gen::elementOf(std::vector<std::array<double, 4>>{{0, 0, 0, 0},
                                                 {std::numeric_limits<double>::quiet_NaN(), 0, 0, 1}})},
+        // Norms that underflow or overflow, subnormals, signed zeros, scaled
+        // quaternions: the pose's normalization is where an implementation
+        // divides by zero or loses precision (docs/commands.md 4.8).
+        {1, ::vgc::gen::gen_quaternion_extreme()},
     });
     c.rot_label = *gen::elementOf(std::vector<std::string>{"", "curve_r"});
     return c;
@@ -397,29 +424,40 @@ Gen<Command> gen_command(const Node& model, Focus focus) {
   using W = std::pair<std::size_t, Gen<Command>>;
   switch (focus) {
     case Focus::Layers:
-      return gen::weightedOneOf<Command>({W{6, create_layer(v)}, W{3, destroy_layer(v)}, W{1, subscribe(v)},
+      return rc::gen::weightedOneOf<Command>({W{6, create_layer(v)}, W{3, destroy_layer(v)}, W{1, subscribe(v)},
                                           W{4, set_vertex(v)}, W{2, delete_vertex(v)}, W{3, set_polygon(v)},
                                           W{1, delete_polygon(v)}, W{2, write_value(v)}});
     case Focus::Polygons:
-      return gen::weightedOneOf<Command>({W{6, set_vertex(v)}, W{2, delete_vertex(v)}, W{7, set_polygon(v)},
+      return rc::gen::weightedOneOf<Command>({W{6, set_vertex(v)}, W{2, delete_vertex(v)}, W{7, set_polygon(v)},
                                           W{2, delete_polygon(v)}, W{1, create_layer(v)}});
-    case Focus::Creases:
-      return gen::weightedOneOf<Command>({W{4, set_vertex(v)}, W{4, set_polygon(v)}, W{3, set_crease(v)},
-                                          W{2, create_crease_layer(v)}, W{5, write_crease_values(v)},
-                                          W{1, destroy_layer(v)}, W{1, delete_vertex(v)}});
+    case Focus::Creases: {
+      // A crease rule is seen only in a state with all of: polygons, a
+      // crease layer, a setting naming it, and unequal values in it (equal
+      // ones hide an off-by-one corner). Weigh toward the missing piece, so
+      // that short sequences get there too; a default value fills every
+      // new slot alike, so writes weigh most once the rest is in place.
+      const bool mesh = v.polygons.size() >= 1, named_edge = !v.edge_crease_layer.empty(),
+                 named_vertex = !v.vertex_crease_layer.empty(),
+                 crease_layers = !v.corner_uint_layers.empty() && !v.vertex_uint_layers.empty();
+      const std::size_t write = mesh && (named_edge || named_vertex) ? 10 : 3;
+      return rc::gen::weightedOneOf<Command>(
+          {W{v.vertices.size() >= 4 ? 3u : 6u, set_vertex(v)}, W{mesh ? 3u : 6u, set_polygon(v)},
+           W{named_edge && named_vertex ? 2u : 4u, set_crease(v)}, W{crease_layers ? 1u : 3u, create_crease_layer(v)},
+           W{write, write_crease_values(v)}, W{1, destroy_layer(v)}, W{1, delete_vertex(v)}});
+    }
     case Focus::Bones:
-      return gen::weightedOneOf<Command>({W{2, bone_layer(v)}, W{6, create_bone(v)}, W{2, destroy_bone(v)},
+      return rc::gen::weightedOneOf<Command>({W{2, bone_layer(v)}, W{6, create_bone(v)}, W{2, destroy_bone(v)},
                                           W{1, destroy_layer(v)}, W{1, set_vertex(v)}});
     case Focus::Values:
-      return gen::weightedOneOf<Command>({W{3, create_layer(v)}, W{3, set_vertex(v)}, W{3, set_polygon(v)},
+      return rc::gen::weightedOneOf<Command>({W{3, create_layer(v)}, W{3, set_vertex(v)}, W{3, set_polygon(v)},
                                           W{8, write_value(v)}});
     case Focus::Ids:
-      return gen::weightedOneOf<Command>({W{3, create_layer(v)}, W{4, set_vertex(v)}, W{3, set_polygon(v)},
+      return rc::gen::weightedOneOf<Command>({W{3, create_layer(v)}, W{4, set_vertex(v)}, W{3, set_polygon(v)},
                                           W{2, create_bone(v)}, W{1, bone_layer(v)}, W{2, delete_vertex(v)}});
     case Focus::Anything:
       break;
   }
-  return gen::weightedOneOf<Command>(
+  return rc::gen::weightedOneOf<Command>(
       {W{3, create_layer(v)}, W{2, destroy_layer(v)}, W{1, subscribe(v)}, W{4, set_vertex(v)},
        W{2, delete_vertex(v)}, W{4, set_polygon(v)}, W{1, delete_polygon(v)}, W{4, write_value(v)},
        W{2, set_crease(v)}, W{1, create_crease_layer(v)}, W{2, create_bone(v)}, W{1, destroy_bone(v)},

@@ -11,6 +11,16 @@
 // wrong-typed layer, a corner repeated, a NaN with a payload) where the
 // rules are decided. Everything they make is still a valid test: any
 // command may be sent to any node.
+//
+// Some rules show only in a state several commands build together; there
+// the weights follow the state. Creases: polygons, a crease layer, a
+// setting naming it and unequal values in it are all needed before an
+// off-by-one corner (CREASE-EDGE-LAYER-1) is visible, so the focus weighs
+// toward whichever piece is missing and, once they are there, toward
+// unequal corner writes into the named layer. Bones: about one rotation in
+// ten is extreme (gen::gen_quaternion_extreme: norms that underflow to 0 or
+// overflow, subnormals, signed zeros), where a pose's normalization
+// divides by zero or loses precision.
 #pragma once
 
 #include <rapidcheck.h>

@@ -26,6 +26,7 @@
 
 #include <rapidcheck.h>
 
+#include <array>
 #include <cfloat>
 #include <cmath>
 #include <cstdint>
@@ -100,6 +101,50 @@ inline rc::Gen<float> gen_f32_any() {
                          return bits_to<float>((p.first ? 0x80000000u : 0u) | (p.second & 0x007FFFFFu));
                        })},
       {1, rc::gen::map(rc::gen::arbitrary<std::uint32_t>(), [](std::uint32_t b) { return bits_to<float>(b); })},
+  });
+}
+
+// Quaternions (x, y, z, w) where a pose computation breaks: components
+// whose squares underflow (every |c| below ~1.5e-154: the plain norm is 0)
+// or overflow (a |c| above ~1.3e154, or four near 1e154 whose squares sum
+// past DBL_MAX: the norm is infinite), subnormals and squares that are
+// subnormal (1e-160: the norm is finite but inexact), ordinary quaternions
+// scaled by 2^k for k across the whole exponent range, the zero quaternion
+// with any signs of zero and a non-finite component (both rejected,
+// BONE-VALUE-1). docs/commands.md 4.8 says what the reference does with
+// each: a norm of 0 or infinity normalizes to the identity.
+inline rc::Gen<std::array<double, 4>> gen_quaternion_extreme() {
+  using Q = std::array<double, 4>;
+  using L = std::numeric_limits<double>;
+  const rc::Gen<double> zero = rc::gen::element(0.0, -0.0);
+  return rc::gen::weightedOneOf<Q>({
+      {4, rc::gen::exec([zero] {  // one extreme component, the others zero
+         Q q{*zero, *zero, *zero, *zero};
+         q[static_cast<std::size_t>(*rc::gen::inRange(0, 4))] = *rc::gen::element(
+             1e-300, -1e-300, 1e300, -1e300, L::denorm_min(), -L::denorm_min(), DBL_MIN, DBL_MAX, -DBL_MAX,
+             1e-160, 1e-154, 1.5e-154, 1e154, 1.3e154, 1.4e154);
+         return q;
+       })},
+      {3, rc::gen::exec([] {  // an ordinary quaternion scaled far up or down
+         Q q;
+         for (double& c : q) c = *rc::gen::inRange(-4, 5);
+         if (q[0] == 0 && q[1] == 0 && q[2] == 0 && q[3] == 0) q[3] = 1;
+         const int k = *rc::gen::weightedOneOf<int>(
+             {{1, rc::gen::inRange(-1074, -500)}, {1, rc::gen::inRange(500, 1024)}, {1, rc::gen::inRange(-520, -505)}});
+         for (double& c : q) c = std::ldexp(c, k);  // may round to 0 or overflow to infinity
+         return q;
+       })},
+      {2, rc::gen::exec([] {  // four equal components: each square finite, their sum not
+         const double c = *rc::gen::element(1e154, -1e154, 7e153, 1e-154, 5e-155, 1e-162);
+         return Q{c, c, c, *rc::gen::element(c, -c)};
+       })},
+      {1, rc::gen::exec([zero] { return Q{*zero, *zero, *zero, *zero}; })},  // zero, rejected
+      {1, rc::gen::exec([] {  // one non-finite component, rejected
+         Q q{0, 0, 0, 1};
+         q[static_cast<std::size_t>(*rc::gen::inRange(0, 4))] =
+             *rc::gen::element(L::quiet_NaN(), -L::quiet_NaN(), L::infinity(), -L::infinity());
+         return q;
+       })},
   });
 }
 
@@ -253,10 +298,28 @@ rc::Gen<Id> existing_or(const Map& m, rc::Gen<Id> otherwise) {
 // existing ids preferred, corners drawn from live vertices, names from
 // gen_small_name(); about one command in eight is fully arbitrary
 // (gen_command()). The node is read only while generating.
+//
+// Layer ids: ids 0 and 1 are the base layers, which always exist and can
+// be neither created nor destroyed (LAYER-BASE-2). Drawing a layer_create's
+// id from the existing layers would name them 4 times in 5 on a fresh node,
+// and almost every sequence would stay without weight, crease or data
+// layers, hence without bones. So layer_create mostly draws a non-base id,
+// 2..5 (a free one, or an existing one to re-create), sometimes a base id
+// or "pick an id"; writes draw from the existing layers, base ones included
+// (vertex_set_xyz on layer 0 is how vertices are made), or from 0..5.
 inline rc::Gen<Command> gen_command_for(const Node& node) {
   namespace rg = rc::gen;
   using rc::Gen;
   const Gen<std::uint16_t> layer = detail::existing_or(node.layers(), rg::inRange<std::uint16_t>(0, 6));
+  std::vector<std::uint16_t> non_base;
+  for (const auto& kv : node.layers())
+    if (kv.first >= 2) non_base.push_back(kv.first);
+  const Gen<std::uint16_t> new_layer = rg::weightedOneOf<std::uint16_t>({
+      {6, rg::inRange<std::uint16_t>(2, 6)},
+      {non_base.empty() ? 0u : 2u, non_base.empty() ? rg::just(std::uint16_t{2}) : rg::elementOf(non_base)},
+      {1, rg::element<std::uint16_t>(0, 1)},
+      {1, rg::just(kNone16)},
+  });
   const Gen<std::uint32_t> vertex = detail::existing_or(
       node.vertices(), rg::weightedOneOf<std::uint32_t>({{8, rg::inRange<std::uint32_t>(0, 8)},
                                                           {1, rg::just(kNone32)}}));
@@ -297,7 +360,7 @@ inline rc::Gen<Command> gen_command_for(const Node& node) {
 
   return rg::weightedOneOf<Command>({
       {1, gen_command()},
-      {3, rg::exec([=] { return Command{cmd::LayerCreate{*layer, *name, *type, *value, *real}}; })},
+      {3, rg::exec([=] { return Command{cmd::LayerCreate{*new_layer, *name, *type, *value, *real}}; })},
       {1, rg::exec([=] { return Command{cmd::LayerDestroy{*layer}}; })},
       {1, rg::exec([=] { return Command{cmd::LayerSubscribe{*layer, *gen_real_format_byte()}}; })},
       {1, rg::exec([=] { return Command{cmd::LayerUnsubscribe{*layer}}; })},
@@ -326,7 +389,9 @@ inline rc::Gen<Command> gen_command_for(const Node& node) {
          b.reference = *reference;
          b.parent = *bone;
          b.pos = {*real, *real, *real};
-         b.rot = {*real, *real, *real, *real};
+         b.rot = *rg::weightedOneOf<std::array<double, 4>>(
+             {{9, rg::exec([=] { return std::array<double, 4>{*real, *real, *real, *real}; })},
+              {1, gen_quaternion_extreme()}});
          return Command{b};
        })},
       {1, rg::exec([=] { return Command{cmd::BoneDestroy{*bone}}; })},
