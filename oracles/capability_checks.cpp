@@ -452,7 +452,12 @@ std::optional<Finding> check_loop(const Node& model, Implementation& sut, int le
   return std::nullopt;
 }
 
-std::optional<Finding> check_edits(const Node& model, Implementation& sut, int level, std::uint32_t draw) {
+namespace {
+
+// One edit of `kind` (0 hole, 1 set, 2 add 0, 3 add) chosen from `draw`;
+// see check_edits.
+std::optional<Finding> check_one_edit(const Node& model, Implementation& sut, int level, std::uint32_t draw,
+                                      int kind) {
   static const char* kClause = "EDIT-HIERARCHY-1";
   const MeshArrays mesh = remove_unused_vertices(extract_mesh(model));
   if (mesh.face_count() == 0) return std::nullopt;  // no face for an edit to name
@@ -472,7 +477,6 @@ std::optional<Finding> check_edits(const Node& model, Implementation& sut, int l
     return static_cast<int>(v);
   };
   enum { kHole, kSet, kAddZero, kAdd };
-  const int kind = take(4);
   const int edit_level = take(static_cast<std::uint64_t>(level) + 1);
   HierarchicalEdit e;
   e.face.base_face = take(static_cast<std::uint64_t>(mesh.face_count()));
@@ -634,6 +638,17 @@ std::optional<Finding> check_edits(const Node& model, Implementation& sut, int l
   for (std::size_t f = 0; f < kept_faces.size(); ++f) kept_faces[f] = want.face_hole[f] ? 0 : 1;
   return faces_among(got, want.positions, want.face_sizes, want.face_vertices, kept_faces, request,
                      "the reference's hierarchical edit");
+}
+
+}  // namespace
+
+std::optional<Finding> check_edits(const Node& model, Implementation& sut, int level, std::uint32_t draw) {
+  // Every kind in each case, each with its own path from the same draw, so
+  // that a fault in one kind does not hide behind the others' cases.
+  for (int kind = 0; kind < 4; ++kind)
+    if (auto f = check_one_edit(model, sut, level, draw + 0x632BE5ABu * static_cast<std::uint32_t>(kind), kind))
+      return f;
+  return std::nullopt;
 }
 
 void register_capability_checks() {

@@ -64,8 +64,9 @@ std::optional<Finding> check_normals(const Node& model, Implementation& sut);
 std::optional<Finding> check_loop(const Node& model, Implementation& sut, int level);
 
 // Checks sut's ?subdivide-edit <level> <edit> (spec 001 hierarchical
-// edits) on the model's polygons, for one edit chosen from `draw` (kind:
-// hole, set, add 0 or add; its level 0..`level`; the path and vertex).
+// edits) on the model's polygons, with one edit of each kind (hole, set,
+// add 0, add), each one's level 0..`level`, path and vertex chosen from
+// `draw`; the first finding is returned.
 // Oracle-backed (OpenSubdiv Catmark): a hole at level 0 against
 // OpenSubdiv's holes (vertices, kept faces as vertex cycles); a deeper hole
 // moves nothing and removes exactly its 4^(level - k) descendants, every
