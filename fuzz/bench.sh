@@ -10,18 +10,24 @@
 set -u
 san=$1 nosan=$2 runs=${3:-20000}
 root="$(cd "$(dirname "$0")/.." && pwd)"
-printf '%-18s %-10s %10s %12s %14s\n' target build runs "exec/s(wall)" "exec/cpu-s"
-for t in fuzz_stream fuzz_text fuzz_differential; do
+printf '%-24s %-10s %10s %12s %14s\n' target build runs "exec/s(wall)" "exec/cpu-s"
+# Every target the build lists (fuzz/fuzz_targets.txt), else the first three.
+targets="fuzz_stream fuzz_text fuzz_differential"
+[ -f "$san/fuzz/fuzz_targets.txt" ] && targets=$(cat "$san/fuzz/fuzz_targets.txt")
+printf 'targets: %s\n' "$targets" >&2
+for t in $targets; do
   for b in "$san" "$nosan"; do
     label=$([ "$b" = "$san" ] && echo asan+ubsan || echo none)
     work=$(mktemp -d)
     cp "$root/corpora/fuzz/$t"/* "$work/" 2>/dev/null
-    out=$( { /usr/bin/time -f "CPU %U %S" taskset -c 0 "$b/fuzz/$t" -seed=1 -runs="$runs" \
-             -dict="$root/corpora/fuzz/$t.dict" "$work" ; } 2>&1 )
+    opts=(-seed=1 -runs="$runs")
+    [ -f "$root/corpora/fuzz/$t.dict" ] && opts+=(-dict="$root/corpora/fuzz/$t.dict")
+    case "$t" in fuzz_mesh_*) opts+=(-max_len=256) ;; *) opts+=(-max_len=1024) ;; esac
+    out=$( { /usr/bin/time -f "CPU %U %S" taskset -c 0 "$b/fuzz/$t" "${opts[@]}" "$work" ; } 2>&1 )
     wall=$(printf '%s\n' "$out" | grep -o 'exec/s: [0-9]*' | tail -1 | cut -d' ' -f2)
     cpu=$(printf '%s\n' "$out" | awk '/^CPU /{print $2 + $3}')
     rate=$(awk -v r="$runs" -v c="$cpu" 'BEGIN{ if (c > 0) printf "%.0f", r / c; else print "?" }')
-    printf '%-18s %-10s %10s %12s %14s\n' "$t" "$label" "$runs" "${wall:-?}" "$rate"
+    printf '%-24s %-10s %10s %12s %14s\n' "$t" "$label" "$runs" "${wall:-?}" "$rate"
     rm -rf "$work"
   done
 done
