@@ -12,6 +12,7 @@
 #include "capability.h"
 #include "capability_checks.h"
 #include "capability_documents.h"
+#include "capability_test_util.h"
 #include "command_text.h"
 #include "exec_implementation.h"
 #include "faulty_implementation.h"
@@ -56,19 +57,7 @@ std::vector<Command> cube_commands() {
   return commands;
 }
 
-// The reference with the capability requests switched off: an
-// implementation that predates them.
-class NoCapabilities final : public Implementation {
- public:
-  std::string name() const override { return "no-capabilities"; }
-  Answer reset() override { return ref_.reset(); }
-  Answer apply(const Command& c) override { return ref_.apply(c); }
-  Document snapshot() override { return ref_.snapshot(); }
-  Document derived() override { return ref_.derived(); }
-
- private:
-  ReferenceImplementation ref_;
-};
+using NoCapabilities = test::ReferenceClaimingNothing;
 
 TEST(Capability, TheReferenceClaimsAllAndPassesAll) {
   ASSERT_TRUE(kRegistered);

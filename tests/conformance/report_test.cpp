@@ -14,6 +14,7 @@
 #include <set>
 #include <sstream>
 
+#include "capability_test_util.h"
 #include "command_text.h"
 #include "exec_implementation.h"  // shell_quote
 #include "faulty_implementation.h"
@@ -256,28 +257,8 @@ TEST_F(Report, NothingPartialIsLeftAndLatestPointsAtTheRun) {
     EXPECT_EQ(e.path().filename().string().find(".partial"), std::string::npos) << e.path();
 }
 
-// The reference with the capability requests switched off (the default
-// Implementation::request): it claims no optional capability.
-class ClaimsNothing final : public Implementation {
- public:
-  std::string name() const override { return "claims-nothing"; }
-  Answer reset() override { return ref_.reset(); }
-  Answer apply(const Command& c) override { return ref_.apply(c); }
-  Document snapshot() override { return ref_.snapshot(); }
-  Document derived() override { return ref_.derived(); }
-
- private:
-  ReferenceImplementation ref_;
-};
-
-// The clauses the capability properties declare (whatever their names).
-std::set<std::string> capability_clause_ids() {
-  std::set<std::string> ids;
-  for (const PropertySpec& p : property_catalog())
-    if (!p.capability.empty())
-      for (auto c : p.clauses) ids.insert(std::string(c));
-  return ids;
-}
+using test::capability_clause_ids;
+using ClaimsNothing = test::ReferenceClaimingNothing;
 
 // The cells of the summary's table row for `id` ("| ID | LEVEL | status |"), or empty.
 std::vector<std::string> table_row(const std::string& summary, const std::string& id) {

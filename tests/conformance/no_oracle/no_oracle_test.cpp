@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "../capability_test_util.h"
 #include "capability.h"
 #include "property.h"
 #include "reference_implementation.h"
@@ -27,20 +28,8 @@ namespace vgc {
 namespace {
 
 // Every capability name a property checks, and the clauses those properties declare.
-std::vector<std::string> catalog_capabilities() {
-  std::set<std::string> names;
-  for (const PropertySpec& p : property_catalog())
-    if (!p.capability.empty()) names.insert(std::string(p.capability));
-  return {names.begin(), names.end()};
-}
-
-std::set<std::string> capability_clause_ids() {
-  std::set<std::string> ids;
-  for (const PropertySpec& p : property_catalog())
-    if (!p.capability.empty())
-      for (auto c : p.clauses) ids.insert(std::string(c));
-  return ids;
-}
+using test::capability_clause_ids;
+using test::catalog_capabilities;
 
 // The reference, claiming exactly `claims` (whatever it could answer).
 class Claims final : public Implementation {
