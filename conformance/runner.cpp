@@ -157,6 +157,14 @@ const std::vector<vgc::Command>& capability_start_commands(std::string_view capa
   return capability == "loop" ? triangles : quads;
 }
 
+// Runs `check` as `request` says: check_drawn with the drawn value (0 when
+// absent) for a check that draws, check otherwise.
+std::optional<Finding> run_capability_check(const CapabilityCheck& check, const Node& model, Implementation& sut,
+                                            const CapabilityRequest& request) {
+  if (check.check_drawn) return check.check_drawn(model, sut, request.variant, request.draw.value_or(0));
+  return check.check(model, sut, request.variant);
+}
+
 // A fresh node must look like the reference's fresh node.
 std::optional<Finding> check_fresh(Implementation& sut) {
   const Answer a = sut.reset();
@@ -227,14 +235,8 @@ PropertyOutcome run_property(const PropertySpec& spec, Implementation& sut, cons
     if (capability && !c.stop && !c.abandoned && !c.deadline_hit && !past_deadline()) {
       const int variant = static_cast<int>(c.trace.size() % 3) + 1;
       CapabilityRequest request{capability->capability, variant, std::nullopt};
-      std::optional<Finding> f;
-      if (capability->check_drawn) {
-        request.draw = *rc::gen::arbitrary<std::uint32_t>();
-        f = capability->check_drawn(c.model, *c.sut, variant, *request.draw);
-      } else {
-        f = capability->check(c.model, *c.sut, variant);
-      }
-      if (f) fail_case(*f, request);
+      if (capability->check_drawn) request.draw = *rc::gen::arbitrary<std::uint32_t>();
+      if (auto f = run_capability_check(*capability, c.model, *c.sut, request)) fail_case(*f, request);
     }
   };
 
@@ -492,10 +494,7 @@ ReplayResult replay_program(const Program& program, Implementation& sut) {
                    " cannot be judged)";
     return r;
   }
-  std::optional<Finding> f;
-  if (check->check_drawn) f = check->check_drawn(model, sut, q.variant, q.draw.value_or(0));
-  else f = check->check(model, sut, q.variant);
-  if (f) {
+  if (auto f = run_capability_check(*check, model, sut, q)) {
     r.failure = f;
     r.failed_at = static_cast<int>(program.commands.size());
   }
