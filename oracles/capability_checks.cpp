@@ -167,6 +167,18 @@ std::optional<std::string> compare_with_level(const SubdivisionAnswer& got, cons
   return std::nullopt;
 }
 
+// OpenSubdiv's uniform refinement of `mesh` to `level` with `scheme`, where
+// the checks compare at all: the polygons form a polygon mesh (reference
+// mesh_topology.h; the clauses' reading) and OpenSubdiv refines them.
+// nullopt otherwise (not compared).
+std::optional<OsdResult> oracle_refinement(const MeshArrays& mesh, OsdScheme scheme, int level) {
+  const MeshTopology topo = classify_mesh(mesh);
+  if (topo.status != MeshStatus::Ok || !topo.is_polygon_mesh) return std::nullopt;
+  OsdResult osd = osd_refine_uniform(osd_input_from_mesh(mesh, scheme, level));
+  if (!osd.ok || osd.levels.size() != static_cast<std::size_t>(level) + 1) return std::nullopt;
+  return osd;
+}
+
 }  // namespace
 
 std::optional<Finding> check_classify(const Node& model, Implementation& sut) {
@@ -215,11 +227,9 @@ std::optional<Finding> check_subdivision(const Node& model, Implementation& sut,
                                   std::to_string(got.faces) + " faces");
     return std::nullopt;
   }
-  const MeshTopology topo = classify_mesh(mesh);
-  if (topo.status != MeshStatus::Ok || !topo.is_polygon_mesh) return std::nullopt;  // not compared (clause reading)
-  const OsdResult osd = osd_refine_uniform(osd_input_from_mesh(mesh, OsdScheme::CatmullClark, level));
-  if (!osd.ok || osd.levels.size() != static_cast<std::size_t>(level) + 1) return std::nullopt;
-  const OsdLevel& want = osd.levels.back();
+  const std::optional<OsdResult> osd = oracle_refinement(mesh, OsdScheme::CatmullClark, level);
+  if (!osd) return std::nullopt;  // not compared
+  const OsdLevel& want = osd->levels.back();
   std::vector<int> got_to_want;
   if (auto problem = compare_with_level(got, want.positions, static_cast<long>(want.face_sizes.size()), "OpenSubdiv",
                                         &got_to_want))
@@ -367,10 +377,9 @@ std::optional<Finding> check_loop(const Node& model, Implementation& sut, int le
                                   std::to_string(got.faces) + " faces");
     return std::nullopt;
   }
-  const MeshTopology topo = classify_mesh(mesh);
-  if (topo.status != MeshStatus::Ok || !topo.is_polygon_mesh) return std::nullopt;  // not compared (clause reading)
-  const OsdResult osd = osd_refine_uniform(osd_input_from_mesh(mesh, OsdScheme::Loop, level));
-  if (!osd.ok || osd.levels.size() != static_cast<std::size_t>(level) + 1) return std::nullopt;
+  const std::optional<OsdResult> refined = oracle_refinement(mesh, OsdScheme::Loop, level);
+  if (!refined) return std::nullopt;  // not compared
+  const OsdResult& osd = *refined;
   std::vector<int> got_to_want;
   if (auto problem = compare_with_level(got, osd.levels.back().positions,
                                         static_cast<long>(osd.levels.back().face_sizes.size()), "OpenSubdiv Loop",
@@ -456,15 +465,11 @@ namespace {
 
 // One edit of `kind` (0 hole, 1 set, 2 add 0, 3 add) chosen from `draw`;
 // see check_edits.
-std::optional<Finding> check_one_edit(const Node& model, Implementation& sut, int level, std::uint32_t draw,
-                                      int kind) {
+// `mesh` is the model's polygons without unused vertices, `osd` its
+// OpenSubdiv refinement to `level` (oracle_refinement).
+std::optional<Finding> check_one_edit(const MeshArrays& mesh, const OsdResult& osd, Implementation& sut, int level,
+                                      std::uint32_t draw, int kind) {
   static const char* kClause = "EDIT-HIERARCHY-1";
-  const MeshArrays mesh = remove_unused_vertices(extract_mesh(model));
-  if (mesh.face_count() == 0) return std::nullopt;  // no face for an edit to name
-  const MeshTopology topo = classify_mesh(mesh);
-  if (topo.status != MeshStatus::Ok || !topo.is_polygon_mesh) return std::nullopt;  // not compared (clause reading)
-  const OsdResult osd = osd_refine_uniform(osd_input_from_mesh(mesh, OsdScheme::CatmullClark, level));
-  if (!osd.ok || osd.levels.size() != static_cast<std::size_t>(level) + 1) return std::nullopt;
 
   // The edit, from the drawn value (splitmix64, so every bit counts).
   std::uint64_t r = draw + 0x9E3779B97F4A7C15ull;
@@ -645,8 +650,12 @@ std::optional<Finding> check_one_edit(const Node& model, Implementation& sut, in
 std::optional<Finding> check_edits(const Node& model, Implementation& sut, int level, std::uint32_t draw) {
   // Every kind in each case, each with its own path from the same draw, so
   // that a fault in one kind does not hide behind the others' cases.
+  const MeshArrays mesh = remove_unused_vertices(extract_mesh(model));
+  if (mesh.face_count() == 0) return std::nullopt;  // no face for an edit to name
+  const std::optional<OsdResult> osd = oracle_refinement(mesh, OsdScheme::CatmullClark, level);
+  if (!osd) return std::nullopt;  // not compared
   for (int kind = 0; kind < 4; ++kind)
-    if (auto f = check_one_edit(model, sut, level, draw + 0x632BE5ABu * static_cast<std::uint32_t>(kind), kind))
+    if (auto f = check_one_edit(mesh, *osd, sut, level, draw + 0x632BE5ABu * static_cast<std::uint32_t>(kind), kind))
       return f;
   return std::nullopt;
 }
