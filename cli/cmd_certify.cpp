@@ -7,6 +7,7 @@
 
 #include <ctime>
 #include <filesystem>
+#include <map>
 #include <memory>
 
 #include "baseline.h"
@@ -34,6 +35,7 @@ struct Options {
   std::string shard = "1/1";
   std::string reports = "reports";
   bool quiet = false;
+  bool strict = false;
 };
 
 std::string utc_now() {
@@ -61,6 +63,8 @@ std::string rerun_command(const Options& o) {
   if (o.clauses != "*") c += " --clauses " + shell_quote(o.clauses);
   if (o.shard != "1/1") c += " --shard " + o.shard;
   if (!o.baseline.empty()) c += " --baseline " + shell_quote(o.baseline);
+  if (o.strict) c += " --strict";
+  if (o.timeout != 5) c += " --timeout " + fmt::format("{:g}", o.timeout);
   return c;
 }
 
@@ -86,6 +90,7 @@ int run(const Options& o) {
       fmt::print(stderr, "vgc certify: {}\n", error);
       return 2;
     }
+    for (const auto& [id, why] : baseline.reasons) ro.tolerated.insert(id);
   }
   auto sut = open_impl_or_report("certify", o.impl, o.timeout);
   if (!sut) return 2;
@@ -103,14 +108,16 @@ int run(const Options& o) {
 
   ProgressLine line(!o.quiet);
   ro.progress = [&line](const RunProgress& p) {
-    line.update(fmt::format("[{}/{}] {:<18} {:>4}/{} cases{}  {:.1f} s", p.property_index + 1, p.property_count,
-                            p.property, p.cases_done, p.cases_total, p.shrinking ? "  shrinking a failure" : "",
-                            p.elapsed_seconds));
+    line.update(fmt::format("[{}/{}] {:<18} {:>4}/{} cases{}{}{}  {:.1f} s", p.property_index + 1, p.property_count,
+                            p.property, p.cases_done, p.cases_total,
+                            p.failures ? fmt::format(", {} found", p.failures) : "",
+                            p.set_aside ? fmt::format(", {} set aside", p.set_aside) : "",
+                            p.shrinking ? "  shrinking a failure" : "", p.elapsed_seconds));
   };
   register_oracle_checks();  // the oracles judge the optional capabilities
   const RunResult result = run_certification(*sut, ro);
   line.finish();
-  const Verdict verdict = judge(result, ctx.baseline);
+  const Verdict verdict = judge(result, ctx.baseline, o.strict);
   ctx.run_dir = default_run_dir(o.reports, result, ctx);
   std::filesystem::create_directories(std::filesystem::path(ctx.run_dir).parent_path());
   std::string error;
@@ -119,27 +126,38 @@ int run(const Options& o) {
     return 2;
   }
 
-  int pass = 0;
-  for (const auto& c : result.clauses) pass += c.status == "pass";
-  fmt::print("{}: {} ({} of {} clauses pass, {:.1f} s)\n", o.impl, verdict.name, pass, result.clauses.size(),
-             result.seconds);
+  std::map<std::string, int> counts;
+  for (const auto& c : result.clauses) ++counts[c.status];
+  std::string tally;
+  for (const char* st : {"fail", "crash", "timeout", "unchecked", "not-applicable", "not-claimed", "skipped"})
+    if (counts[st]) tally += fmt::format(", {} {}", counts[st], st);
+  fmt::print("{}: {} ({} of {} clauses pass{}; {:.1f} s)\n", o.impl, verdict.name, counts["pass"],
+             result.clauses.size(), tally, result.seconds);
+  if (result.preflight)
+    fmt::print("  the implementation could not show a fresh node: {}: {}\n", result.preflight->clause,
+               result.preflight->message);
   for (const auto& co : result.clauses) {
     if (!co.finding) continue;
-    const bool known = ctx.baseline && ctx.baseline->reasons.count(std::string(co.clause->id));
-    const char* tag = co.clause->level == ClauseLevel::Should ? "should" : known ? "known" : co.status.c_str();
+    const std::string id(co.clause->id);
+    const bool known = ctx.baseline && ctx.baseline->reasons.count(id);
+    const char* tag = co.clause->level == ClauseLevel::Should ? "should"
+                      : known                                  ? "known"
+                      : !finding_gates(co, o.strict)           ? "profile"
+                                                               : co.status.c_str();
     fmt::print("  {:<8} {:<24} {}\n", tag, co.clause->id, co.finding->message);
     fmt::print("           replay: {}\n",
                replay_command((std::filesystem::path(ctx.run_dir) / counterexample_path(co)).string(), o.impl));
   }
   for (const auto& id : verdict.stale_baseline)
-    fmt::print("  stale    {:<24} in the baseline but passes now: remove it\n", id);
+    fmt::print("  stale    {:<24} in the baseline but no case diverged on it: remove it\n", id);
   for (const auto& p : result.properties)
-    if (p.status == "incomplete") fmt::print("  incomplete {}: {}\n", p.id, p.note);
-  // Selected clauses nothing judged (a claimed capability without an oracle,
-  // a pattern no property checks) make the run incomplete: say which.
+    if (p.status == "stopped") fmt::print("  stopped  {}: {}\n", p.id, p.note);
   for (const auto& co : result.clauses)
-    if (co.status == "skipped" && co.note.find("shard") == std::string::npos)
-      fmt::print("  not judged {:<24} {}\n", co.clause->id, co.note);
+    if (co.status == "unchecked") fmt::print("  unchecked {:<23} {}\n", co.clause->id, co.note);
+  if (!verdict.profile_differences.empty() && !o.strict)
+    fmt::print("  ({} profile difference(s) from the suite's reading of silent points: reported, not gating; "
+               "--strict gates on them)\n",
+               verdict.profile_differences.size());
   fmt::print("report: {}/summary.md\n", ctx.run_dir);
   fmt::print("re-run: {}\n", ctx.command_line);
   return verdict.exit_code;
@@ -162,6 +180,8 @@ void add(CLI::App& app, int* exit_code) {
       ->capture_default_str();
   sub->add_option("--reports", o->reports, "Directory for reports")->capture_default_str();
   sub->add_flag("--quiet", o->quiet, "No progress line");
+  sub->add_flag("--strict", o->strict,
+                "Also gate on IMPLEMENTATION-DEFINED clauses (the suite's reading of points the spec leaves open)");
   sub->callback([o, exit_code] { *exit_code = run(*o); });
 }
 

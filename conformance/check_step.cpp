@@ -52,6 +52,7 @@ StepResult check_step(const Node& before, const Command& c, Implementation& sut,
   StepResult result;
   *after = before;
   const Reason expected = after->apply(c);
+  result.expected = expected;
   const std::string text = print_command(c);
 
   const Answer answer = sut.apply(c);

@@ -33,6 +33,8 @@ struct Finding {
 struct StepResult {
   std::optional<Finding> failure;  // a MUST or IMPLEMENTATION-DEFINED clause broken
   std::vector<Finding> notes;      // SHOULD clauses broken (the verdict stands)
+  Reason expected = Reason::Ok;    // the reference's verdict on the command
+  bool verdict_reported = true;    // false: the implementation answered `done`
 };
 
 // Applies `c` to a copy of `before` and to `sut` (which must hold the same

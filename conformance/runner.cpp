@@ -11,9 +11,11 @@
 #include <algorithm>
 #include <chrono>
 #include <map>
+#include <set>
 #include <sstream>
 
 #include "capability.h"
+#include "exercised_clauses.h"
 #include "command_text.h"
 #include "property.h"
 
@@ -21,6 +23,12 @@ namespace vgc {
 namespace {
 
 using Clock = std::chrono::steady_clock;
+
+// A property stops when, after at least this many cases, set-aside cases
+// are more than this share of the cases run: the rest of its cases would
+// mostly be set aside too, and say nothing about the clauses still unjudged.
+constexpr int kSetAsideMinCases = 20;
+constexpr double kSetAsideShare = 0.75;
 
 // What the property's cases report back; one per running property.
 struct CaseContext {
@@ -42,6 +50,21 @@ struct CaseContext {
   // failure of the fresh node (the program is already empty). The cases
   // still to run then pass at once, so the first failing program stands.
   bool stop = false;
+
+  // Running past findings (runner.h).
+  std::set<std::string> tolerated;  // clauses whose divergence sets a case aside
+  std::set<std::string> baseline;   // the subset tolerated from the start
+  // A tolerated clause's divergence as first seen (shortest program kept).
+  std::map<std::string, PropertyFinding> tolerated_seen;
+  bool set_aside_case = false;      // the current case diverged in a tolerated clause
+  bool shrinking = false;           // this round found its failure: cases now are shrink attempts
+  int cases_done = 0, judged = 0, set_aside = 0, target = 0;
+  bool dominated = false;           // set-aside cases dominate: stop
+
+  // Run-wide tallies (outside shrinking), owned by run_certification.
+  std::map<std::string, long>* exercised = nullptr;
+  std::map<std::string, CommandKindCount>* kinds = nullptr;
+  long* unreported = nullptr;
 };
 
 thread_local CaseContext* g_context = nullptr;
@@ -52,19 +75,46 @@ bool past_deadline() {
   return true;
 }
 
+// A tolerated clause diverged first: the case is set aside, and the first
+// (shortest) program that showed it is kept for the report.
+void set_case_aside(const Finding& f, const std::optional<CapabilityRequest>& request = std::nullopt) {
+  CaseContext& c = *g_context;
+  c.set_aside_case = true;
+  if (c.shrinking) return;
+  auto it = c.tolerated_seen.find(f.clause);
+  if (it == c.tolerated_seen.end() || it->second.program.commands.size() > c.trace.size()) {
+    PropertyFinding pf;
+    pf.finding = f;
+    pf.program.commands = c.trace;
+    pf.program.request = request;
+    pf.tolerated_from_start = c.baseline.count(f.clause) > 0;
+    c.tolerated_seen[f.clause] = std::move(pf);
+  }
+}
+
 // Records `f` and fails the case, unless it is a different failure from the
 // one being shrunk; returns false in that case (the case then passes).
-// `request` is the capability check that found it, if one did.
+// `request` is the capability check that found it, if one did. A failure in
+// a tolerated clause sets the case aside instead (returns false).
 bool fail_case(const Finding& f, std::optional<CapabilityRequest> request = std::nullopt) {
+  if (g_context->tolerated.count(f.clause)) {
+    set_case_aside(f, request);
+    return false;
+  }
   auto& sig = g_context->signature;
   if (sig && (sig->first != f.clause || sig->second != f.status)) return false;
   sig = std::make_pair(f.clause, f.status);
+  g_context->shrinking = true;
   g_context->last_failure = f;
   g_context->last_program.commands = g_context->trace;
   g_context->last_program.request = std::move(request);
   if (f.status == FindingStatus::Timeout || g_context->trace.empty()) g_context->stop = true;
   RC_FAIL(f.clause + ": " + f.message);
   return true;  // unreachable: RC_FAIL throws
+}
+
+void count_exercised(const std::vector<std::string_view>& clauses) {
+  for (auto c : clauses) ++(*g_context->exercised)[std::string(c)];
 }
 
 // rc::state command: model = the reference node, system = the implementation.
@@ -75,18 +125,29 @@ struct Step final : rc::state::Command<Node, Implementation> {
   void apply(Node& model) const override { model.apply(command); }
 
   void run(const Node& model, Implementation& sut) const override {
-    if (g_context->stop || g_context->abandoned || g_context->deadline_hit || past_deadline()) return;
-    g_context->trace.push_back(command);
+    CaseContext& c = *g_context;
+    if (c.stop || c.abandoned || c.set_aside_case || c.deadline_hit || past_deadline()) return;
+    c.trace.push_back(command);
     Node after;
     StepResult r = check_step(model, command, sut, &after);
-    g_context->model = after;
+    c.model = after;
     for (auto& note : r.notes) {
-      auto it = g_context->notes.find(note.clause);
-      if (it == g_context->notes.end() || it->second.second.commands.size() > g_context->trace.size())
-        g_context->notes[note.clause] = {note, Program{g_context->trace, std::nullopt}};
+      auto it = c.notes.find(note.clause);
+      if (it == c.notes.end() || it->second.second.commands.size() > c.trace.size())
+        c.notes[note.clause] = {note, Program{c.trace, std::nullopt}};
+    }
+    if (!r.failure && !c.shrinking) {
+      std::vector<std::string_view> decided;
+      exercised_clauses(model, command, r.expected, after, r.verdict_reported, &decided);
+      count_exercised(decided);
+      CommandKindCount& k = (*c.kinds)[command_kind(command)];
+      ++k.sent;
+      if (r.expected == Reason::Ok) ++k.applied;
+      else ++k.rejected[std::string(reason_name(r.expected))];
+      if (!r.verdict_reported) ++*c.unreported;
     }
     // A different failure while shrinking: the rest of this case proves nothing.
-    if (r.failure && !fail_case(*r.failure)) g_context->abandoned = true;
+    if (r.failure && !fail_case(*r.failure) && !c.set_aside_case) c.abandoned = true;
   }
 
   void show(std::ostream& os) const override { os << print_command(command); }
@@ -97,11 +158,7 @@ class ProgressListener final : public rc::detail::TestListener {
   ProgressListener(RunProgress* p, const std::function<void(const RunProgress&)>* cb, Clock::time_point start)
       : p_(p), cb_(cb), start_(start) {}
   void onTestCaseFinished(const rc::detail::CaseDescription& d) override {
-    if (d.result.type == rc::detail::CaseResult::Type::Success) ++p_->cases_done;
-    if (d.result.type == rc::detail::CaseResult::Type::Failure) {
-      p_->shrinking = true;
-      ++p_->failures;
-    }
+    if (d.result.type == rc::detail::CaseResult::Type::Failure) p_->shrinking = true;
     emit();
   }
   void onShrinkTried(const rc::detail::CaseDescription&, bool) override { emit(); }
@@ -109,6 +166,10 @@ class ProgressListener final : public rc::detail::TestListener {
 
  private:
   void emit() {
+    if (g_context) {
+      p_->cases_done = g_context->cases_done;
+      p_->set_aside = g_context->set_aside;
+    }
     p_->elapsed_seconds = std::chrono::duration<double>(Clock::now() - start_).count();
     if (*cb_) (*cb_)(*p_);
   }
@@ -182,8 +243,22 @@ std::optional<Finding> check_fresh(Implementation& sut) {
   return f;
 }
 
+// The seed of round `round` of a property: round 0 is the property's own
+// seed (so its first finding is what an earlier vgc found at that seed),
+// each later round a seed derived from it.
+std::uint64_t round_seed(std::uint64_t seed, int round) {
+  return round == 0 ? seed : property_seed(seed, "round-" + std::to_string(round));
+}
+
+std::string join(const std::set<std::string>& s) {
+  std::string out;
+  for (const auto& x : s) out += (out.empty() ? "" : ", ") + x;
+  return out;
+}
+
 PropertyOutcome run_property(const PropertySpec& spec, Implementation& sut, const RunOptions& o,
-                             Clock::time_point deadline, RunProgress* progress, Clock::time_point run_start) {
+                             Clock::time_point deadline, RunProgress* progress, Clock::time_point run_start,
+                             RunResult* run, std::map<std::string, long>* exercised) {
   PropertyOutcome out;
   out.id = std::string(spec.id);
   out.seed = property_seed(o.seed, spec.id);
@@ -192,21 +267,45 @@ PropertyOutcome run_property(const PropertySpec& spec, Implementation& sut, cons
   CaseContext ctx;
   ctx.sut = &sut;
   ctx.deadline = deadline;
+  ctx.tolerated = o.tolerated;
+  ctx.baseline = o.tolerated;
+  ctx.target = spec.capability.empty() ? o.cases : std::max(1, o.cases / 4);
+  ctx.exercised = exercised;
+  ctx.kinds = &run->command_kinds;
+  ctx.unreported = &run->unreported_verdicts;
+  out.cases_target = ctx.target;
   g_context = &ctx;
 
   const Focus focus = spec.focus;
   const CapabilityCheck* capability =
       spec.capability.empty() ? nullptr : find_capability_check(std::string(spec.capability));
   const std::string_view capability_name = spec.capability;
-  auto property = [focus, capability, capability_name] {
+  const std::string capability_clause_list = capability_clauses(std::string(capability_name));
+  auto property = [focus, capability, capability_name, &capability_clause_list] {
     CaseContext& c = *g_context;
-    if (c.stop || c.deadline_hit || past_deadline()) return;
+    if (c.stop || c.dominated || c.deadline_hit || past_deadline()) return;
+    // Fresh cases count toward the property's cases; shrink attempts do not.
+    const bool counted = !c.shrinking;
+    if (counted && c.cases_done >= c.target) return;
     c.trace.clear();
     c.model = Node{};
     c.abandoned = false;
+    c.set_aside_case = false;
+    struct Tally {  // at the end of the case, however it ends
+      CaseContext& c;
+      bool counted;
+      ~Tally() {
+        if (!counted || c.shrinking) return;  // the failing case itself is counted with its finding
+        ++c.cases_done;
+        if (c.set_aside_case) ++c.set_aside;
+        else if (!c.abandoned && !c.deadline_hit) ++c.judged;
+        if (c.cases_done >= kSetAsideMinCases && c.set_aside > kSetAsideShare * c.cases_done) c.dominated = true;
+      }
+    } tally{c, counted};
     if (auto f = check_fresh(*c.sut)) {
       if (!fail_case(*f)) return;
     }
+    if (!c.shrinking) count_exercised(fresh_node_clauses());
     // A capability case starts from a small open surface, so that its
     // random commands edit a mesh rather than mostly build nothing.
     Node start;
@@ -232,56 +331,96 @@ PropertyOutcome run_property(const PropertySpec& spec, Implementation& sut, cons
     // An optional capability: judged on the final state, the variant
     // (subdivision level) chosen by the case; a check that needs more
     // (check_drawn) gets a value drawn for the case.
-    if (capability && !c.stop && !c.abandoned && !c.deadline_hit && !past_deadline()) {
+    if (capability && !c.stop && !c.abandoned && !c.set_aside_case && !c.deadline_hit && !past_deadline()) {
       const int variant = static_cast<int>(c.trace.size() % 3) + 1;
       CapabilityRequest request{capability->capability, variant, std::nullopt};
       if (capability->check_drawn) request.draw = *rc::gen::arbitrary<std::uint32_t>();
-      if (auto f = run_capability_check(*capability, c.model, *c.sut, request)) fail_case(*f, request);
+      if (auto f = run_capability_check(*capability, c.model, *c.sut, request)) {
+        fail_case(*f, request);
+      } else if (!c.shrinking) {
+        std::stringstream ids(capability_clause_list);
+        std::string id;
+        while (std::getline(ids, id, ',')) ++(*c.exercised)[id];
+      }
     }
   };
 
-  rc::detail::TestParams params;
-  params.seed = out.seed;
-  params.maxSuccess = spec.capability.empty() ? o.cases : std::max(1, o.cases / 4);
-  params.maxSize = o.max_size;
-  params.maxDiscardRatio = 10;
-  rc::detail::TestMetadata meta;
-  meta.id = out.id;
-  meta.description = std::string(spec.title);
-  ProgressListener listener(progress, &o.progress, run_start);
-  const auto result = rc::detail::checkTestable(property, meta, params, listener);
+  std::string stop_note;
+  for (int round = 0; ctx.cases_done < ctx.target; ++round) {
+    ctx.shrinking = false;
+    ctx.stop = false;
+    ctx.signature.reset();
+    ctx.last_failure.reset();
+    ctx.last_program = Program{};
+    progress->shrinking = false;
+
+    rc::detail::TestParams params;
+    params.seed = round_seed(out.seed, round);
+    params.maxSuccess = ctx.target - ctx.cases_done;
+    params.maxSize = o.max_size;
+    params.maxDiscardRatio = 10;
+    rc::detail::TestMetadata meta;
+    meta.id = out.id;
+    meta.description = std::string(spec.title);
+    ProgressListener listener(progress, &o.progress, run_start);
+    const auto result = rc::detail::checkTestable(property, meta, params, listener);
+    ++out.rounds;
+
+    rc::detail::FailureResult failure;
+    rc::detail::GaveUpResult gave_up;
+    rc::detail::Error error;
+    if (result.match(failure)) {
+      PropertyFinding pf;
+      pf.round = round;
+      if (ctx.last_failure) {
+        pf.finding = *ctx.last_failure;
+        pf.program = ctx.last_program;
+      } else {  // an exception escaped from somewhere we did not expect
+        pf.finding = Finding{"STABLE-1", FindingStatus::Fail, failure.description};
+      }
+      ++ctx.cases_done;  // the failing case
+      ctx.tolerated.insert(pf.finding.clause);
+      out.findings.push_back(std::move(pf));
+      progress->failures = static_cast<int>(out.findings.size());
+      // A clause already tolerated cannot fail again, so each round adds a
+      // clause: at most one round per catalog clause.
+      continue;
+    }
+    if (result.match(gave_up)) stop_note = "RapidCheck gave up: " + gave_up.description;
+    if (result.match(error)) stop_note = "RapidCheck error: " + error.description;
+    break;
+  }
   g_context = nullptr;
 
   out.seconds = std::chrono::duration<double>(Clock::now() - start).count();
   for (auto& [clause, note] : ctx.notes) out.notes.push_back(note);
-
-  rc::detail::SuccessResult success;
-  rc::detail::FailureResult failure;
-  rc::detail::GaveUpResult gave_up;
-  rc::detail::Error error;
-  if (result.match(success)) {
-    out.cases = success.numSuccess;
-    if (ctx.deadline_hit) {
-      out.status = "incomplete";
-      out.note = "budget ran out before all " + std::to_string(o.cases) + " cases ran; raise --budget";
-    } else {
-      out.status = "pass";
-    }
-  } else if (result.match(failure)) {
-    out.cases = failure.numSuccess;
-    if (ctx.last_failure) {
-      out.finding = ctx.last_failure;
-      out.program = ctx.last_program;
-    } else {  // an exception escaped from somewhere we did not expect
-      out.finding = Finding{"STABLE-1", FindingStatus::Fail, failure.description};
-    }
-    out.status = finding_status_name(out.finding->status);
-  } else if (result.match(gave_up)) {
-    out.status = "incomplete";
-    out.note = "RapidCheck gave up: " + gave_up.description;
-  } else if (result.match(error)) {
-    out.status = "incomplete";
-    out.note = "RapidCheck error: " + error.description;
+  // Baseline (and other tolerated) divergences, in the order of the
+  // catalog's ids: each once, with the shortest program it was seen on.
+  for (auto& [clause, pf] : ctx.tolerated_seen) {
+    bool found = false;
+    for (const auto& f : out.findings) found = found || f.finding.clause == clause;
+    if (!found) out.findings.push_back(pf);
+  }
+  out.cases = ctx.cases_done;
+  out.judged = ctx.judged;
+  out.set_aside = ctx.set_aside;
+  std::set<std::string> tolerated_hits;
+  for (const auto& [clause, pf] : ctx.tolerated_seen) tolerated_hits.insert(clause);
+  if (ctx.deadline_hit) {
+    stop_note = "the budget ran out after " + std::to_string(ctx.cases_done) + " of " + std::to_string(ctx.target) +
+                " cases; raise --budget";
+  } else if (ctx.dominated) {
+    stop_note = std::to_string(ctx.set_aside) + " of its " + std::to_string(ctx.cases_done) +
+                " cases were set aside (first divergence in " + join(tolerated_hits) + "), so it stopped before " +
+                std::to_string(ctx.target) + " cases";
+  } else if (stop_note.empty() && ctx.cases_done < ctx.target) {
+    stop_note = "it ran " + std::to_string(ctx.cases_done) + " of " + std::to_string(ctx.target) + " cases";
+  }
+  if (!stop_note.empty()) {
+    out.status = "stopped";
+    out.note = stop_note;
+  } else {
+    out.status = out.findings.empty() ? "pass" : "fail";
   }
   return out;
 }
@@ -346,9 +485,37 @@ RunResult run_certification(Implementation& sut, const RunOptions& o) {
   const auto deadline = start + std::chrono::duration_cast<Clock::duration>(
                                     std::chrono::duration<double>(o.budget_seconds));
 
+  // Preflight: an implementation that cannot show a fresh node at all
+  // (it crashes, hangs or answers outside the contract) can be judged on
+  // nothing; every case would only wait for it again.
+  {
+    const Answer a = sut.reset();
+    std::optional<Finding> f;
+    if (a.status != CallStatus::Ok) {
+      f = Finding{a.status == CallStatus::ProtocolError ? "ACCEPT-1" : "STABLE-1",
+                  a.status == CallStatus::Timeout ? FindingStatus::Timeout
+                  : a.status == CallStatus::Crash ? FindingStatus::Crash
+                                                  : FindingStatus::Fail,
+                  std::string(call_status_name(a.status)) + " on reset: " + a.detail};
+    } else {
+      for (int doc = 0; doc < 2 && !f; ++doc) {
+        const Document d = doc == 0 ? sut.snapshot() : sut.derived();
+        if (d.status == CallStatus::Ok) continue;
+        f = Finding{d.status == CallStatus::ProtocolError ? "ACCEPT-1" : "STABLE-1",
+                    d.status == CallStatus::Timeout ? FindingStatus::Timeout
+                    : d.status == CallStatus::Crash ? FindingStatus::Crash
+                                                    : FindingStatus::Fail,
+                    std::string(call_status_name(d.status)) + " while reading the " +
+                        (doc == 0 ? "snapshot" : "derived document") + " of a fresh node: " + d.detail};
+      }
+    }
+    run.preflight = f;
+  }
+
   const auto& props = property_catalog();
   std::vector<std::string> claimed;
   bool asked = false;
+  std::map<std::string, long> exercised;
   RunProgress progress;
   progress.property_count = static_cast<int>(props.size());
   for (std::size_t i = 0; i < props.size(); ++i) {
@@ -370,6 +537,13 @@ RunResult run_certification(Implementation& sut, const RunOptions& o) {
       run.properties.push_back(skipped);
       continue;
     }
+    if (run.preflight) {
+      skipped.status = "stopped";
+      skipped.cases_target = spec.capability.empty() ? o.cases : std::max(1, o.cases / 4);
+      skipped.note = "not run: the implementation could not show a fresh node (" + run.preflight->clause + ")";
+      run.properties.push_back(skipped);
+      continue;
+    }
     if (!spec.capability.empty()) {
       if (!asked) claimed = query_capabilities(sut), asked = true;
       if (std::find(claimed.begin(), claimed.end(), spec.capability) == claimed.end()) {
@@ -386,49 +560,82 @@ RunResult run_certification(Implementation& sut, const RunOptions& o) {
     progress.property = skipped.id;
     progress.property_index = static_cast<int>(i);
     progress.cases_done = 0;
+    progress.set_aside = 0;
+    progress.failures = 0;
     progress.cases_total = spec.capability.empty() ? o.cases : std::max(1, o.cases / 4);
     progress.shrinking = false;
-    run.properties.push_back(run_property(spec, sut, o, deadline, &progress, start));
+    run.properties.push_back(run_property(spec, sut, o, deadline, &progress, start, &run, &exercised));
   }
 
   // Per clause: the findings of every property that ran, whoever declared it.
   for (const Clause& clause : clause_catalog()) {
     ClauseOutcome co;
     co.clause = &clause;
-    bool declared_and_ran = false, declared_cut_short = false;
-    std::string skip_note;
+    const std::string id(clause.id);
+    if (auto it = exercised.find(id); it != exercised.end()) co.exercised = it->second;
+    bool declared_and_ran = false;
+    std::string stopped_note, skip_note;
     for (std::size_t i = 0; i < props.size(); ++i) {
       const PropertyOutcome& po = run.properties[i];
       bool declares = false;
       for (auto c : props[i].clauses) declares = declares || c == clause.id;
       if (declares) {
-        if (po.status == "skipped") skip_note = po.note;
-        else if (po.status == "incomplete") declared_cut_short = true, skip_note = po.note;
-        else declared_and_ran = true, co.properties.push_back(po.id);
+        if (po.status == "skipped") {
+          if (skip_note.empty() || skip_note.find("shard") != std::string::npos) skip_note = po.note;
+        } else {
+          if (po.status == "stopped" && stopped_note.empty())
+            stopped_note = "its property " + po.id + " stopped: " + po.note;
+          declared_and_ran = declared_and_ran || po.status != "stopped" || po.cases > 0;
+          co.properties.push_back(po.id);
+        }
       }
-      auto take = [&](const Finding& f, const Program& p) {
+      auto take = [&](const Finding& f, const Program& p, bool known) {
         if (co.finding && co.program.commands.size() <= p.commands.size()) return;
         co.finding = f;
         co.program = p;
         co.found_by = po.id;
         co.seed = po.seed;
+        co.tolerated_from_start = known;
       };
-      if (po.finding && po.finding->clause == clause.id) take(*po.finding, po.program);
+      for (const auto& pf : po.findings)
+        if (pf.finding.clause == clause.id) take(pf.finding, pf.program, pf.tolerated_from_start);
       for (const auto& [f, p] : po.notes)
-        if (f.clause == clause.id) take(f, p);
+        if (f.clause == clause.id) take(f, p, false);
+    }
+    if (run.preflight && run.preflight->clause == clause.id) {
+      co.finding = run.preflight;
+      co.found_by = "fresh-node check";
     }
     if (co.finding) {
       co.status = finding_status_name(co.finding->status);
     } else if (!clause_selected(o.clause_glob, clause.id)) {
       continue;  // not asked for and nothing found
-    } else if (declared_and_ran && !declared_cut_short) {
-      co.status = "pass";
-    } else if (skip_note == "not claimed") {
+    } else if (run.preflight) {
+      co.status = "unchecked";
+      co.note = "not judged: the implementation could not show a fresh node (" + run.preflight->clause + ": " +
+                run.preflight->message + ")";
+    } else if (!declared_and_ran && skip_note == "not claimed") {
       co.status = "not-claimed";  // an optional capability the implementation does not offer
       co.note = skip_note;
-    } else {
+    } else if (!declared_and_ran && skip_note.find("shard") != std::string::npos) {
       co.status = "skipped";
-      co.note = skip_note.empty() ? "no property ran" : skip_note;
+      co.note = skip_note;
+    } else if (!declared_and_ran && !skip_note.empty()) {
+      co.status = "unchecked";
+      co.note = "not judged: " + skip_note;
+    } else if (!stopped_note.empty()) {
+      co.status = "unchecked";
+      co.note = stopped_note;
+    } else if (clause.id == "REASON-1" && co.exercised == 0 && run.unreported_verdicts > 0) {
+      co.status = "not-applicable";
+      co.note = "the implementation reports no verdicts (it answered `done` to " +
+                std::to_string(run.unreported_verdicts) + " commands), so reason codes cannot be judged";
+    } else if (co.exercised == 0) {
+      co.status = "unchecked";
+      co.note = declared_and_ran ? "0 judged commands exercised it"
+                                 : "no property declares it and no judged command exercised it";
+    } else {
+      co.status = "pass";
     }
     run.clauses.push_back(co);
   }
@@ -436,11 +643,13 @@ RunResult run_certification(Implementation& sut, const RunOptions& o) {
   run.conformant = true;
   run.complete = true;
   for (const auto& co : run.clauses) {
-    if (co.finding && co.clause->level != ClauseLevel::Should) run.conformant = false;
-    if (co.status == "skipped" && co.note.find("shard") == std::string::npos) run.complete = false;
+    if (co.finding && co.clause->level == ClauseLevel::Must) run.conformant = false;
+    if (co.finding && co.finding->status != FindingStatus::Fail && co.clause->level != ClauseLevel::Should)
+      run.conformant = false;  // a crash or a hang is never a reading of a silent point
+    if (co.status == "unchecked") run.complete = false;
   }
   for (const auto& po : run.properties)
-    if (po.status == "incomplete") run.complete = false;
+    if (po.status == "stopped") run.complete = false;
   run.seconds = std::chrono::duration<double>(Clock::now() - start).count();
   return run;
 }

@@ -8,12 +8,24 @@
 // seed and its id, so adding a property or splitting a run into shards does
 // not change another property's cases. A case that crashes or hangs the
 // implementation is a finding like any other. The budget bounds the wall
-// time; a property it cuts short is reported as incomplete, never as a pass.
+// time; a property it cuts short is reported as stopped, never as a pass.
+//
+// A run lists every deviation it can show (issue 9). When a property finds
+// a deviation in clause X, RapidCheck shrinks it, the counterexample is
+// kept, and the property runs on for its remaining cases with X tolerated:
+// a case whose first divergence is a tolerated clause is set aside
+// (counted, not judged). Baseline clauses are tolerated from the first
+// case. A property whose set-aside cases dominate stops; the clauses it
+// declares are then `unchecked`, never `pass`. A clause is `pass` only when
+// judged steps exercised it (exercised_clauses.h) and every property that
+// declares it ran all its cases.
 #pragma once
 
 #include <cstdint>
 #include <functional>
+#include <map>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -30,7 +42,8 @@ struct RunProgress {
   int cases_done = 0;
   int cases_total = 0;
   bool shrinking = false;
-  int failures = 0;
+  int failures = 0;     // findings so far in this property
+  int set_aside = 0;    // cases set aside so far in this property
   double elapsed_seconds = 0;
 };
 
@@ -42,6 +55,10 @@ struct RunOptions {
   std::string clause_glob = "*"; // which clauses (fnmatch pattern, comma-separated alternatives)
   int shard_index = 0;           // this run's shard, 0-based
   int shard_count = 1;
+  // Clauses tolerated from the first case (a baseline's known deviations):
+  // a case whose first divergence is one of them is set aside, so the rest
+  // of the catalog is judged in full.
+  std::set<std::string> tolerated;
   std::function<void(const RunProgress&)> progress;  // called often; may be empty
 };
 
@@ -63,39 +80,83 @@ struct Program {
   std::optional<CapabilityRequest> request;
 };
 
+// One deviation a property showed: the finding and its counterexample.
+// A new deviation is shrunk (RapidCheck) to the shortest program whose
+// first divergence is in that clause; a tolerated one (known from the
+// baseline) keeps the shortest program it was seen on, unshrunk.
+struct PropertyFinding {
+  Finding finding;
+  Program program;
+  bool tolerated_from_start = false;  // a baseline clause: seen, not shrunk
+  int round = 0;                      // 0: the property's own seed; r: its r-th re-run past findings
+};
+
 struct PropertyOutcome {
   std::string id;
-  std::string status;       // "pass", "fail", "crash", "timeout", "skipped", "incomplete"
-  std::string note;         // why skipped / incomplete
+  // "pass" (ran all its cases, no finding), "fail" (ran all its cases and
+  // found deviations), "stopped" (did not run all its cases: the budget ran
+  // out, set-aside cases dominated, or RapidCheck gave up; `note` says
+  // which), "skipped" (not run: not selected, another shard, capability not
+  // claimed, no oracle, or the implementation could not be read at all).
+  std::string status;
+  std::string note;         // why skipped / stopped
   std::uint64_t seed = 0;
-  int cases = 0;
+  int cases = 0;            // cases run to the end: judged + set aside
+  int cases_target = 0;     // cases it should run
+  int judged = 0;           // cases judged in full (no tolerated divergence)
+  int set_aside = 0;        // cases whose first divergence was a tolerated clause
+  int rounds = 0;           // RapidCheck runs (1 + one per new finding)
   double seconds = 0;
-  std::optional<Finding> finding;  // for fail / crash / timeout
-  Program program;                 // the shrunk counterexample
+  std::vector<PropertyFinding> findings;  // in the order found
   std::vector<std::pair<Finding, Program>> notes;  // SHOULD-level findings, one per clause
 };
 
 struct ClauseOutcome {
   const Clause* clause = nullptr;
-  // "pass", "fail", "crash", "timeout", "skipped", or "not-claimed" (an
-  // optional capability the implementation does not claim: neither a
-  // failure nor a gap in completeness)
+  // "pass"           every property that declares it ran all its cases, none
+  //                  found a deviation in it, and at least one judged step
+  //                  exercised it;
+  // "fail", "crash", "timeout"  a deviation (any level; the verdict decides
+  //                  what gates: verdict.h);
+  // "unchecked"      not enough was judged to call it either (`note` says why:
+  //                  a declaring property stopped, or nothing exercised it);
+  // "not-claimed"    an optional capability the implementation does not claim;
+  // "not-applicable" nothing in the run could judge it for this
+  //                  implementation (REASON-1 when it reports no verdicts);
+  // "skipped"        in another shard.
   std::string status;
   std::string note;
   std::vector<std::string> properties;  // that declare it and ran
+  long exercised = 0;       // judged steps (or capability checks) that decided it
   std::string found_by;     // property that found the failure
   std::uint64_t seed = 0;
   std::optional<Finding> finding;
   Program program;
+  bool tolerated_from_start = false;  // the finding is a baseline clause's, seen not shrunk
+};
+
+// Per command kind ("polygon_set_face_uint8"): how often judged steps sent
+// it, and what the reference's verdict on it was (the implementation agreed,
+// or the step would be a finding). Counted outside shrinking.
+struct CommandKindCount {
+  long sent = 0;
+  long applied = 0;
+  std::map<std::string, long> rejected;  // reason name -> count
 };
 
 struct RunResult {
   std::string implementation;
   RunOptions options;
-  std::vector<PropertyOutcome> properties;
+  std::vector<PropertyOutcome> properties;  // property catalog order
   std::vector<ClauseOutcome> clauses;  // catalog order; selected clauses and any clause with a finding
-  bool conformant = false;  // no MUST / IMPLEMENTATION-DEFINED clause failed, crashed or timed out
-  bool complete = false;    // every selected clause was checked (nothing skipped or incomplete)
+  std::map<std::string, CommandKindCount> command_kinds;
+  long unreported_verdicts = 0;  // steps the implementation answered `done` to
+  // Set when the implementation could not even show a fresh node (it
+  // crashed, hung, or answered what the contract does not allow): no
+  // property ran, every other clause is unchecked.
+  std::optional<Finding> preflight;
+  bool conformant = false;  // no MUST clause failed, crashed or timed out (before any baseline)
+  bool complete = false;    // every selected clause was judged (none unchecked, no property stopped)
   double seconds = 0;
 };
 

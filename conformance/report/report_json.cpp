@@ -3,6 +3,7 @@
 
 #include <filesystem>
 
+#include "command_text.h"
 #include "report.h"
 
 namespace vgc {
@@ -10,7 +11,7 @@ namespace vgc {
 std::string render_report_json(const RunResult& run, const Verdict& v, const ReportContext& ctx) {
   using nlohmann::json;
   json j;
-  j["vgc_report_version"] = 1;
+  j["vgc_report_version"] = 2;  // 2: exercised counts, unchecked, findings per property, command lines
   j["implementation"] = ctx.implementation_spec;
   j["implementation_name"] = run.implementation;
   j["verdict"] = v.name;
@@ -28,9 +29,18 @@ std::string render_report_json(const RunResult& run, const Verdict& v, const Rep
   j["known_failures"] = v.known_failures;
   j["should_failures"] = v.should_failures;
   j["stale_baseline"] = v.stale_baseline;
+  j["profile_differences"] = v.profile_differences;
+  j["unchecked"] = v.unchecked;
+  j["strict"] = v.strict;
+  j["unreported_verdicts"] = run.unreported_verdicts;
+  if (run.preflight)
+    j["preflight"] = {{"clause", run.preflight->clause},
+                      {"status", finding_status_name(run.preflight->status)},
+                      {"message", run.preflight->message}};
   if (ctx.baseline) j["baseline"] = ctx.baseline_path;
 
-  json counts = {{"pass", 0}, {"fail", 0}, {"crash", 0}, {"timeout", 0}, {"skipped", 0}, {"not-claimed", 0}};
+  json counts = {{"pass", 0},      {"fail", 0},           {"crash", 0},       {"timeout", 0},
+                 {"unchecked", 0}, {"not-applicable", 0}, {"not-claimed", 0}, {"skipped", 0}};
   json clauses = json::array();
   for (const ClauseOutcome& co : run.clauses) {
     counts[co.status] = counts.value(co.status, 0) + 1;
@@ -40,6 +50,7 @@ std::string render_report_json(const RunResult& run, const Verdict& v, const Rep
     c["level"] = clause_level_name(co.clause->level);
     c["status"] = co.status;
     c["properties"] = co.properties;
+    c["exercised"] = co.exercised;
     if (!co.note.empty()) c["note"] = co.note;
     if (ctx.baseline && ctx.baseline->reasons.count(std::string(co.clause->id)))
       c["baseline_reason"] = ctx.baseline->reasons.at(std::string(co.clause->id));
@@ -49,7 +60,10 @@ std::string render_report_json(const RunResult& run, const Verdict& v, const Rep
       c["found_by"] = co.found_by;
       c["seed"] = co.seed;
       c["counterexample"] = file;
-      c["counterexample_commands"] = co.program.commands.size();
+      json lines = json::array();
+      for (const auto& cmd : co.program.commands) lines.push_back(print_command(cmd));
+      c["counterexample_commands"] = lines;
+      if (co.tolerated_from_start) c["tolerated_from_start"] = true;
       if (co.program.request) {  // the capability check vgc replay repeats after the commands
         c["capability_check"] = {{"capability", co.program.request->capability},
                                  {"variant", co.program.request->variant}};
@@ -64,12 +78,20 @@ std::string render_report_json(const RunResult& run, const Verdict& v, const Rep
 
   json props = json::array();
   for (const PropertyOutcome& p : run.properties) {
-    json o = {{"id", p.id}, {"status", p.status}, {"seed", p.seed}, {"cases", p.cases}, {"seconds", p.seconds}};
+    json o = {{"id", p.id},         {"status", p.status},           {"seed", p.seed},
+              {"cases", p.cases},   {"cases_target", p.cases_target}, {"judged", p.judged},
+              {"set_aside", p.set_aside}, {"rounds", p.rounds},     {"seconds", p.seconds}};
     if (!p.note.empty()) o["note"] = p.note;
-    if (p.finding) o["clause"] = p.finding->clause;
+    json found = json::array();
+    for (const auto& f : p.findings) found.push_back(f.finding.clause);
+    o["findings"] = found;
     props.push_back(o);
   }
   j["properties"] = props;
+  json kinds = json::object();
+  for (const auto& [kind, k] : run.command_kinds)
+    kinds[kind] = {{"sent", k.sent}, {"applied", k.applied}, {"rejected", k.rejected}};
+  j["command_kinds"] = kinds;
   return j.dump(2) + "\n";
 }
 

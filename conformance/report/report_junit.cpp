@@ -37,7 +37,14 @@ std::string render_junit(const RunResult& run, const Verdict& v, const ReportCon
     ++tests;
     ++counts[group]["tests"];
     const bool known = ctx.baseline && ctx.baseline->reasons.count(std::string(co.clause->id));
-    if (co.finding && !known && co.clause->level != ClauseLevel::Should) {
+    auto props = tc.append_child("properties");
+    auto exercised = props.append_child("property");
+    exercised.append_attribute("name") = "exercised";
+    exercised.append_attribute("value") = static_cast<long long>(co.exercised);
+    auto status = props.append_child("property");
+    status.append_attribute("name") = "status";
+    status.append_attribute("value") = co.status.c_str();
+    if (co.finding && !known && finding_gates(co, v.strict)) {
       const bool is_error = co.status != "fail";  // crash / timeout
       auto f = tc.append_child(is_error ? "error" : "failure");
       f.append_attribute("type") = co.status.c_str();
@@ -50,16 +57,21 @@ std::string render_junit(const RunResult& run, const Verdict& v, const ReportCon
       f.text().set(body.str().c_str());
       ++(is_error ? errors : failures);
       ++counts[group][is_error ? "errors" : "failures"];
-    } else if (co.status == "skipped" || co.status == "not-claimed" || (co.finding && known)) {
+    } else if (co.status == "skipped" || co.status == "not-claimed" || co.status == "unchecked" ||
+               co.status == "not-applicable" || (co.finding && known)) {
       auto s = tc.append_child("skipped");
       s.append_attribute("message") =
           (co.finding ? "known deviation (baseline): " + ctx.baseline->reasons.at(std::string(co.clause->id))
-                      : co.note)
+                      : co.status == "unchecked" || co.status == "not-applicable" ? co.status + ": " + co.note
+                                                                                   : co.note)
               .c_str();
       ++skipped;
       ++counts[group]["skipped"];
-    } else if (co.finding) {  // SHOULD: reported, not failing
-      tc.append_child("system-out").text().set(("SHOULD not met: " + co.finding->message).c_str());
+    } else if (co.finding) {  // SHOULD, or a profile difference: reported, not failing
+      tc.append_child("system-out").text().set(
+          ((co.clause->level == ClauseLevel::Should ? "SHOULD not met: " : "profile difference (the spec is silent): ") +
+           co.finding->message)
+              .c_str());
     }
   }
   for (auto& [group, node] : by_group) {
@@ -72,7 +84,6 @@ std::string render_junit(const RunResult& run, const Verdict& v, const ReportCon
   suites.append_attribute("failures") = failures;
   suites.append_attribute("errors") = errors;
   suites.append_attribute("skipped") = skipped;
-  (void)v;
   std::ostringstream out;
   doc.save(out, "  ");
   return out.str();

@@ -1,7 +1,9 @@
 // report_summary.cpp — summary.md, the file a person reads first.
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <filesystem>
+#include <map>
 
 #include "command_text.h"
 #include "program_text.h"
@@ -11,39 +13,40 @@ namespace vgc {
 
 std::string render_summary(const RunResult& run, const Verdict& v, const ReportContext& ctx) {
   std::string out;
-  int pass = 0, fail = 0, crash = 0, timeout = 0, skipped = 0, not_claimed = 0;
-  for (const auto& co : run.clauses) {
-    if (co.status == "pass") ++pass;
-    else if (co.status == "fail") ++fail;
-    else if (co.status == "crash") ++crash;
-    else if (co.status == "timeout") ++timeout;
-    else if (co.status == "not-claimed") ++not_claimed;
-    else ++skipped;
-  }
+  std::map<std::string, int> counts;
+  for (const auto& co : run.clauses) ++counts[co.status];
   const char* headline = v.name == "conformant"       ? "CONFORMANT"
                          : v.name == "not-conformant" ? "NOT CONFORMANT"
                                                       : "INCOMPLETE";
   out += fmt::format("# vgc certify: {} — {}\n\n", ctx.implementation_spec, headline);
-  out += fmt::format("{} clauses: {} pass, {} fail, {} crash, {} timeout, {} skipped, {} not claimed. Seed {}, {} cases per "
-                     "property, {:.1f} s.\n\n",
-                     run.clauses.size(), pass, fail, crash, timeout, skipped, not_claimed, run.options.seed, run.options.cases,
-                     run.seconds);
+  std::string tally;
+  for (const char* st : {"pass", "fail", "crash", "timeout", "unchecked", "not-applicable", "not-claimed", "skipped"})
+    if (counts[st]) tally += fmt::format("{}{} {}", tally.empty() ? "" : ", ", counts[st], st);
+  out += fmt::format("{} clauses: {}. Seed {}, {} cases per property, {:.1f} s{}.\n\n", run.clauses.size(), tally,
+                     run.options.seed, run.options.cases, run.seconds,
+                     v.strict ? ", --strict (IMPLEMENTATION-DEFINED readings gate)" : "");
+  out += fmt::format("New failures: {}. Known (baseline): {}. Profile differences: {}. SHOULD not met: {}. "
+                     "Unchecked: {}.\n\n",
+                     v.new_failures.size(), v.known_failures.size(), v.profile_differences.size(),
+                     v.should_failures.size(), v.unchecked.size());
   out += "Re-run exactly: `" + ctx.command_line + "`\n\n";
-  if (v.name == "incomplete") {
-    // Why: a property the budget cut short, or a selected clause nothing
-    // judged (e.g. a claimed capability this vgc has no oracle for).
-    out += "The run is incomplete: the verdict is neither a pass nor a failure.\n\n";
+  if (run.preflight)
+    out += fmt::format("**The implementation could not show a fresh node** ({}: {}); nothing else was judged.\n\n",
+                       run.preflight->clause, run.preflight->message);
+  if (v.name == "incomplete" || !v.unchecked.empty()) {
+    out += v.name == "incomplete" ? "The run is incomplete: the verdict is neither a pass nor a failure.\n\n"
+                                  : "Not everything could be judged:\n\n";
     for (const auto& p : run.properties)
-      if (p.status == "incomplete") out += fmt::format("- property `{}` did not finish: {}\n", p.id, p.note);
+      if (p.status == "stopped") out += fmt::format("- property `{}` stopped: {}\n", p.id, p.note);
     for (const auto& co : run.clauses)
-      if (co.status == "skipped" && co.note.find("shard") == std::string::npos)
-        out += fmt::format("- clause {} was not judged: {}\n", co.clause->id, co.note);
+      if (co.status == "unchecked") out += fmt::format("- clause {} is unchecked: {}\n", co.clause->id, co.note);
     out += "\n";
   }
 
-  auto section = [&](const std::vector<std::string>& ids, const std::string& title) {
+  auto section = [&](const std::vector<std::string>& ids, const std::string& title, const std::string& intro) {
     if (ids.empty()) return;
     out += "## " + title + "\n\n";
+    if (!intro.empty()) out += intro + "\n\n";
     for (const auto& co : run.clauses) {
       if (!co.finding) continue;
       if (std::find(ids.begin(), ids.end(), std::string(co.clause->id)) == ids.end()) continue;
@@ -51,30 +54,46 @@ std::string render_summary(const RunResult& run, const Verdict& v, const ReportC
       out += fmt::format("### {} ({}) — {}\n\n", co.clause->id, clause_level_name(co.clause->level), co.status);
       out += fmt::format("> {} ({})\n\n", co.clause->text, co.clause->source);
       out += fmt::format("Suite's reading: {}\n\n", co.clause->reading);
-      out += fmt::format("**Finding:** {}\n\n", co.finding->message);
+      out += fmt::format("**What the implementation did:** {}\n\n", co.finding->message);
       if (ctx.baseline && ctx.baseline->reasons.count(std::string(co.clause->id)))
         out += fmt::format("Baseline says: {}\n\n", ctx.baseline->reasons.at(std::string(co.clause->id)));
-      out += fmt::format("Shrunk counterexample ({} commands, from a fresh node; found by `{}`, seed {}):\n\n```\n{}```\n\n",
+      out += fmt::format("{} ({} commands, from a fresh node; found by `{}`, seed {}):\n\n```\n{}```\n\n",
+                         co.tolerated_from_start ? "First program it was seen on (tolerated from the start, not shrunk)"
+                                                 : "Shrunk counterexample",
                          co.program.commands.size(), co.found_by, co.seed, print_program(co.program));
       out += fmt::format("Replay: `{}`\n\n", replay_command(file, ctx.implementation_spec));
     }
   };
-  section(v.new_failures, "Failures");
-  section(v.known_failures, "Known deviations (in the baseline)");
-  section(v.should_failures, "SHOULD clauses not met (the verdict stands)");
+  section(v.new_failures, "Failures", "");
+  section(v.profile_differences, "Profile differences (IMPLEMENTATION-DEFINED: the spec is silent)",
+          "The implementation chose differently from the suite's reading of a point the spec leaves open. "
+          "Reported, tolerated (so it hides nothing else), and not gating; `--strict` makes them gate.");
+  section(v.known_failures, "Known deviations (in the baseline)", "");
+  section(v.should_failures, "SHOULD clauses not met (the verdict stands)", "");
   if (!v.stale_baseline.empty()) {
-    out += "## Baseline entries that now pass — remove them\n\n";
+    out += "## Baseline entries no case diverged on — remove them\n\n";
     for (const auto& id : v.stale_baseline) out += "- " + id + "\n";
     out += "\n";
   }
-  out += "## Clauses\n\n| clause | level | status |\n|---|---|---|\n";
+  out += "## Clauses\n\n| clause | level | status | exercised |\n|---|---|---|---|\n";
   for (const auto& co : run.clauses)
-    out += fmt::format("| {} | {} | {}{} |\n", co.clause->id, clause_level_name(co.clause->level), co.status,
-                       co.note.empty() ? "" : " (" + co.note + ")");
-  out += "\n## Properties\n\n| property | status | cases | seed | seconds |\n|---|---|---|---|---|\n";
-  for (const auto& p : run.properties)
-    out += fmt::format("| {} | {}{} | {} | {} | {:.2f} |\n", p.id, p.status, p.note.empty() ? "" : " (" + p.note + ")",
-                       p.cases, p.seed, p.seconds);
+    out += fmt::format("| {} | {} | {}{} | {} |\n", co.clause->id, clause_level_name(co.clause->level), co.status,
+                       co.note.empty() ? "" : " (" + co.note + ")", co.exercised);
+  out += "\n## Properties\n\n| property | status | cases | judged | set aside | findings | seed | seconds |\n"
+         "|---|---|---|---|---|---|---|---|\n";
+  for (const auto& p : run.properties) {
+    std::string found;
+    for (const auto& f : p.findings) found += (found.empty() ? "" : ", ") + f.finding.clause;
+    out += fmt::format("| {} | {}{} | {}/{} | {} | {} | {} | {} | {:.2f} |\n", p.id, p.status,
+                       p.note.empty() ? "" : " (" + p.note + ")", p.cases, p.cases_target, p.judged, p.set_aside,
+                       found.empty() ? "-" : found, p.seed, p.seconds);
+  }
+  out += "\n## Commands judged\n\n| command | sent | applied | rejected |\n|---|---|---|---|\n";
+  for (const auto& [kind, k] : run.command_kinds) {
+    std::string rej;
+    for (const auto& [reason, n] : k.rejected) rej += fmt::format("{}{} {}", rej.empty() ? "" : ", ", n, reason);
+    out += fmt::format("| {} | {} | {} | {} |\n", kind, k.sent, k.applied, rej.empty() ? "-" : rej);
+  }
   return out;
 }
 

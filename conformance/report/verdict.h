@@ -1,10 +1,22 @@
 // verdict.h — from per-clause results (and a baseline) to one verdict and
 // the exit code CI gates on.
 //
-// Exit codes: 0 conformant; 1 not conformant (a MUST or
-// IMPLEMENTATION-DEFINED clause failed, crashed or timed out and is not in
-// the baseline); 2 usage or infrastructure error, or an incomplete run
-// (the budget ran out), which is neither a pass nor a failure.
+// Spec: the clause levels of the catalog (clause.h), which follow the
+// spec's words: MUST where the text or the wire facts make a rule, SHOULD
+// where it says "typically", IMPLEMENTATION-DEFINED where it is silent and
+// the suite checks its own reading.
+//
+// What gates (exit 1, "not-conformant"), unless the clause is in the
+// baseline:
+//   - a MUST clause that failed;
+//   - any clause but a SHOULD one that crashed or timed out (a crash is
+//     never a reading of a silent point);
+//   - with `strict`, an IMPLEMENTATION-DEFINED clause whose reading the
+//     implementation does not follow (otherwise a "profile difference",
+//     reported, not gating).
+// Then: any clause `unchecked` or property stopped makes the run
+// "incomplete" (exit 2): neither a pass nor a failure. Otherwise
+// "conformant" (exit 0). Usage and infrastructure errors are also exit 2.
 #pragma once
 
 #include <string>
@@ -18,12 +30,20 @@ namespace vgc {
 struct Verdict {
   std::string name;  // "conformant", "not-conformant", "incomplete"
   int exit_code = 0;
+  bool strict = false;
   std::vector<std::string> new_failures;    // clause ids that decide "not-conformant"
   std::vector<std::string> known_failures;  // failing, but in the baseline
   std::vector<std::string> should_failures; // SHOULD clauses that failed (verdict stands)
-  std::vector<std::string> stale_baseline;  // in the baseline, but now passing
+  // IMPLEMENTATION-DEFINED clauses that failed without --strict: the
+  // implementation chose differently from the suite's reading.
+  std::vector<std::string> profile_differences;
+  std::vector<std::string> stale_baseline;  // in the baseline, but no case diverged on it
+  std::vector<std::string> unchecked;       // selected clauses nothing could judge
 };
 
-Verdict judge(const RunResult& run, const Baseline* baseline);
+// True when `co`'s finding gates the verdict (see above), baseline aside.
+bool finding_gates(const ClauseOutcome& co, bool strict);
+
+Verdict judge(const RunResult& run, const Baseline* baseline, bool strict = false);
 
 }  // namespace vgc

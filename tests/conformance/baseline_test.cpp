@@ -120,10 +120,10 @@ TEST(Judge, NoBaseline) {
   const Verdict pass = judge(run_with({}, {"LAYER-BASE-1", "BONE-FOREST-1"}), nullptr);
   EXPECT_EQ(pass.name, "conformant");
   EXPECT_EQ(pass.exit_code, 0);
-  const Verdict fail = judge(run_with({"BONE-FOREST-1"}, {"LAYER-BASE-1"}), nullptr);
+  const Verdict fail = judge(run_with({"BONE-DOWNSTREAM-1"}, {"LAYER-BASE-1"}), nullptr);
   EXPECT_EQ(fail.name, "not-conformant");
   EXPECT_EQ(fail.exit_code, 1);
-  EXPECT_EQ(fail.new_failures, std::vector<std::string>{"BONE-FOREST-1"});
+  EXPECT_EQ(fail.new_failures, std::vector<std::string>{"BONE-DOWNSTREAM-1"});
 }
 
 TEST(Judge, ABaselinedFailureIsKnownAndDoesNotFail) {
@@ -176,6 +176,36 @@ TEST(Judge, ShouldFailuresAndIncompleteRuns) {
   EXPECT_EQ(judge(run_with({"ATOMIC-1"}, {}, false), nullptr).exit_code, 1);
   const Baseline b = baseline_of("ATOMIC-1 known\n");
   EXPECT_EQ(judge(run_with({"ATOMIC-1"}, {}, false), &b).exit_code, 2);
+}
+
+TEST(Judge, ImplementationDefinedDifferencesGateOnlyWhenStrict) {
+  // BONE-FOREST-1 is IMPLEMENTATION-DEFINED (the spec is silent on cycles).
+  const RunResult run = run_with({"BONE-FOREST-1"}, {"LAYER-BASE-1"});
+  const Verdict lax = judge(run, nullptr);
+  EXPECT_EQ(lax.name, "conformant");
+  EXPECT_EQ(lax.exit_code, 0);
+  EXPECT_EQ(lax.profile_differences, std::vector<std::string>{"BONE-FOREST-1"});
+  EXPECT_TRUE(lax.new_failures.empty());
+  const Verdict strict = judge(run, nullptr, /*strict=*/true);
+  EXPECT_EQ(strict.name, "not-conformant");
+  EXPECT_EQ(strict.new_failures, std::vector<std::string>{"BONE-FOREST-1"});
+  EXPECT_TRUE(strict.profile_differences.empty());
+  // A crash is never a reading of a silent point: it gates without --strict.
+  RunResult crashed = run;
+  crashed.clauses.back().status = "crash";
+  crashed.clauses.back().finding->status = FindingStatus::Crash;
+  EXPECT_EQ(judge(crashed, nullptr).new_failures, std::vector<std::string>{"BONE-FOREST-1"});
+}
+
+TEST(Judge, UncheckedClausesMakeTheRunIncompleteNeverConformant) {
+  RunResult run = run_with({}, {"LAYER-BASE-1", "POLY-DELETE-1"});
+  run.clauses[1].status = "unchecked";
+  run.clauses[1].note = "0 judged commands exercised it";
+  run.complete = false;
+  const Verdict v = judge(run, nullptr);
+  EXPECT_EQ(v.name, "incomplete");
+  EXPECT_EQ(v.exit_code, 2);
+  EXPECT_EQ(v.unchecked, std::vector<std::string>{"POLY-DELETE-1"});
 }
 
 }  // namespace

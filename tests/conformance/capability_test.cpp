@@ -91,7 +91,7 @@ TEST(Capability, NotClaimedIsNeitherAFailureNorAGap) {
   EXPECT_TRUE(run.conformant);
   EXPECT_TRUE(run.complete);
   const std::string summary = render_summary(run, judge(run, nullptr), ReportContext{});
-  EXPECT_NE(summary.find(std::to_string(kClauses.size()) + " not claimed"), std::string::npos) << summary;
+  EXPECT_NE(summary.find(std::to_string(kClauses.size()) + " not-claimed"), std::string::npos) << summary;
 }
 
 TEST(Capability, SeededCapabilityFaultsAreCaughtNamingTheirClause) {

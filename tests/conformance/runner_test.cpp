@@ -49,6 +49,15 @@ std::string describe(const std::optional<Finding>& f) {
   return f->clause + "/" + finding_status_name(f->status) + "/" + f->message;
 }
 
+// Every finding of a property, with its counterexample, in the order found.
+std::string describe_findings(const PropertyOutcome& p) {
+  std::string out;
+  for (const auto& f : p.findings)
+    out += describe(f.finding) + " <- " + print_commands(f.program.commands) + (f.tolerated_from_start ? " (known)" : "") +
+           "\n";
+  return out;
+}
+
 // Everything a run decides, as comparable text, per clause.
 std::map<std::string, std::string> clause_view(const RunResult& run) {
   std::map<std::string, std::string> out;
@@ -71,7 +80,7 @@ const PropertyOutcome* property_in(const RunResult& run, std::string_view id) {
 }
 
 TEST(Runner, SameSeedSameResultAgainstAFault) {
-  for (const char* name : {"bone-cycles-accepted", "edge-crease-off-by-one"}) {
+  for (const char* name : {"bone-rotation-not-inherited", "edge-crease-off-by-one"}) {
     const RunResult a = run_fault(name, small(5));
     const RunResult b = run_fault(name, small(5));
     const auto& info = faults::fault_catalog()[static_cast<std::size_t>(fault(name))];
@@ -85,9 +94,9 @@ TEST(Runner, SameSeedSameResultAgainstAFault) {
       EXPECT_EQ(a.properties[i].status, b.properties[i].status) << a.properties[i].id;
       EXPECT_EQ(a.properties[i].seed, b.properties[i].seed) << a.properties[i].id;
       EXPECT_EQ(a.properties[i].cases, b.properties[i].cases) << a.properties[i].id;
-      EXPECT_EQ(describe(a.properties[i].finding), describe(b.properties[i].finding)) << a.properties[i].id;
-      EXPECT_EQ(print_commands(a.properties[i].program.commands), print_commands(b.properties[i].program.commands))
-          << a.properties[i].id;
+      EXPECT_EQ(a.properties[i].judged, b.properties[i].judged) << a.properties[i].id;
+      EXPECT_EQ(a.properties[i].set_aside, b.properties[i].set_aside) << a.properties[i].id;
+      EXPECT_EQ(describe_findings(a.properties[i]), describe_findings(b.properties[i])) << a.properties[i].id;
     }
     EXPECT_EQ(a.conformant, b.conformant);
     EXPECT_FALSE(a.conformant) << name;
@@ -120,8 +129,7 @@ void check_shards(const std::function<RunResult(const RunOptions&)>& run, int n,
       }
       ++ran_in;
       EXPECT_EQ(s.status, w.status) << what << ": " << w.id;
-      EXPECT_EQ(describe(s.finding), describe(w.finding)) << what << ": " << w.id;
-      EXPECT_EQ(print_commands(s.program.commands), print_commands(w.program.commands)) << what << ": " << w.id;
+      EXPECT_EQ(describe_findings(s), describe_findings(w)) << what << ": " << w.id;
       ASSERT_EQ(s.notes.size(), w.notes.size()) << what << ": " << w.id;
       for (std::size_t k = 0; k < s.notes.size(); ++k) {
         EXPECT_EQ(describe(s.notes[k].first), describe(w.notes[k].first)) << what << ": " << w.id;
@@ -151,7 +159,7 @@ void check_shards(const std::function<RunResult(const RunOptions&)>& run, int n,
     if (w.finding) {
       EXPECT_TRUE(same_finding) << what << ": " << id << " " << describe(w.finding) << " is in no shard";
     } else {
-      EXPECT_EQ(w.status, "pass") << what << ": " << id;
+      EXPECT_EQ(w.status, "pass") << what << ": " << id << " (" << w.note << ")";
       EXPECT_TRUE(statuses.count("pass")) << what << ": " << id;
       for (const auto& st : statuses) EXPECT_TRUE(st == "pass" || st == "skipped") << what << ": " << id << " " << st;
     }
@@ -179,7 +187,7 @@ TEST(Runner, ShardsPartitionTheReferenceRun) {
 
 TEST(Runner, ShardsPartitionAFaultyRun) {
   // One fault found by a failing case, one seen as SHOULD notes in many properties.
-  for (const char* name : {"bone-cycles-accepted", "wrong-reason-codes"})
+  for (const char* name : {"bone-rotation-not-inherited", "wrong-reason-codes"})
     check_shards([name](const RunOptions& o) { return run_fault(name, o); }, 3, name, true);
 }
 
@@ -226,8 +234,9 @@ TEST(Runner, ClauseFilterRunsOnlyDeclaringPropertiesAndReportsFindingsOutsideIt)
   ASSERT_TRUE(reported.count("BONE-FOREST-1")) << "a finding outside the filter was dropped";
   EXPECT_EQ(clause_in(run, "BONE-FOREST-1")->status, "fail");
   EXPECT_FALSE(reported.count("LAYER-BASE-1"));
-  EXPECT_FALSE(run.conformant);
-  EXPECT_EQ(judge(run, nullptr).exit_code, 1);
+  EXPECT_TRUE(run.conformant) << "BONE-FOREST-1 is IMPLEMENTATION-DEFINED: a profile difference";
+  EXPECT_EQ(judge(run, nullptr).exit_code, 0);
+  EXPECT_EQ(judge(run, nullptr, /*strict=*/true).exit_code, 1);
 
   // A glob over several groups runs each declaring property, and only those.
   RunOptions two = small(4);
@@ -250,7 +259,7 @@ TEST(Runner, ATinyBudgetMakesTheRunIncomplete) {
   int incomplete = 0;
   for (const auto& p : run.properties) {
     EXPECT_NE(p.status, "pass") << p.id << " passed without running its cases";
-    incomplete += p.status == "incomplete";
+    incomplete += p.status == "stopped";
   }
   EXPECT_GE(incomplete, 1);
   for (const auto& co : run.clauses) EXPECT_NE(co.status, "pass") << co.clause->id;

@@ -9,6 +9,7 @@
 // certify and replay through the plugin route:
 //   VGC_FAULT=subdivision-ignores-creases ./vgc certify --impl plugin:PATH
 // with PATH build/tests/conformance/libvgc_fault_plugin_requests.so.
+#include <cstdio>
 #include <cstdlib>
 #include <exception>
 #include <new>
@@ -25,13 +26,24 @@ struct vgc_node {
 
 namespace {
 
-int fault_from_env() {
-  const char* name = std::getenv("VGC_FAULT");
-  const int f = vgc::faults::find_fault(name ? name : "none");
-  return f < 0 ? 0 : f;
+// VGC_FAULT: one fault name or a comma-separated list ("a,b,c"); an unknown
+// name is refused at create (the plugin answers no node), so a typo in a
+// test never certifies the plain reference by accident.
+std::vector<int> faults_from_env(bool* ok) {
+  const char* list = std::getenv("VGC_FAULT");
+  std::vector<int> faults;
+  std::string error;
+  *ok = vgc::faults::parse_fault_list(list ? list : "", &faults, &error);
+  if (!*ok) std::fprintf(stderr, "libvgc_fault_plugin: VGC_FAULT: %s\n", error.c_str());
+  return faults;
 }
 
-vgc_node* create_node() { return new (std::nothrow) vgc_node{vgc::faults::FaultyNode(fault_from_env()), {}}; }
+vgc_node* create_node() {
+  bool ok = true;
+  auto faults = faults_from_env(&ok);
+  if (!ok) return nullptr;
+  return new (std::nothrow) vgc_node{vgc::faults::FaultyNode(std::move(faults)), {}};
+}
 void destroy_node(vgc_node* n) { delete n; }
 
 int apply_line(vgc_node* n, const char* line, const char** reason) {

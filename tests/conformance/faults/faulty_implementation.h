@@ -11,10 +11,11 @@ namespace vgc::faults {
 
 class FaultyImplementation final : public Implementation {
  public:
-  explicit FaultyImplementation(int fault) : fault_(fault), node_(fault) {}
-  std::string name() const override { return "fault:" + std::string(fault_catalog()[static_cast<std::size_t>(fault_)].name); }
+  explicit FaultyImplementation(int fault) : faults_{fault}, node_(fault) {}
+  explicit FaultyImplementation(std::vector<int> faults) : faults_(std::move(faults)), node_(faults_) {}
+  std::string name() const override { return "fault:" + fault_list_name(faults_); }
   Answer reset() override {
-    node_ = FaultyNode(fault_);
+    node_ = FaultyNode(faults_);
     return Answer{CallStatus::Ok, true, "", ""};
   }
   Answer apply(const Command& c) override {
@@ -26,7 +27,7 @@ class FaultyImplementation final : public Implementation {
   Document request(const std::string& line) override { return {CallStatus::Ok, node_.request(line), ""}; }
 
  private:
-  int fault_;
+  std::vector<int> faults_;
   FaultyNode node_;
 };
 

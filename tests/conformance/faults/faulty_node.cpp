@@ -2,6 +2,7 @@
 // or in a document rewrite, marked with its name.
 #include "faulty_node.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
@@ -42,6 +43,7 @@ const std::vector<FaultInfo>& fault_catalog() {
       {"rejected-layer-still-created", "ATOMIC-1", "fail",
        "a layer_create rejected for its name still creates the layer with a shortened name"},
       {"pick-highest-layer-id", "LAYER-ID-PICK-1", "fail", "layer id 0xFFFF picks the highest free id"},
+      {"polygon-delete-ignored", "POLY-DELETE-1", "fail", "answers ok to a polygon delete and keeps the polygon"},
       {"crash-on-self-parent", "BONE-FOREST-1", "crash", "aborts on a bone that names itself as parent (its cycle check)"},
       {"hang-on-subscribe-real64", "LAYER-SUBSCRIBE-1", "timeout", "never answers a REAL64 subscription"},
       {"wrong-reason-codes", "REASON-1", "fail", "rejects with the right verdict but always says REJECTED (SHOULD)"},
@@ -62,7 +64,35 @@ int find_fault(std::string_view name) {
   return -1;
 }
 
-bool FaultyNode::is(std::string_view name) const { return fault_catalog()[static_cast<std::size_t>(fault_)].name == name; }
+bool parse_fault_list(std::string_view list, std::vector<int>* out, std::string* error) {
+  out->clear();
+  std::size_t start = 0;
+  while (start <= list.size()) {
+    const std::size_t comma = std::min(list.find(',', start), list.size());
+    const std::string_view name = list.substr(start, comma - start);
+    start = comma + 1;
+    if (name.empty() || name == "none") continue;
+    const int f = find_fault(name);
+    if (f < 0) {
+      *error = "unknown fault '" + std::string(name) + "' (the names are in tests/conformance/faults/faulty_node.cpp)";
+      return false;
+    }
+    out->push_back(f);
+  }
+  return true;
+}
+
+std::string fault_list_name(const std::vector<int>& faults) {
+  std::string out;
+  for (int f : faults) out += (out.empty() ? "" : ",") + std::string(fault_catalog()[static_cast<std::size_t>(f)].name);
+  return out.empty() ? "none" : out;
+}
+
+bool FaultyNode::is(std::string_view name) const {
+  for (int f : faults_)
+    if (fault_catalog()[static_cast<std::size_t>(f)].name == name) return true;
+  return false;
+}
 
 FaultyAnswer FaultyNode::answer(Reason r) const {
   if (r == Reason::Ok) return {true, ""};
@@ -145,6 +175,13 @@ FaultyAnswer FaultyNode::apply(const Command& original) {
       if (!seen) unique[n++] = v;
     }
     if (n == 3 && x->v[3] != kNone32) x->v = unique;
+  }
+  // polygon-delete-ignored (both forms: the command and its wire alias)
+  if (is("polygon-delete-ignored")) {
+    if (auto* x = std::get_if<cmd::PolygonDelete>(&c); x && node_.polygons().count(x->polygon_id)) return {true, ""};
+    if (auto* x = std::get_if<cmd::PolygonSetCornerUint32>(&c);
+        x && x->layer_id == 1 && x->v[0] == kNone32 && node_.polygons().count(x->polygon_id))
+      return {true, ""};
   }
   // vertex-delete-refused-when-used
   if (is("vertex-delete-refused-when-used")) {

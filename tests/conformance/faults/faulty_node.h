@@ -1,5 +1,6 @@
-// faulty_node.h — the reference node with one seeded fault, for proving that
-// the conformance suite has teeth (issue 3, item 6).
+// faulty_node.h — the reference node with one or several seeded faults, for
+// proving that the conformance suite has teeth (issue 3, item 6), also when
+// an implementation deviates in many places at once (issue 9).
 //
 // Spec: each fault breaks one clause of the catalog (conformance/clause.h);
 // kFaults lists which, and the kill test checks that certification names it.
@@ -30,6 +31,11 @@ struct FaultInfo {
 const std::vector<FaultInfo>& fault_catalog();
 // Index of `name` in fault_catalog(), or -1.
 int find_fault(std::string_view name);
+// Parses a comma-separated list of fault names ("a,b,c"; "" and "none" are
+// the plain reference). On an unknown name returns false and sets *error.
+bool parse_fault_list(std::string_view list, std::vector<int>* out, std::string* error);
+// "a,b,c" for a list of indexes ("none" when empty).
+std::string fault_list_name(const std::vector<int>& faults);
 
 // What a faulty node answers: applied, or rejected with a reason name.
 struct FaultyAnswer {
@@ -39,7 +45,8 @@ struct FaultyAnswer {
 
 class FaultyNode {
  public:
-  explicit FaultyNode(int fault) : fault_(fault) {}
+  explicit FaultyNode(int fault) : faults_{fault} {}
+  explicit FaultyNode(std::vector<int> faults) : faults_(std::move(faults)) {}
   FaultyAnswer apply(const Command& c);  // may abort() or hang, for the crash and hang faults
   std::string snapshot() const;
   std::string derived() const;
@@ -50,7 +57,7 @@ class FaultyNode {
  private:
   bool is(std::string_view name) const;
   FaultyAnswer answer(Reason r) const;
-  int fault_;
+  std::vector<int> faults_;  // indexes into fault_catalog(); every one is active
   Node node_;
 };
 

@@ -1,7 +1,7 @@
 // no_oracle_test.cpp — a claimed optional capability that this build
 // cannot judge (conformance/capability.h: no check registered, "no oracle
-// linked") is reported as not judged — status "skipped", note "no oracle
-// linked", the run incomplete, verdict "incomplete", exit code 2
+// linked") is reported as not judged — status "unchecked", note "not judged:
+// no oracle linked", the run incomplete, verdict "incomplete", exit code 2
 // (verdict.h) — never as a pass; and `replay_program` says it cannot
 // repeat such a check, or one the implementation does not claim.
 //
@@ -72,8 +72,8 @@ TEST(NoOracle, AClaimedCapabilityWithoutACheckIsNotJudgedAndTheRunIsIncomplete) 
     const std::string id(co.clause->id);
     if (!ids.count(id)) continue;
     seen.insert(id);
-    EXPECT_EQ(co.status, "skipped") << id;
-    EXPECT_EQ(co.note, "no oracle linked") << id;
+    EXPECT_EQ(co.status, "unchecked") << id;
+    EXPECT_EQ(co.note, "not judged: no oracle linked") << id;
     EXPECT_FALSE(co.finding.has_value()) << id;
     EXPECT_TRUE(co.properties.empty()) << id << ": a property is said to have checked it";
   }
@@ -100,11 +100,11 @@ TEST(NoOracle, AClaimedCapabilityWithoutACheckIsNotJudgedAndTheRunIsIncomplete) 
   const auto j = nlohmann::json::parse(render_report_json(run, v, ctx));
   EXPECT_EQ(j.at("verdict"), "incomplete");
   EXPECT_EQ(j.at("exit_code"), 2);
-  EXPECT_EQ(j.at("counts").at("skipped"), static_cast<int>(ids.size()));
+  EXPECT_EQ(j.at("counts").at("unchecked"), static_cast<int>(ids.size()));
   EXPECT_EQ(j.at("counts").at("pass"), 0);
   for (const auto& c : j.at("clauses")) {
-    EXPECT_EQ(c.at("status"), "skipped") << c.dump();
-    EXPECT_EQ(c.at("note"), "no oracle linked") << c.dump();
+    EXPECT_EQ(c.at("status"), "unchecked") << c.dump();
+    EXPECT_EQ(c.at("note"), "not judged: no oracle linked") << c.dump();
   }
   const std::string summary = render_summary(run, v, ctx);
   EXPECT_NE(summary.find("INCOMPLETE"), std::string::npos) << summary;
@@ -130,7 +130,7 @@ TEST(NoOracle, AnUnclaimedCapabilityIsNotClaimedEvenWithoutACheck) {
 TEST(NoOracle, ReplayCannotRepeatACheckWithoutAnOracleOrAClaim) {
   // A fake capability name, claimed: no property and no check know it.
   Program p;
-  p.request = CapabilityRequest{"no-such-capability", 2};
+  p.request = CapabilityRequest{"no-such-capability", 2, std::nullopt};
   Claims claims_it({"no-such-capability"});
   const ReplayResult r = replay_program(p, claims_it);
   EXPECT_FALSE(r.failure.has_value());
@@ -140,7 +140,7 @@ TEST(NoOracle, ReplayCannotRepeatACheckWithoutAnOracleOrAClaim) {
   // A real capability name the implementation does not claim.
   const auto names = catalog_capabilities();
   ASSERT_FALSE(names.empty());
-  p.request = CapabilityRequest{names.front(), 1};
+  p.request = CapabilityRequest{names.front(), 1, std::nullopt};
   Claims claims_nothing({});
   const ReplayResult n = replay_program(p, claims_nothing);
   EXPECT_FALSE(n.failure.has_value());

@@ -1,0 +1,44 @@
+// exercised_clauses.h — which clauses a judged step decided.
+//
+// Spec: every clause of the catalog (clause.h); the attribution rules of
+// attribution.h decide which.
+//
+// Rationale: a clause may only be reported `pass` when something in the run
+// could have shown it failing (issue 9, item 1). A step that was run on the
+// model and on the implementation and found equal "exercised" each clause
+// that attribution would have blamed had that step diverged: the clause of
+// its verdict (acceptance or rejection), and for an applied command the
+// clause of every kind of snapshot or derived line it changed, whether
+// changed, added or removed. A rejected command exercises ATOMIC-1 (nothing
+// changed) and, when the implementation reported its verdict, REASON-1.
+// Every judged step exercises ACCEPT-1 (it read the canonical line) and
+// STABLE-1 (it answered). The runner counts these per clause.
+#pragma once
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "command.h"
+#include "node.h"
+#include "reason.h"
+
+namespace vgc {
+
+// Appends to *out the clauses that the step `c`, taking `before` to `after`
+// with the reference's verdict `expected`, decided (duplicates removed).
+// `verdict_reported` is false when the implementation answered `done`
+// (REASON-1 is then not exercised). Precondition: `after` is `before` with
+// `c` applied by the reference.
+void exercised_clauses(const Node& before, const Command& c, Reason expected, const Node& after,
+                       bool verdict_reported, std::vector<std::string_view>* out);
+
+// The clauses a fresh-node check decides (LAYER-BASE-1, CREASE-INITIAL-1,
+// STABLE-1).
+const std::vector<std::string_view>& fresh_node_clauses();
+
+// The command's keyword ("polygon_set_corner_uint32"), as docs/commands.md
+// names it.
+std::string command_kind(const Command& c);
+
+}  // namespace vgc

@@ -1,0 +1,238 @@
+// past_findings_test.cpp — a run lists every deviation it can show (issue
+// 9): several faults at once are all named, each with its own shrunk
+// counterexample that replays to that clause alone; a baseline tolerates
+// its clauses from the first case and hides nothing else; an implementation
+// that cannot answer gets no `pass`; the reference gets `pass` for every
+// clause with a nonzero exercised count.
+//
+// Spec: the clause catalog (clause.h); the statuses of runner.h and the
+// verdict rules of verdict.h.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <set>
+
+#include "command_text.h"
+#include "exec_implementation.h"
+#include "faulty_implementation.h"
+#include "reference_implementation.h"
+#include "runner.h"
+#include "verdict.h"
+
+namespace vgc {
+namespace {
+
+// Five faults in five clauses, found by at least three properties.
+const std::vector<std::string> kFiveFaults = {"long-names-truncated", "missing-corner-vertices-created",
+                                              "polygon-delete-ignored", "real64-stored-as-float",
+                                              "bone-cycles-accepted"};
+const std::map<std::string, std::string> kClauseOf = {{"long-names-truncated", "LAYER-NAME-1"},
+                                                      {"missing-corner-vertices-created", "POLY-VERTEX-REF-1"},
+                                                      {"polygon-delete-ignored", "POLY-DELETE-1"},
+                                                      {"real64-stored-as-float", "REAL-STORAGE-1"},
+                                                      {"bone-cycles-accepted", "BONE-FOREST-1"}};
+
+std::vector<int> faults_of(const std::vector<std::string>& names) {
+  std::vector<int> out;
+  for (const auto& n : names) {
+    const int f = faults::find_fault(n);
+    EXPECT_GE(f, 0) << n;
+    out.push_back(f);
+  }
+  return out;
+}
+
+RunOptions defaults(std::uint64_t seed = 1) {
+  RunOptions o;  // as `vgc certify` runs by default
+  o.seed = seed;
+  o.cases = 200;
+  o.max_size = 50;
+  o.budget_seconds = 300;
+  return o;
+}
+
+const ClauseOutcome* clause_in(const RunResult& run, std::string_view id) {
+  for (const auto& co : run.clauses)
+    if (co.clause->id == id) return &co;
+  return nullptr;
+}
+
+std::string findings_of(const RunResult& run) {
+  std::string out;
+  for (const auto& co : run.clauses)
+    if (co.finding) out += std::string(co.clause->id) + "(" + co.status + ") ";
+  return out;
+}
+
+TEST(PastFindings, FaultListParses) {
+  std::vector<int> f;
+  std::string error;
+  ASSERT_TRUE(faults::parse_fault_list("long-names-truncated,bone-cycles-accepted", &f, &error)) << error;
+  EXPECT_EQ(f.size(), 2u);
+  EXPECT_EQ(faults::fault_list_name(f), "long-names-truncated,bone-cycles-accepted");
+  EXPECT_TRUE(faults::parse_fault_list("", &f, &error));
+  EXPECT_TRUE(f.empty());
+  EXPECT_FALSE(faults::parse_fault_list("long-names-truncated,no-such-fault", &f, &error));
+  EXPECT_NE(error.find("no-such-fault"), std::string::npos) << error;
+}
+
+TEST(PastFindings, FiveFaultsAreAllNamedEachWithItsOwnCounterexample) {
+  faults::FaultyImplementation impl(faults_of(kFiveFaults));
+  const RunResult run = run_certification(impl, defaults());
+  std::set<std::string> properties_that_found;
+  for (const auto& [fault, clause] : kClauseOf) {
+    const ClauseOutcome* co = clause_in(run, clause);
+    ASSERT_NE(co, nullptr) << clause;
+    ASSERT_TRUE(co->finding) << fault << " (" << clause << ") was not named; found: " << findings_of(run);
+    EXPECT_EQ(co->status, "fail") << clause;
+    EXPECT_FALSE(co->tolerated_from_start);
+    properties_that_found.insert(co->found_by);
+    // Its counterexample shows this clause and no other: replayed against
+    // the same five-fault implementation, the first divergence is it.
+    faults::FaultyImplementation again(faults_of(kFiveFaults));
+    const ReplayResult r = replay_program(co->program, again);
+    ASSERT_TRUE(r.failure) << clause << ": the counterexample does not fail on replay";
+    EXPECT_EQ(r.failure->clause, clause) << print_commands(co->program.commands);
+    // And the reference passes it.
+    ReferenceImplementation reference;
+    EXPECT_FALSE(replay_program(co->program, reference).failure) << clause;
+  }
+  EXPECT_GE(properties_that_found.size(), 3u);
+  const Verdict v = judge(run, nullptr);
+  EXPECT_EQ(v.name, "not-conformant");
+  // BONE-FOREST-1 is IMPLEMENTATION-DEFINED: a profile difference, not gating
+  // unless --strict; the four MUST clauses gate.
+  EXPECT_EQ(v.new_failures.size(), 4u) << findings_of(run);
+  EXPECT_EQ(v.profile_differences, std::vector<std::string>{"BONE-FOREST-1"});
+  EXPECT_EQ(judge(run, nullptr, /*strict=*/true).new_failures.size(), 5u);
+
+  // Same seed, same findings, in the same order.
+  faults::FaultyImplementation twin(faults_of(kFiveFaults));
+  const RunResult second = run_certification(twin, defaults());
+  ASSERT_EQ(run.properties.size(), second.properties.size());
+  for (std::size_t i = 0; i < run.properties.size(); ++i) {
+    ASSERT_EQ(run.properties[i].findings.size(), second.properties[i].findings.size()) << run.properties[i].id;
+    for (std::size_t k = 0; k < run.properties[i].findings.size(); ++k) {
+      EXPECT_EQ(run.properties[i].findings[k].finding.clause, second.properties[i].findings[k].finding.clause);
+      EXPECT_EQ(print_commands(run.properties[i].findings[k].program.commands),
+                print_commands(second.properties[i].findings[k].program.commands));
+    }
+  }
+}
+
+TEST(PastFindings, ABaselineToleratesItsClausesAndHidesNothingElse) {
+  RunOptions o = defaults();
+  o.tolerated = {"POLY-VERTEX-REF-1", "REAL-STORAGE-1"};
+  Baseline baseline;
+  for (const auto& id : o.tolerated) baseline.reasons[id] = "known";
+  faults::FaultyImplementation impl(faults_of(kFiveFaults));
+  const RunResult run = run_certification(impl, o);
+  const Verdict v = judge(run, &baseline);
+  EXPECT_EQ(std::set<std::string>(v.known_failures.begin(), v.known_failures.end()),
+            (std::set<std::string>{"POLY-VERTEX-REF-1", "REAL-STORAGE-1"}))
+      << findings_of(run);
+  EXPECT_EQ(std::set<std::string>(v.new_failures.begin(), v.new_failures.end()),
+            (std::set<std::string>{"LAYER-NAME-1", "POLY-DELETE-1"}))
+      << findings_of(run);
+  EXPECT_EQ(v.profile_differences, std::vector<std::string>{"BONE-FOREST-1"});
+  for (const char* known : {"POLY-VERTEX-REF-1", "REAL-STORAGE-1"}) {
+    const ClauseOutcome* co = clause_in(run, known);
+    ASSERT_TRUE(co && co->finding) << known;
+    EXPECT_TRUE(co->tolerated_from_start) << known;
+  }
+  EXPECT_EQ(v.name, "not-conformant");
+}
+
+TEST(PastFindings, ABaselinedClauseCannotHideAnUnrelatedMustFailure) {
+  // docs/certify.md's example baseline line, against an implementation with
+  // that fault and a polygon delete that does nothing.
+  RunOptions o = defaults();
+  o.tolerated = {"POLY-VERTEX-REF-1"};
+  Baseline baseline;
+  baseline.reasons["POLY-VERTEX-REF-1"] = "our host creates missing vertices on purpose";
+  faults::FaultyImplementation impl(faults_of({"missing-corner-vertices-created", "polygon-delete-ignored"}));
+  const RunResult run = run_certification(impl, o);
+  const Verdict v = judge(run, &baseline);
+  EXPECT_EQ(v.new_failures, std::vector<std::string>{"POLY-DELETE-1"}) << findings_of(run);
+  EXPECT_EQ(v.known_failures, std::vector<std::string>{"POLY-VERTEX-REF-1"});
+  EXPECT_EQ(v.name, "not-conformant");
+  EXPECT_EQ(v.exit_code, 1);
+}
+
+TEST(PastFindings, AStaleBaselineEntryIsReported) {
+  RunOptions o = defaults();
+  o.cases = 30;
+  o.tolerated = {"BONE-FOREST-1"};
+  Baseline baseline;
+  baseline.reasons["BONE-FOREST-1"] = "was broken once";
+  ReferenceImplementation reference;
+  const RunResult run = run_certification(reference, o);
+  const Verdict v = judge(run, &baseline);
+  EXPECT_EQ(v.stale_baseline, std::vector<std::string>{"BONE-FOREST-1"});
+  EXPECT_EQ(v.name, "conformant");
+}
+
+// An exec program that answers ?hello and then one answer far over the
+// answer limit, then sleeps: nothing can be judged, and nothing passes.
+TEST(PastFindings, AnImplementationThatCannotAnswerGetsNoPass) {
+  const auto dir = std::filesystem::temp_directory_path() / ("vgc_garbage_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  const auto script = dir / "garbage.py";
+  {
+    std::ofstream f(script);
+    f << "import sys, time\n"
+         "for line in sys.stdin:\n"
+         "    if line.startswith('?hello'):\n"
+         "        print('vgc-exec 1 garbage', flush=True)\n"
+         "    else:\n"
+         "        sys.stdout.write('x' * (80 << 20))\n"
+         "        sys.stdout.flush()\n"
+         "        time.sleep(30)\n";
+  }
+  OpenOptions oo;
+  oo.timeout_seconds = 3;
+  std::string error;
+  auto impl = open_implementation("exec:python3 " + script.string(), oo, &error);
+  ASSERT_TRUE(impl) << error;
+  RunOptions o = defaults();
+  o.cases = 5;
+  const RunResult run = run_certification(*impl, o);
+  ASSERT_TRUE(run.preflight) << "the fresh node could not be read, yet no preflight finding";
+  for (const auto& co : run.clauses) {
+    EXPECT_NE(co.status, "pass") << co.clause->id;
+    if (!co.finding && co.status != "not-claimed") {
+      EXPECT_EQ(co.status, "unchecked") << co.clause->id;
+      EXPECT_FALSE(co.note.empty()) << co.clause->id << " is unchecked without saying why";
+    }
+  }
+  const Verdict v = judge(run, nullptr);
+  EXPECT_NE(v.name, "conformant");
+  EXPECT_EQ(v.name, "not-conformant") << "a program that cannot show a fresh node breaks " << run.preflight->clause;
+  EXPECT_LT(run.seconds, 30) << "one preflight, not a wait per case";
+  std::filesystem::remove_all(dir);
+}
+
+// Certification of the reference, as `./vgc certify` runs it: every clause
+// `pass`, each exercised by judged steps; each command kind applied at
+// least 50 times.
+TEST(PastFindings, TheReferencePassesEveryClauseWithANonzeroExercisedCount) {
+  ReferenceImplementation reference;
+  const RunResult run = run_certification(reference, defaults());
+  for (const auto& co : run.clauses) {
+    EXPECT_EQ(co.status, "pass") << co.clause->id << ": " << co.note;
+    EXPECT_GT(co.exercised, 0) << co.clause->id;
+  }
+  EXPECT_TRUE(run.complete);
+  EXPECT_TRUE(run.conformant);
+  for (const auto& p : run.properties) {
+    EXPECT_EQ(p.status, "pass") << p.id << ": " << p.note;
+    EXPECT_EQ(p.cases, p.cases_target) << p.id;
+    EXPECT_EQ(p.judged, p.cases) << p.id;
+  }
+}
+
+}  // namespace
+}  // namespace vgc
