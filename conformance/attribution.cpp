@@ -2,6 +2,7 @@
 #include "attribution.h"
 
 #include <cfloat>
+#include <sstream>
 #include <type_traits>
 
 namespace vgc {
@@ -41,6 +42,15 @@ std::string_view crease_clause(const Node& n, const std::string& name, LayerType
   if (!l || l->type != required) return "CREASE-LAYER-MISSING-1";
   return required == LayerType::VertexUint32 ? "CREASE-VERTEX-LAYER-1" : "CREASE-EDGE-LAYER-1";
 }
+
+// A name of exactly the longest length a name may have (15 bytes, 16 with
+// the NUL: docs/spec_facts.md 2). When a command carrying one is refused, or
+// its name is stored wrongly, the rule broken is taken to be the
+// name-length rule (LAYER-NAME-1, CREASE-NAME-1, BONE-NAME-1), the boundary
+// an implementation most often gets wrong (a 16-byte buffer without room for
+// the NUL), not the command's general one. Any other fault on such a
+// command is still reported, under the name clause.
+bool name_at_limit(const std::string& name) { return name.size() == kMaxNameBytes; }
 
 std::string_view vertex_set_acceptance(std::uint16_t layer, std::uint32_t id, bool is_delete, const Node& before) {
   if (is_delete) return vertex_in_use(before, id) ? "POLY-VERTEX-DELETE-1" : "VERTEX-DELETE-1";
@@ -117,6 +127,7 @@ std::string_view clause_for_acceptance(const Command& c, const Node& before) {
       Overloaded{
           [&](const cmd::LayerCreate& x) -> std::string_view {
             if (x.name.empty()) return "LAYER-DESTROY-1";
+            if (name_at_limit(x.name)) return "LAYER-NAME-1";
             if (x.layer_id == kNone16) return "LAYER-ID-PICK-1";
             if (before.find_layer(x.layer_id)) return "LAYER-RECREATE-1";
             return "LAYER-CREATE-1";
@@ -142,13 +153,18 @@ std::string_view clause_for_acceptance(const Command& c, const Node& before) {
           },
           [&](const cmd::PolygonDelete&) -> std::string_view { return "POLY-DELETE-1"; },
           [&](const cmd::CreaseSetVertex& x) -> std::string_view {
+            if (name_at_limit(x.layer)) return "CREASE-NAME-1";
             return crease_clause(before, x.layer, LayerType::VertexUint32);
           },
           [&](const cmd::CreaseSetEdge& x) -> std::string_view {
+            if (name_at_limit(x.layer)) return "CREASE-NAME-1";
             return crease_clause(before, x.layer, LayerType::PolygonCornerUint32);
           },
           [&](const cmd::BoneCreate& x) -> std::string_view {
             if (x.weight.empty()) return "BONE-DESTROY-1";
+            if (name_at_limit(x.weight) || name_at_limit(x.reference) || name_at_limit(x.pos_label) ||
+                name_at_limit(x.rot_label))
+              return "BONE-NAME-1";
             if (x.bone_id == kNone16) return "BONE-ID-PICK-1";
             if (!before.bones().count(x.parent)) return "BONE-PARENT-1";
             return "BONE-CREATE-1";
@@ -168,6 +184,7 @@ std::string_view clause_for_snapshot(const Command& c, const Node& before, const
           [&](const cmd::LayerCreate& x) -> std::string_view {
             if (x.name.empty()) return "LAYER-DESTROY-1";
             if (x.layer_id == kNone16 && kind == "layer") return "LAYER-ID-PICK-1";
+            if (kind == "layer" && name_at_limit(x.name)) return "LAYER-NAME-1";
             if (x.layer_id != kNone16 && before.find_layer(x.layer_id)) return "LAYER-RECREATE-1";
             if (slot) return missing_or_extra ? "LAYER-STACK-1" : "LAYER-DEFAULT-1";
             return "LAYER-CREATE-1";
@@ -200,13 +217,18 @@ std::string_view clause_for_snapshot(const Command& c, const Node& before, const
           },
           [&](const cmd::PolygonDelete&) -> std::string_view { return slot ? "LAYER-SIZE-1" : "POLY-DELETE-1"; },
           [&](const cmd::CreaseSetVertex& x) -> std::string_view {
+            if (name_at_limit(x.layer)) return "CREASE-NAME-1";
             return x.layer.empty() ? "CREASE-DEFAULT-1" : "CREASE-VERTEX-LAYER-1";
           },
           [&](const cmd::CreaseSetEdge& x) -> std::string_view {
+            if (name_at_limit(x.layer)) return "CREASE-NAME-1";
             return x.layer.empty() ? "CREASE-DEFAULT-1" : "CREASE-EDGE-LAYER-1";
           },
           [&](const cmd::BoneCreate& x) -> std::string_view {
             if (x.weight.empty()) return "BONE-DESTROY-1";
+            if (kind == "bone" && (name_at_limit(x.weight) || name_at_limit(x.reference) ||
+                                   name_at_limit(x.pos_label) || name_at_limit(x.rot_label)))
+              return "BONE-NAME-1";
             return x.bone_id == kNone16 ? "BONE-ID-PICK-1" : "BONE-CREATE-1";
           },
           [&](const cmd::BoneDestroy&) -> std::string_view { return "BONE-DESTROY-1"; },
@@ -232,6 +254,25 @@ std::string_view clause_for_derived(const Node& after, std::string_view kind, lo
     return "BONE-DOWNSTREAM-1";
   }
   return "ATOMIC-1";
+}
+
+std::string_view clause_for_derived(const Node& after, const DocumentDifference& d, long bone_id) {
+  if (d.kind == "edge_crease") {
+    // "edge_crease <polygon> <corner> <crease>": the two sides list
+    // different edges (a line missing, extra, or for another polygon or
+    // corner) when they disagree on how many corners a polygon has, i.e.
+    // whether its fourth corner is a vertex reference: POLY-TRIANGLE-1.
+    // Only a different crease on the same edge is about creases.
+    const auto edge = [](const std::string& line) {
+      std::istringstream in(line);
+      std::string kind, polygon, corner;
+      in >> kind >> polygon >> corner;
+      return polygon + " " + corner;
+    };
+    if (d.expected_line.empty() || d.observed_line.empty() || edge(d.expected_line) != edge(d.observed_line))
+      return "POLY-TRIANGLE-1";
+  }
+  return clause_for_derived(after, d.kind, bone_id);
 }
 
 }  // namespace vgc

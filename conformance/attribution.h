@@ -14,6 +14,7 @@
 #include <string_view>
 
 #include "command.h"
+#include "document_diff.h"
 #include "node.h"
 #include "reason.h"
 
@@ -38,5 +39,11 @@ std::string_view clause_for_snapshot(const Command& c, const Node& before, const
 // "edge_crease", "bone_pose") in the state `after`; `bone_id` is the bone
 // of a bone_pose line.
 std::string_view clause_for_derived(const Node& after, std::string_view line_kind, long bone_id);
+
+// The same from the whole difference `d` (kind d.kind): edge_crease lines
+// that name different edges (or one side lacking the line) mean the two
+// sides disagree on a polygon's corners (POLY-TRIANGLE-1: a fourth corner
+// that is a vertex reference makes a quad), not on a crease.
+std::string_view clause_for_derived(const Node& after, const DocumentDifference& d, long bone_id);
 
 }  // namespace vgc

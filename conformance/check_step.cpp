@@ -111,7 +111,7 @@ StepResult check_step(const Node& before, const Command& c, Implementation& sut,
   if (auto d = diff_documents(print_derived(*after), derived.text)) {
     Finding f;
     const std::string& line = d->expected_line.empty() ? d->observed_line : d->expected_line;
-    f.clause = expected == Reason::Ok ? std::string(clause_for_derived(*after, d->kind, bone_id_of(line)))
+    f.clause = expected == Reason::Ok ? std::string(clause_for_derived(*after, *d, bone_id_of(line)))
                                       : "ATOMIC-1";
     f.message = "after `" + text + "` (" + observed_answer + "), derived: " + d->describe();
     result.failure = f;

@@ -1,6 +1,6 @@
 // clause.h — the clause catalog: every normative statement the suite judges.
 //
-// Spec: 000 section 2.6 and the protocol facts of ../shared/spec/README.md.
+// Spec: 000 section 2.6 and the protocol facts of docs/spec_facts.md.
 //
 // Rationale: a verdict is only useful if it says which sentence of the spec
 // an implementation broke. Each clause has a stable id (never reused, never

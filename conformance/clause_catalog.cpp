@@ -193,7 +193,11 @@ const std::vector<Clause>& clause_catalog() {
       {"BONE-PARENT-1", "bones", MUST, "000 2.6.3",
        "It can be set to a non-existing bone to indicate that no parent exists, and the bone will then be at root "
        "level.",
-       "A bone whose parent id names no live bone is a root: its world pose is its own position and rotation."},
+       "A bone whose parent id names no live bone is a root: its bone_pose line is its own position as stored and "
+       "its rotation normalized (docs/commands.md 4.8: scaled to unit length; the reference prints it with w >= 0). "
+       "Compared as every bone_pose line is: each of the three position numbers, and the four rotation numbers "
+       "either as they are or all negated (q and -q are one rotation), within 1e-9 times the larger of 1 and the "
+       "two numbers' magnitudes. So a root's rotation must be of unit length; its sign is free."},
       {"BONE-FOREST-1", "bones", IMPL, "000 2.6.3 (silent)",
        "The parent link defines hierarchies of bones, i.e. skeletons.",
        "A bone_create whose parent link would make the bone its own ancestor is rejected, so bones "

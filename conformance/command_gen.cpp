@@ -1,6 +1,7 @@
 // command_gen.cpp — see command_gen.h.
 #include "command_gen.h"
 
+#include <algorithm>
 #include <cfloat>
 #include <cmath>
 #include <cstring>
@@ -13,6 +14,14 @@ namespace {
 
 using rc::Gen;
 namespace gen = rc::gen;
+
+// A uniform integer in [lo, hi), whatever the RapidCheck size. gen::inRange
+// scales its range by the size (at size 0 it always gives lo, and certify's
+// sizes stay at or below 50 of the nominal 100), so a choice made with it
+// at a small size never reaches its upper alternatives: five of the eleven
+// value writes were never sent. Every choice here is made with this; it
+// still shrinks toward lo.
+template <class T> Gen<T> uniform(T lo, T hi) { return gen::resize(rc::kNominalSize, gen::inRange<T>(lo, hi)); }
 
 // What the generators need to know of the model, copied out of it.
 struct View {
@@ -78,7 +87,7 @@ Gen<std::uint32_t> element_id(const std::vector<std::uint32_t>& live) {
     if (id == next) ++next;
   std::vector<std::pair<std::size_t, Gen<std::uint32_t>>> choices;
   const auto others = gen::weightedOneOf<std::uint32_t>({
-      {8, gen::inRange<std::uint32_t>(0, 10)},
+      {8, uniform<std::uint32_t>(0, 10)},
       {1, gen::just(std::uint32_t(kNone32))},
       {1, gen::elementOf(std::vector<std::uint32_t>{4000000000u, 0xFFFFFFFEu, 1u << 24})},
   });
@@ -89,14 +98,14 @@ Gen<std::uint32_t> element_id(const std::vector<std::uint32_t>& live) {
 // A live element id mostly, for writes and deletes.
 Gen<std::uint32_t> live_id(const std::vector<std::uint32_t>& live) {
   return pick<std::uint32_t>(live, gen::weightedOneOf<std::uint32_t>({
-                                       {8, gen::inRange<std::uint32_t>(0, 10)},
+                                       {8, uniform<std::uint32_t>(0, 10)},
                                        {1, gen::just(std::uint32_t(kNone32))},
                                    }));
 }
 
 Gen<std::uint16_t> layer_id(const View& v) {
   return pick<std::uint16_t>(v.layers, gen::weightedOneOf<std::uint16_t>({
-                                           {8, gen::inRange<std::uint16_t>(2, 7)},
+                                           {8, uniform<std::uint16_t>(2, 7)},
                                            {1, gen::elementOf(std::vector<std::uint16_t>{0, 1})},
                                            {1, gen::just(std::uint16_t(kNone16))},
                                        }));
@@ -131,22 +140,22 @@ double from_bits(std::uint64_t bits) {
 // must keep: -0, infinities, NaNs with payloads, subnormals, float edges.
 Gen<double> any_real() {
   return gen::weightedOneOf<double>({
-      {6, gen::map(gen::inRange<int>(-800, 800), [](int i) { return i / 8.0; })},
+      {6, gen::map(uniform<int>(-800, 800), [](int i) { return i / 8.0; })},
       {2, gen::elementOf(std::vector<double>{-0.0, 0.1, 1e300, -1e-310, std::numeric_limits<double>::infinity(),
                                -std::numeric_limits<double>::infinity(), double(FLT_MAX) * 2, 16777217.0,
                                1.0000000000000002})},
-      {1, gen::map(gen::inRange<std::uint64_t>(1, (1ull << 51) - 1),
+      {1, gen::map(uniform<std::uint64_t>(1, (1ull << 51) - 1),
                    [](std::uint64_t p) { return from_bits(0x7FF0000000000000ull | p); })},
-      {1, gen::map(gen::inRange<std::uint64_t>(1, (1ull << 51) - 1),
+      {1, gen::map(uniform<std::uint64_t>(1, (1ull << 51) - 1),
                    [](std::uint64_t p) { return from_bits(0xFFF8000000000000ull | p); })},
   });
 }
 
 Gen<float> any_float() {
   return gen::weightedOneOf<float>({
-      {6, gen::map(gen::inRange<int>(-800, 800), [](int i) { return i / 8.0f; })},
+      {6, gen::map(uniform<int>(-800, 800), [](int i) { return i / 8.0f; })},
       {2, gen::elementOf(std::vector<float>{-0.0f, 0.1f, 1e-40f, std::numeric_limits<float>::infinity(), 16777217.0f})},
-      {1, gen::map(gen::inRange<std::uint32_t>(1, (1u << 22) - 1), [](std::uint32_t p) {
+      {1, gen::map(uniform<std::uint32_t>(1, (1u << 22) - 1), [](std::uint32_t p) {
          const std::uint32_t bits = 0x7F800000u | p;
          float f;
          std::memcpy(&f, &bits, sizeof f);
@@ -158,7 +167,7 @@ Gen<float> any_float() {
 // Coordinates for the base layer: mostly small and finite, sometimes not.
 Gen<double> coordinate() {
   return gen::weightedOneOf<double>({
-      {20, gen::map(gen::inRange<int>(-16, 17), [](int i) { return i / 4.0; })},
+      {20, gen::map(uniform<int>(-16, 17), [](int i) { return i / 4.0; })},
       {1, gen::elementOf(std::vector<double>{std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity(),
                                -0.0, 1e300})},
   });
@@ -186,14 +195,14 @@ Gen<Command> create_layer(const View& v) {
 
 Gen<Command> destroy_layer(const View& v) {
   return gen::exec([v] {
-    if (*gen::inRange(0, 4) == 0) return Command{cmd::LayerCreate{*layer_id(v), "", 0, 0, 0.0}};  // wire alias
+    if (*uniform(0, 4) == 0) return Command{cmd::LayerCreate{*layer_id(v), "", 0, 0, 0.0}};  // wire alias
     return Command{cmd::LayerDestroy{*layer_id(v)}};
   });
 }
 
 Gen<Command> subscribe(const View& v) {
   return gen::exec([v] {
-    if (*gen::inRange(0, 3) == 0) return Command{cmd::LayerUnsubscribe{*layer_id(v)}};
+    if (*uniform(0, 2) == 0) return Command{cmd::LayerUnsubscribe{*layer_id(v)}};
     return Command{cmd::LayerSubscribe{*layer_id(v), *gen::weightedElement<std::uint8_t>({{5, 0}, {5, 1}, {1, 2}})}};
   });
 }
@@ -201,7 +210,7 @@ Gen<Command> subscribe(const View& v) {
 Gen<Command> set_vertex(const View& v) {
   return gen::exec([v] {
     const std::uint32_t id = *element_id(v.vertices);
-    if (*gen::inRange(0, 3) == 0)
+    if (*uniform(0, 3) == 0)
       return Command{cmd::VertexSetXyzReal32{0, id, static_cast<float>(*coordinate()),
                                              static_cast<float>(*coordinate()), static_cast<float>(*coordinate())}};
     return Command{cmd::VertexSetXyzReal64{0, id, *coordinate(), *coordinate(), *coordinate()}};
@@ -211,7 +220,7 @@ Gen<Command> set_vertex(const View& v) {
 Gen<Command> delete_vertex(const View& v) {
   return gen::exec([v] {
     const std::uint32_t id = *live_id(v.vertices);
-    switch (*gen::inRange(0, 3)) {
+    switch (*uniform(0, 3)) {
       case 0: return Command{cmd::VertexDelete{id}};
       case 1: return Command{cmd::VertexSetXyzReal32{0, id, 0.f, FLT_MAX, 0.f}};
       default: return Command{cmd::VertexSetXyzReal64{0, id, DBL_MAX, 0.0, 0.0}};
@@ -219,25 +228,60 @@ Gen<Command> delete_vertex(const View& v) {
   });
 }
 
+// A polygon on layer 1. Mostly (8 in 10 once there are enough vertices) a
+// valid one: three or four distinct live vertices, so that meshes are built
+// and re-shaped; otherwise one near-miss: a corner repeated
+// (POLY-DISTINCT-1), a corner naming no live vertex (POLY-VERTEX-REF-1), or
+// 0xFFFFFFFF among the first three (POLY-CORNERS-1). A fourth corner is often
+// vertex 0 (a quad, not the unused 0xFFFFFFFF: POLY-TRIANGLE-1).
 Gen<Command> set_polygon(const View& v) {
   return gen::exec([v] {
     cmd::PolygonSetCornerUint32 c;
     c.layer_id = Node::kPolygonLayer;
     c.polygon_id = *element_id(v.polygons);
-    const auto corner = pick<std::uint32_t>(v.vertices, gen::inRange<std::uint32_t>(0, 10));
-    for (auto& x : c.v) x = *corner;
-    const int shape = *gen::weightedElement<int>({{6, 4}, {4, 3}, {1, 2}});
-    if (shape == 3) c.v[3] = kNone32;
-    if (shape == 2) c.v[*gen::inRange(1, 3)] = kNone32;
-    // Distinct corners most of the time: redraw repeats from the live set.
-    if (*gen::inRange(0, 5) != 0 && v.vertices.size() >= 4) {
-      std::vector<std::uint32_t> pool = v.vertices;
-      for (int i = 0; i < 4; ++i) {
-        if (c.v[i] == kNone32) continue;
-        const std::size_t k = *gen::inRange<std::size_t>(0, pool.size());
+    // A quad when there are four vertices to make one of (3 in 5), a
+    // triangle mostly when there are three.
+    const bool quad = v.vertices.size() >= 4   ? *gen::weightedElement<int>({{3, 4}, {2, 3}}) == 4
+                      : v.vertices.size() == 3 ? *uniform(0, 6) == 0
+                                               : *gen::arbitrary<bool>();
+    const std::size_t need = quad ? 4 : 3;
+    const int miss = v.vertices.size() >= need
+                         ? *gen::weightedElement<int>({{16, 0}, {2, 1}, {1, 2}, {1, 3}})
+                         : *gen::weightedElement<int>({{1, 1}, {1, 2}, {1, 3}});
+    // Distinct live corners, as many as there are (up to four).
+    std::vector<std::uint32_t> pool = v.vertices;
+    if (quad && v.vertices.size() >= 4 && v.vertices.front() == 0 && *uniform(0, 4) == 0) {
+      pool.erase(pool.begin());  // vertex 0 goes last: a fourth corner of 0
+      for (std::size_t i = 0; i < 3; ++i) {
+        const std::size_t k = *uniform<std::size_t>(0, pool.size());
         c.v[i] = pool[k];
         pool.erase(pool.begin() + static_cast<long>(k));
       }
+      c.v[3] = 0;
+    } else {
+      for (std::size_t i = 0; i < 4; ++i) {
+        if (pool.empty()) {
+          c.v[i] = *uniform<std::uint32_t>(0, 10);
+          continue;
+        }
+        const std::size_t k = *uniform<std::size_t>(0, pool.size());
+        c.v[i] = pool[k];
+        pool.erase(pool.begin() + static_cast<long>(k));
+      }
+    }
+    if (!quad) c.v[3] = kNone32;
+    const std::size_t at = *uniform<std::size_t>(0, need);  // the corner a near-miss spoils
+    switch (miss) {
+      case 1: c.v[at] = c.v[(at + 1) % need]; break;  // a corner repeated
+      case 2: {                                      // a corner naming no live vertex
+        std::uint32_t dead = 0;
+        while (std::find(v.vertices.begin(), v.vertices.end(), dead) != v.vertices.end()) ++dead;
+        c.v[at] = *gen::weightedOneOf<std::uint32_t>(
+            {{3, gen::just(dead)}, {1, gen::elementOf(std::vector<std::uint32_t>{4000000000u, 0xFFFFFFFEu})}});
+        break;
+      }
+      case 3: c.v[*uniform<std::size_t>(1, 3)] = kNone32; break;  // fewer than three corners (v0 = 0xFFFFFFFF would be a delete)
+      default: break;
     }
     return Command{c};
   });
@@ -246,15 +290,18 @@ Gen<Command> set_polygon(const View& v) {
 Gen<Command> delete_polygon(const View& v) {
   return gen::exec([v] {
     const std::uint32_t id = *live_id(v.polygons);
-    if (*gen::inRange(0, 2) == 0) return Command{cmd::PolygonDelete{id}};
+    if (*uniform(0, 2) == 0) return Command{cmd::PolygonDelete{id}};
     return Command{cmd::PolygonSetCornerUint32{Node::kPolygonLayer, id, {kNone32, 0, 0, 0}}};
   });
 }
 
 // A write of some value to some layer of some type (right type mostly).
-Gen<Command> write_value(const View& v) {
-  return gen::exec([v]() -> Command {
-    switch (*gen::inRange(0, 11)) {
+// The value write of kind `kind` (0..10: vertex uint32, real64, real32,
+// xyz; corner uint32, real64, real32; face uint8, uint32, real64, real32) to
+// a layer of its type mostly.
+Gen<Command> write_value_of(const View& v, Gen<int> kind) {
+  return gen::exec([v, kind]() -> Command {
+    switch (*kind) {
       case 0:
         return cmd::VertexSetUint32{*typed_layer(v.vertex_uint_layers, v), *live_id(v.vertices),
                                     *gen::arbitrary<std::uint32_t>()};
@@ -292,6 +339,100 @@ Gen<Command> write_value(const View& v) {
   });
 }
 
+// A layer for values of one of `types`, at the lowest free id from 2, under
+// a name no layer has, so that it is created.
+Gen<Command> value_layer(const View& v, std::vector<std::uint8_t> types) {
+  std::uint16_t id = 2;
+  while (std::find(v.layers.begin(), v.layers.end(), id) != v.layers.end()) ++id;
+  std::string name = "value" + std::to_string(id);
+  while (std::find(v.names.begin(), v.names.end(), name) != v.names.end()) name += "x";
+  return gen::exec([types, id, name]() -> Command {
+    cmd::LayerCreate c;
+    c.layer_id = id;
+    c.name = name;
+    c.type = *gen::elementOf(types);
+    c.def_uint = *gen::elementOf(std::vector<std::uint32_t>{0u, 7u, 0xFFFFFFFFu});
+    c.def_real = *gen::elementOf(std::vector<double>{0.0, 0.5, -2.0});
+    return c;
+  });
+}
+
+// The layers of the type value write kind `k` (write_value_of) needs, and that type.
+std::pair<const std::vector<std::uint16_t>*, LayerType> layers_of_kind(const View& v, int k) {
+  switch (k) {
+    case 0: return {&v.vertex_uint_layers, LayerType::VertexUint32};
+    case 1:
+    case 2: return {&v.vertex_real_layers, LayerType::VertexReal};
+    case 3: return {&v.vertex_xyz_layers, LayerType::VertexXyz};
+    case 4: return {&v.corner_uint_layers, LayerType::PolygonCornerUint32};
+    case 5:
+    case 6: return {&v.corner_real_layers, LayerType::PolygonCornerReal};
+    case 7: return {&v.face_u8_layers, LayerType::PolygonFaceUint8};
+    case 8: return {&v.face_u32_layers, LayerType::PolygonFaceUint32};
+    default: return {&v.face_real_layers, LayerType::PolygonFaceReal};
+  }
+}
+
+// A layer for values of a type no layer has yet (any type once all eight exist).
+Gen<Command> create_value_layer(const View& v) {
+  std::vector<std::uint8_t> missing, all;
+  for (int k : {0, 1, 3, 4, 5, 7, 8, 9}) {
+    const auto [layers, type] = layers_of_kind(v, k);
+    all.push_back(static_cast<std::uint8_t>(type));
+    if (layers->empty()) missing.push_back(static_cast<std::uint8_t>(type));
+  }
+  return value_layer(v, missing.empty() ? all : missing);
+}
+
+Gen<Command> build_polygon(const View& v);
+Gen<Command> grow_vertex(const View& v);
+
+// One step toward a landing value write of a kind drawn uniformly: the
+// write itself, or (3 times in 4 while it is missing) first the layer of its
+// type, or first the vertices / polygon it writes to. Each of the eleven
+// value writes thus gets an equal share of the steps.
+Gen<Command> value_step(const View& v) {
+  // Mostly a kind whose layer is there already (cases are short: a case
+  // that has made a face_uint8 layer writes to it rather than make seven
+  // more); the first layer a case makes is of a uniformly drawn kind, so
+  // over many cases every kind gets its share.
+  std::vector<int> ready;
+  for (int k = 0; k < 11; ++k)
+    if (!layers_of_kind(v, k).first->empty()) ready.push_back(k);
+  const Gen<int> kind =
+      ready.empty() ? uniform(0, 11) : gen::weightedOneOf<int>({{3, gen::elementOf(ready)}, {1, uniform(0, 11)}});
+  return gen::exec([v, kind]() -> Command {
+    const int k = *kind;
+    const auto [layers, type] = layers_of_kind(v, k);
+    if (layers->empty() && *uniform(0, 4) != 0) return *value_layer(v, {static_cast<std::uint8_t>(type)});
+    const bool vertex_kind = k <= 3;
+    if ((vertex_kind ? v.vertices.empty() : v.polygons.empty()) && *uniform(0, 4) != 0)
+      return vertex_kind ? *grow_vertex(v) : *build_polygon(v);
+    return *write_value_of(v, gen::just(k));
+  });
+}
+
+// A new vertex, at the lowest free id, at a finite position: how a mesh
+// grows (set_vertex mostly moves live vertices and tries the edges).
+Gen<Command> grow_vertex(const View& v) {
+  std::uint32_t next = 0;
+  for (std::uint32_t id : v.vertices)
+    if (id == next) ++next;
+  const auto at = gen::map(uniform<int>(-16, 17), [](int i) { return i / 4.0; });
+  return gen::exec([next, at]() -> Command {
+    if (*uniform(0, 3) == 0)
+      return cmd::VertexSetXyzReal32{0, next, static_cast<float>(*at), static_cast<float>(*at), static_cast<float>(*at)};
+    return cmd::VertexSetXyzReal64{0, next, *at, *at, *at};
+  });
+}
+
+// A polygon, or while there are fewer than three vertices mostly a new
+// vertex: a polygon needs three or four live vertices to be accepted.
+Gen<Command> build_polygon(const View& v) {
+  if (v.vertices.size() >= 3) return set_polygon(v);
+  return gen::weightedOneOf<Command>({{5, grow_vertex(v)}, {1, set_polygon(v)}});
+}
+
 Gen<Command> set_crease(const View& v) {
   return gen::exec([v]() -> Command {
     const bool vertex = *gen::arbitrary<bool>();
@@ -316,9 +457,9 @@ Gen<Command> set_crease(const View& v) {
 Gen<Command> create_crease_layer(const View&) {
   return gen::exec([]() -> Command {
     const bool vertex = *gen::arbitrary<bool>();
-    const bool right_type = *gen::inRange(0, 4) != 0;
+    const bool right_type = *uniform(0, 4) != 0;
     cmd::LayerCreate c;
-    c.layer_id = *gen::inRange<std::uint16_t>(2, 7);
+    c.layer_id = *uniform<std::uint16_t>(2, 7);
     c.name = vertex ? "vcrease" : "ecrease";
     const LayerType t = vertex ? (right_type ? LayerType::VertexUint32 : LayerType::VertexReal)
                                : (right_type ? LayerType::PolygonCornerUint32 : LayerType::PolygonFaceUint32);
@@ -332,12 +473,12 @@ Gen<Command> create_crease_layer(const View&) {
 // Values in whatever layers creases might name.
 Gen<Command> write_crease_values(const View& v) {
   return gen::exec([v]() -> Command {
-    const int kind = *gen::inRange(0, 4);
+    const int kind = *uniform(0, 4);
     if (kind == 0 && !v.vertex_uint_layers.empty())
       return cmd::VertexSetUint32{*gen::elementOf(v.vertex_uint_layers), *live_id(v.vertices), *crease_value()};
     if (kind == 1 && !v.vertex_real_layers.empty())
       return cmd::VertexSetReal64{*gen::elementOf(v.vertex_real_layers), *live_id(v.vertices),
-                                  double(*gen::inRange(0, 1000))};
+                                  double(*uniform(0, 1000))};
     if (kind == 2 && !v.face_u32_layers.empty())
       return cmd::PolygonSetFaceUint32{*gen::elementOf(v.face_u32_layers), *live_id(v.polygons), *crease_value()};
     // Corner values: mostly into the layer the edge setting names, and
@@ -350,20 +491,20 @@ Gen<Command> write_crease_values(const View& v) {
                                               : *pick<std::uint16_t>(named, typed_layer(v.corner_uint_layers, v));
     cmd::PolygonSetCornerUint32 c{layer, *live_id(v.polygons), {}};
     for (auto& x : c.v) x = *crease_value();
-    if (c.v[0] == c.v[1] && c.v[1] == c.v[2] && *gen::inRange(0, 4) != 0) c.v[*gen::inRange(0, 3)] ^= 0xFFFFFFFFu;
+    if (c.v[0] == c.v[1] && c.v[1] == c.v[2] && *uniform(0, 4) != 0) c.v[*uniform(0, 3)] ^= 0xFFFFFFFFu;
     return c;
   });
 }
 
 Gen<double> unit_component() {
-  return gen::map(gen::inRange<int>(-4, 5), [](int i) { return i / 4.0; });
+  return gen::map(uniform<int>(-4, 5), [](int i) { return i / 4.0; });
 }
 
 Gen<Command> create_bone(const View& v) {
   return gen::exec([v]() -> Command {
     cmd::BoneCreate c;
     c.bone_id = *pick<std::uint16_t>(v.bones, gen::weightedOneOf<std::uint16_t>(
-                                                  {{8, gen::inRange<std::uint16_t>(0, 6)},
+                                                  {{8, uniform<std::uint16_t>(0, 6)},
                                                    {1, gen::just(std::uint16_t(kNone16))}}));
     std::vector<std::string> weights = v.vertex_uint_names;
     weights.insert(weights.end(), v.vertex_real_names.begin(), v.vertex_real_names.end());
@@ -403,14 +544,14 @@ Gen<Command> create_bone(const View& v) {
 
 Gen<Command> destroy_bone(const View& v) {
   return gen::exec([v]() -> Command {
-    return cmd::BoneDestroy{*pick<std::uint16_t>(v.bones, gen::inRange<std::uint16_t>(0, 6))};
+    return cmd::BoneDestroy{*pick<std::uint16_t>(v.bones, uniform<std::uint16_t>(0, 6))};
   });
 }
 
 Gen<Command> bone_layer(const View&) {
   return gen::exec([]() -> Command {
     cmd::LayerCreate c;
-    c.layer_id = *gen::inRange<std::uint16_t>(2, 6);
+    c.layer_id = *uniform<std::uint16_t>(2, 6);
     c.name = *gen::elementOf(std::vector<std::string>{"weight", "ref", "w2"});
     c.type = *gen::elementOf(std::vector<std::uint8_t>{1, 2, 1, 128});
     return c;
@@ -424,12 +565,13 @@ Gen<Command> gen_command(const Node& model, Focus focus) {
   using W = std::pair<std::size_t, Gen<Command>>;
   switch (focus) {
     case Focus::Layers:
-      return rc::gen::weightedOneOf<Command>({W{6, create_layer(v)}, W{3, destroy_layer(v)}, W{1, subscribe(v)},
-                                          W{4, set_vertex(v)}, W{2, delete_vertex(v)}, W{3, set_polygon(v)},
-                                          W{1, delete_polygon(v)}, W{2, write_value(v)}});
+      return rc::gen::weightedOneOf<Command>({W{6, create_layer(v)}, W{3, destroy_layer(v)}, W{2, subscribe(v)},
+                                          W{4, set_vertex(v)}, W{2, delete_vertex(v)}, W{3, build_polygon(v)},
+                                          W{1, delete_polygon(v)}, W{2, value_step(v)}});
     case Focus::Polygons:
-      return rc::gen::weightedOneOf<Command>({W{6, set_vertex(v)}, W{2, delete_vertex(v)}, W{7, set_polygon(v)},
-                                          W{2, delete_polygon(v)}, W{1, create_layer(v)}});
+      return rc::gen::weightedOneOf<Command>({W{6, set_vertex(v)}, W{2, delete_vertex(v)}, W{7, build_polygon(v)},
+                                          W{v.polygons.empty() ? 1u : 4u, delete_polygon(v)}, W{1, create_layer(v)},
+                                          W{v.polygons.empty() ? 0u : 3u, value_step(v)}});
     case Focus::Creases: {
       // A crease rule is seen only in a state with all of: polygons, a
       // crease layer, a setting naming it, and unequal values in it (equal
@@ -441,25 +583,36 @@ Gen<Command> gen_command(const Node& model, Focus focus) {
                  crease_layers = !v.corner_uint_layers.empty() && !v.vertex_uint_layers.empty();
       const std::size_t write = mesh && (named_edge || named_vertex) ? 10 : 3;
       return rc::gen::weightedOneOf<Command>(
-          {W{v.vertices.size() >= 4 ? 3u : 6u, set_vertex(v)}, W{mesh ? 3u : 6u, set_polygon(v)},
+          {W{v.vertices.size() >= 4 ? 3u : 6u, set_vertex(v)}, W{mesh ? 3u : 6u, build_polygon(v)},
            W{named_edge && named_vertex ? 2u : 4u, set_crease(v)}, W{crease_layers ? 1u : 3u, create_crease_layer(v)},
-           W{write, write_crease_values(v)}, W{1, destroy_layer(v)}, W{1, delete_vertex(v)}});
+           W{write, write_crease_values(v)}, W{1, destroy_layer(v)}, W{1, delete_vertex(v)},
+           W{mesh ? 1u : 0u, value_step(v)}});
     }
     case Focus::Bones:
       return rc::gen::weightedOneOf<Command>({W{2, bone_layer(v)}, W{6, create_bone(v)}, W{2, destroy_bone(v)},
                                           W{1, destroy_layer(v)}, W{1, set_vertex(v)}});
-    case Focus::Values:
-      return rc::gen::weightedOneOf<Command>({W{3, create_layer(v)}, W{3, set_vertex(v)}, W{3, set_polygon(v)},
-                                          W{8, write_value(v)}});
+    case Focus::Values: {
+      // Cases are short (certify draws 1..size+1 commands, size up to 50):
+      // weigh toward the missing piece of a landing write (vertices, a
+      // polygon, a layer of each of the eight types), then toward writes.
+      const std::size_t types = !v.vertex_xyz_layers.empty() + !v.vertex_uint_layers.empty() +
+                                !v.vertex_real_layers.empty() + !v.corner_uint_layers.empty() +
+                                !v.corner_real_layers.empty() + !v.face_u8_layers.empty() +
+                                !v.face_u32_layers.empty() + !v.face_real_layers.empty();
+      const bool mesh = !v.polygons.empty();
+      return rc::gen::weightedOneOf<Command>(
+          {W{1, create_layer(v)}, W{types == 0 ? 2u : 1u, create_value_layer(v)}, W{1, set_vertex(v)},
+           W{mesh ? 1u : 8u, build_polygon(v)}, W{16, value_step(v)}});
+    }
     case Focus::Ids:
-      return rc::gen::weightedOneOf<Command>({W{3, create_layer(v)}, W{4, set_vertex(v)}, W{3, set_polygon(v)},
+      return rc::gen::weightedOneOf<Command>({W{3, create_layer(v)}, W{4, set_vertex(v)}, W{3, build_polygon(v)},
                                           W{2, create_bone(v)}, W{1, bone_layer(v)}, W{2, delete_vertex(v)}});
     case Focus::Anything:
       break;
   }
   return rc::gen::weightedOneOf<Command>(
-      {W{3, create_layer(v)}, W{2, destroy_layer(v)}, W{1, subscribe(v)}, W{4, set_vertex(v)},
-       W{2, delete_vertex(v)}, W{4, set_polygon(v)}, W{1, delete_polygon(v)}, W{4, write_value(v)},
+      {W{2, create_layer(v)}, W{1, create_value_layer(v)}, W{2, destroy_layer(v)}, W{1, subscribe(v)}, W{4, set_vertex(v)},
+       W{2, delete_vertex(v)}, W{4, build_polygon(v)}, W{2, delete_polygon(v)}, W{4, value_step(v)},
        W{2, set_crease(v)}, W{1, create_crease_layer(v)}, W{2, create_bone(v)}, W{1, destroy_bone(v)},
        W{1, bone_layer(v)}});
 }

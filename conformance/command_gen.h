@@ -1,6 +1,6 @@
 // command_gen.h — RapidCheck generators of commands, aware of the model's state.
 //
-// Spec: the command set of ../shared/spec/README.md; each focus aims at the
+// Spec: the command set of docs/spec_facts.md; each focus aims at the
 // clauses of one group of the catalog (clause.h).
 //
 // Rationale: uniformly random commands are almost all rejected (no such

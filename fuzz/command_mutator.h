@@ -1,6 +1,6 @@
 // command_mutator.h — structure-aware mutation of binary command streams.
 //
-// Spec: ../shared/spec/README.md (the command set, id widths, the sentinels
+// Spec: docs/spec_facts.md (the command set, id widths, the sentinels
 // 0xFFFF / 0xFFFFFFFF, FLT_MAX / DBL_MAX deletes); reference/command_binary.h
 // (the stream format).
 //

@@ -13,7 +13,8 @@
 // tests and the SUBD-CATMARK-1 capability check compare: the mesh passes
 // check_mesh and is a polygon mesh (manifold and consistently oriented,
 // reference mesh_topology.h; OpenSubdiv accepts non-manifold and degenerate
-// input with rules of its own, /work/shared/notes/oracles.md), with the
+// input with rules of its own: non-manifold edges made infinitely sharp,
+// degenerate faces kept), with the
 // vertices no face uses removed (the reference keeps them fixed; OpenSubdiv
 // is not compared there). Then subdivide_catmull_clark and OpenSubdiv's
 // SCHEME_CATMARK to kLevels levels, and for all-triangle meshes

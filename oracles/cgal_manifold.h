@@ -8,7 +8,9 @@
 // This header has no CGAL type (the only file that includes CGAL headers is
 // cgal_manifold.cpp); it reports what CGAL says, named after the CGAL call
 // that said it, and marks with std::optional / flags the answers CGAL can
-// only give for some inputs. See /work/shared/notes/oracles.md.
+// only give for some inputs (CGAL 5.5: is_polygon_soup_a_polygon_mesh checks
+// no index against the point count, and polygon_soup_to_polygon_mesh needs a
+// valid soup, its preconditions being off under NDEBUG).
 //
 // How each answer is obtained (polygon soup: point i is (i, 0, 0), so any
 // vertex CGAL creates maps back to its input index):

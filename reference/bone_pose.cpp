@@ -14,10 +14,21 @@ std::array<double, 4> quat_multiply(const std::array<double, 4>& a, const std::a
 }
 
 std::array<double, 4> quat_normalize(const std::array<double, 4>& q) {
-  const double n = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
-  if (!(n > 0) || !std::isfinite(n)) return {0, 0, 0, 1};
-  std::array<double, 4> r{q[0] / n, q[1] / n, q[2] / n, q[3] / n};
-  if (r[3] < 0)
+  // Scaled as hypot does: divide by the largest |component| first, so that
+  // the squares summed below lie in [1, 4] and neither underflow (2e-162:
+  // its square is below the smallest normal double) nor overflow (1e300).
+  // Every finite non-zero quaternion (all that bone_create accepts,
+  // BONE-VALUE-1) is thus normalized to the rotation it is.
+  double m = 0;
+  for (double c : q) {
+    if (!std::isfinite(c)) return {0, 0, 0, 1};
+    m = std::fmax(m, std::fabs(c));
+  }
+  if (!(m > 0)) return {0, 0, 0, 1};
+  std::array<double, 4> r{q[0] / m, q[1] / m, q[2] / m, q[3] / m};
+  const double n = std::sqrt(r[0] * r[0] + r[1] * r[1] + r[2] * r[2] + r[3] * r[3]);
+  for (double& c : r) c /= n;
+  if (q[3] < 0)  // the sign as sent: a w that underflows to -0 here still flips
     for (double& c : r) c = -c;
   return r;
 }

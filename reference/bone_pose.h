@@ -29,6 +29,9 @@ std::map<std::uint16_t, BonePose> bone_world_poses(const Node& node);
 
 // Quaternion helpers, (x, y, z, w).
 std::array<double, 4> quat_multiply(const std::array<double, 4>& a, const std::array<double, 4>& b);
+// Unit length with w >= 0, scaled by the largest |component| first (as
+// hypot), so any finite non-zero q, however tiny or huge its components,
+// gives the rotation it is; zero or non-finite q gives the identity.
 std::array<double, 4> quat_normalize(const std::array<double, 4>& q);
 std::array<double, 3> quat_rotate(const std::array<double, 4>& q, const std::array<double, 3>& v);
 

@@ -1,5 +1,5 @@
 // command.cpp — names, verbs and bit-exact equality of commands.
-// Spec: ../shared/spec/README.md (layer type values, command set).
+// Spec: docs/spec_facts.md (layer type values, command set).
 #include "command.h"
 
 #include <cstring>

@@ -1,6 +1,6 @@
 // command.h — the geometry node's commands as plain value types.
 //
-// Spec: ../shared/spec/README.md "Command set of the geometry node" (protocol
+// Spec: docs/spec_facts.md "Command set of the geometry node" (protocol
 // commands 48..64) and 000 section 2.6.
 //
 // Rationale: every test, corpus file, counterexample and exec-adapter line is

@@ -1,6 +1,6 @@
 // command_binary.h — the compact binary form of commands, for fuzzing.
 //
-// Spec: ../shared/spec/README.md (field widths); docs/commands.md (layout).
+// Spec: docs/spec_facts.md (field widths); docs/commands.md (layout).
 //
 // A command is one tag byte (its index in the Command variant, 0..21),
 // then its fields in wire order, little-endian, fixed width: uint8/16/32,

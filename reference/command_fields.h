@@ -1,6 +1,6 @@
 // command_fields.h — the one field-by-field schema of every command.
 //
-// Spec: ../shared/spec/README.md, "Command set of the geometry node" (field
+// Spec: docs/spec_facts.md, "Command set of the geometry node" (field
 // order and widths of protocol commands 48..64).
 //
 // Rationale: the text codec, the binary codec, bit-exact equality and the

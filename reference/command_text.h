@@ -1,6 +1,6 @@
 // command_text.h — the text form of commands: one command per line.
 //
-// Spec: ../shared/spec/README.md (command set); docs/commands.md (grammar).
+// Spec: docs/spec_facts.md (command set); docs/commands.md (grammar).
 //
 //   # a comment runs to the end of the line
 //   layer_create 2 "uv" VERTEX_REAL 0 0.5

@@ -1,7 +1,7 @@
 // node.h — the reference geometry node.
 //
 // Spec: 000 section 2.6 (2.6.1 layers, 2.6.2 creases, 2.6.3 bones) and the
-// protocol facts in ../shared/spec/README.md. Where the text is silent the
+// protocol facts in docs/spec_facts.md. Where the text is silent the
 // decision is written next to the rule in node.cpp, tagged "Decision:", and
 // listed in docs/commands.md.
 //

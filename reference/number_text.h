@@ -1,6 +1,6 @@
 // number_text.h — exact text forms of the numbers in commands and snapshots.
 //
-// Spec: ../shared/spec/README.md (field widths: uint8/16/32, real32, real64).
+// Spec: docs/spec_facts.md (field widths: uint8/16/32, real32, real64).
 //
 // Rationale: the command language promises that every value round-trips
 // bit-exactly, NaN payloads and -0.0 included. Finite values use the shortest

@@ -1,6 +1,6 @@
 // reason.h — why a command was rejected: stable codes, stable names.
 //
-// Spec: 000 section 2.6 and ../shared/spec/README.md; each code names the
+// Spec: 000 section 2.6 and docs/spec_facts.md; each code names the
 // rule that failed. The names (upper case, as printed) are part of the
 // command language contract (docs/commands.md) and never change meaning.
 #pragma once

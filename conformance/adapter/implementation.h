@@ -1,6 +1,6 @@
 // implementation.h — the adapter boundary as the suite sees it.
 //
-// Spec: every command of ../shared/spec/README.md, judged by the clauses of
+// Spec: every command of docs/spec_facts.md, judged by the clauses of
 // conformance/clauses (docs/clauses.md). docs/adapters.md is the contract for
 // the two ways in from outside: exec:CMD (a program speaking the text
 // command language on stdin/stdout) and plugin:PATH (the C ABI of

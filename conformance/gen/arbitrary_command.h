@@ -1,6 +1,6 @@
 // arbitrary_command.h — RapidCheck generators for commands (header only).
 //
-// Spec: ../shared/spec/README.md "Command set of the geometry node" (field
+// Spec: docs/spec_facts.md "Command set of the geometry node" (field
 // widths, the wire aliases FLT_MAX / DBL_MAX / v0 = 0xFFFFFFFF / empty names,
 // the "pick an id" values 0xFFFF and 0xFFFFFFFF, the 15-byte name limit) and
 // 000 section 2.6.1 Table 2-1 (the eight layer type values).
@@ -111,8 +111,8 @@ inline rc::Gen<float> gen_f32_any() {
 // subnormal (1e-160: the norm is finite but inexact), ordinary quaternions
 // scaled by 2^k for k across the whole exponent range, the zero quaternion
 // with any signs of zero and a non-finite component (both rejected,
-// BONE-VALUE-1). docs/commands.md 4.8 says what the reference does with
-// each: a norm of 0 or infinity normalizes to the identity.
+// BONE-VALUE-1). docs/commands.md 4.8: the reference scales by the largest
+// |component| before the norm, so each accepted one is the rotation it is.
 inline rc::Gen<std::array<double, 4>> gen_quaternion_extreme() {
   using Q = std::array<double, 4>;
   using L = std::numeric_limits<double>;

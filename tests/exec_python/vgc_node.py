@@ -880,16 +880,21 @@ def qmul(a, b):
 
 
 def normalize(q):
-    # Not in the docs (found by probing `vgc serve`): a quaternion whose
-    # squared norm underflows to 0 or overflows to infinity (|component| below
-    # ~1e-162 or above ~1e154) normalizes to the identity (0, 0, 0, 1).
-    n = math.sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3])
-    if n == 0.0 or math.isinf(n):
+    # docs/commands.md 4.8: scaled as hypot scales (divide by the largest
+    # |component| first), so any finite non-zero quaternion is the rotation
+    # it is however tiny or huge its components; negated when the w sent is
+    # below zero.
+    if not all(math.isfinite(c) for c in q):
         return [0.0, 0.0, 0.0, 1.0]
-    q = [c / n for c in q]
+    m = max(abs(c) for c in q)
+    if m == 0.0:
+        return [0.0, 0.0, 0.0, 1.0]
+    r = [c / m for c in q]
+    n = math.sqrt(r[0] * r[0] + r[1] * r[1] + r[2] * r[2] + r[3] * r[3])
+    r = [c / n for c in r]
     if q[3] < 0:
-        q = [-c for c in q]
-    return q
+        r = [-c for c in r]
+    return r
 
 
 def rotate(q, v):

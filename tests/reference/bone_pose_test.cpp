@@ -106,6 +106,32 @@ TEST(BonePose, PosesDoNotDependOnIdOrder) {
   expect_pose(poses.at(0), {-1, 1, 1}, {0, 0, kS, kS}, "bone 0");
 }
 
+// Every rotation bone_create accepts (finite, not all zero) is applied as the
+// rotation it is, however tiny or huge its components: normalization scales
+// by the largest |component| first (as hypot does), so squares neither
+// underflow to 0 (2e-162: the plain norm squared is 4e-324, subnormal and
+// rounded) nor overflow to infinity (-1e300). Both examples are 180 degrees
+// about X, which maps the child's local (0,1,0) to (0,-1,0).
+TEST(BonePose, ExtremeQuaternionComponentsAreNormalizedAsTheRotationTheyAre) {
+  // (written rotation, the x of the reported unit quaternion: w is 0 or, once flipped to >= 0, ~0)
+  const std::pair<const char*, double> cases[] = {
+      {"2e-162 0 0 0", 1}, {"-1e300 0 0 0", -1}, {"1e-320 0 0 0", 1}, {"1.7e308 0 0 0", 1}, {"-1.7e308 0 0 -1e-300", 1}};
+  for (const auto& [rot, sx] : cases) {
+    Node n;
+    apply_all(n, "layer_create 2 \"w\" VERTEX_REAL 0 0\n");
+    ASSERT_EQ(A(n, bone(0, 0xFFFF, "0 0 0", rot)), Reason::Ok) << rot;
+    ASSERT_EQ(A(n, bone(1, 0, "0 1 0", "0 0 0 1")), Reason::Ok) << rot;
+    const auto poses = bone_world_poses(n);
+    expect_pose(poses.at(0), {0, 0, 0}, {sx, 0, 0, 0}, rot);
+    expect_pose(poses.at(1), {0, -1, 0}, {sx, 0, 0, 0}, rot);
+  }
+  // Mixed scales: 90 degrees about Z written with components near the top of the range.
+  const auto q = quat_normalize({0, 0, 1e308, 1e308});
+  for (int i = 0; i < 4; ++i) EXPECT_NEAR(q[i], (std::array<double, 4>{0, 0, kS, kS})[i], 1e-15) << i;
+  const auto t = quat_normalize({0, 0, -3e-320, -3e-320});  // subnormal, and -q: w flips to +
+  for (int i = 0; i < 4; ++i) EXPECT_NEAR(t[i], (std::array<double, 4>{0, 0, kS, kS})[i], 1e-15) << i;
+}
+
 TEST(BonePose, QuaternionHelpersFollowTheHamiltonProduct) {
   // i * j = k, j * i = -k (Hamilton).
   const auto k = quat_multiply({1, 0, 0, 0}, {0, 1, 0, 0});

@@ -1,0 +1,188 @@
+// attribution_test.cpp — the clause a divergence is attributed to is the
+// clause whose rule was broken (conformance/attribution.cpp).
+//
+// Spec clauses: POLY-TRIANGLE-1 (000 2.6: "if the three first references are
+// valid and the fourth unused, the polygon is a triangle. If also the fourth
+// reference is to a valid vertex, it is a quadrilateral"), CREASE-NAME-1,
+// LAYER-NAME-1, BONE-NAME-1 (names of at most 15 bytes, docs/spec_facts.md).
+//
+// Each case runs check_step against a tiny faulty implementation: the
+// reference, wrapped, misbehaving on one thing, as a real host could.
+#include <gtest/gtest.h>
+
+#include <functional>
+#include <sstream>
+
+#include "check_step.h"
+#include "command_text.h"
+#include "reference_implementation.h"
+
+namespace vgc {
+namespace {
+
+Command parse(const std::string& line) {
+  Command c;
+  bool blank = false;
+  TextError e;
+  EXPECT_TRUE(parse_command_line(line, 1, &c, &blank, &e)) << line << ": " << e.to_string();
+  return c;
+}
+
+// The reference, except as the two hooks say.
+class OneFault final : public Implementation {
+ public:
+  // refuse(c): answer "rejected BAD_NAME" to c instead of applying it.
+  std::function<bool(const Command&)> refuse = [](const Command&) { return false; };
+  // edit_derived(node, text): the derived document as the faulty host prints it.
+  std::function<std::string(const Node&, const std::string&)> edit_derived =
+      [](const Node&, const std::string& t) { return t; };
+  // edit_snapshot(text): the snapshot as the faulty host prints it.
+  std::function<std::string(const std::string&)> edit_snapshot = [](const std::string& t) { return t; };
+
+  std::string name() const override { return "one-fault"; }
+  Answer reset() override { return ref_.reset(); }
+  Answer apply(const Command& c) override {
+    if (refuse(c)) return Answer{CallStatus::Ok, false, "BAD_NAME", "", false};
+    return ref_.apply(c);
+  }
+  Document snapshot() override {
+    Document d = ref_.snapshot();
+    d.text = edit_snapshot(d.text);
+    return d;
+  }
+  Document derived() override {
+    Document d = ref_.derived();
+    d.text = edit_derived(ref_.node(), d.text);
+    return d;
+  }
+
+ private:
+  ReferenceImplementation ref_;
+};
+
+// Runs `lines` through check_step; returns the first failure's clause ("" if none).
+std::string first_failure(Implementation& sut, const std::vector<std::string>& lines, std::string* message) {
+  sut.reset();
+  Node model;
+  for (const auto& line : lines) {
+    Node after;
+    const StepResult r = check_step(model, parse(line), sut, &after);
+    if (r.failure) {
+      *message = r.failure->message;
+      return r.failure->clause;
+    }
+    model = after;
+  }
+  return "";
+}
+
+const std::vector<std::string> kFourVertices = {
+    "vertex_set_xyz_real64 0 0 0 0 0", "vertex_set_xyz_real64 0 1 1 0 0", "vertex_set_xyz_real64 0 2 1 1 0",
+    "vertex_set_xyz_real64 0 3 0 1 0"};
+
+// A host that stores [1 2 3 0] as sent but reads a fourth corner of 0 as
+// "unused": its derived document lists three edges for that quad.
+TEST(Attribution, FourthCornerZeroReadAsTriangleIsPolyTriangle) {
+  OneFault sut;
+  sut.edit_derived = [](const Node& n, const std::string& text) {
+    std::istringstream in(text);
+    std::string line, out;
+    while (std::getline(in, line)) {
+      std::istringstream w(line);
+      std::string kind;
+      std::uint32_t polygon = 0, corner = 0;
+      w >> kind >> polygon >> corner;
+      if (kind == "edge_crease" && corner == 3 && n.polygons().count(polygon) &&
+          n.polygons().at(polygon).u[3] == 0)
+        continue;
+      out += line + "\n";
+    }
+    return out;
+  };
+  for (const char* crease : {"", "crease_set_edge \"\" 7"}) {  // the constant 0 (initial) and another
+    auto lines = kFourVertices;
+    if (*crease) lines.push_back(crease);
+    lines.push_back("polygon_set_corner_uint32 1 5 1 2 3 0");
+    std::string message;
+    EXPECT_EQ(first_failure(sut, lines, &message), "POLY-TRIANGLE-1") << message;
+  }
+}
+
+// A host whose name limit is off by one: it refuses valid 15-byte names.
+TEST(Attribution, ValidFifteenByteNameRefusedIsTheNameClause) {
+  OneFault sut;
+  const std::string n15 = "abcdefghijklmno";  // 15 bytes: the longest name allowed
+  ASSERT_EQ(n15.size(), 15u);
+  sut.refuse = [](const Command& c) {
+    if (auto* x = std::get_if<cmd::CreaseSetVertex>(&c)) return x->layer.size() == 15;
+    if (auto* x = std::get_if<cmd::CreaseSetEdge>(&c)) return x->layer.size() == 15;
+    if (auto* x = std::get_if<cmd::LayerCreate>(&c)) return x->name.size() == 15;
+    if (auto* x = std::get_if<cmd::BoneCreate>(&c))
+      return x->weight.size() == 15 || x->reference.size() == 15 || x->pos_label.size() == 15 ||
+             x->rot_label.size() == 15;
+    return false;
+  };
+  std::string message;
+  // Naming no layer (the constant applies), and naming a layer of the right type.
+  EXPECT_EQ(first_failure(sut, {"crease_set_vertex \"" + n15 + "\" 7"}, &message), "CREASE-NAME-1") << message;
+  EXPECT_EQ(first_failure(sut, {"crease_set_edge \"" + n15 + "\" 7"}, &message), "CREASE-NAME-1") << message;
+  EXPECT_EQ(first_failure(sut, {"layer_create 2 \"abc\" VERTEX_UINT32 0 0", "crease_set_vertex \"" + n15 + "\" 7"},
+                          &message),
+            "CREASE-NAME-1")
+      << message;
+  // The same shape elsewhere: layer names, bone names.
+  EXPECT_EQ(first_failure(sut, {"layer_create 2 \"" + n15 + "\" VERTEX_UINT32 0 0"}, &message), "LAYER-NAME-1")
+      << message;
+  EXPECT_EQ(first_failure(sut, {"layer_create 2 \"w\" VERTEX_REAL 0 0",
+                                "bone_create 0 \"w\" \"\" 0xFFFF 0 0 0 \"" + n15 + "\" 0 0 0 1 \"\""},
+                          &message),
+            "BONE-NAME-1")
+      << message;
+}
+
+// A host that keeps only 14 bytes of a 15-byte name (a 16-byte buffer
+// whose last byte it spends on something else): the snapshot shows the
+// shortened name, the rule broken is the name length.
+TEST(Attribution, FifteenByteNameStoredShortenedIsTheNameClause) {
+  OneFault sut;
+  sut.edit_snapshot = [](const std::string& text) {
+    std::string out = text;
+    for (std::size_t at; (at = out.find("abcdefghijklmno")) != std::string::npos;) out.erase(at + 14, 1);
+    return out;
+  };
+  const std::string n15 = "abcdefghijklmno";
+  std::string message;
+  EXPECT_EQ(first_failure(sut, {"crease_set_vertex \"" + n15 + "\" 7"}, &message), "CREASE-NAME-1") << message;
+  EXPECT_EQ(first_failure(sut, {"crease_set_edge \"" + n15 + "\" 7"}, &message), "CREASE-NAME-1") << message;
+  EXPECT_EQ(first_failure(sut, {"layer_create 2 \"" + n15 + "\" VERTEX_UINT32 0 0"}, &message), "LAYER-NAME-1")
+      << message;
+  EXPECT_EQ(first_failure(sut, {"layer_create 2 \"w\" VERTEX_REAL 0 0",
+                                "bone_create 0 \"w\" \"\" 0xFFFF 0 0 0 \"\" 0 0 0 1 \"" + n15 + "\""},
+                          &message),
+            "BONE-NAME-1")
+      << message;
+}
+
+// The attributions that were right stay so: a changed crease on the same
+// edge is a crease clause, a shorter name refused is the command's own.
+TEST(Attribution, SameEdgeDifferentCreaseAndShortNamesKeepTheirClauses) {
+  OneFault sut;
+  sut.edit_derived = [](const Node&, const std::string& text) {
+    std::string out = text;
+    const auto at = out.find("edge_crease 5 1 0\n");
+    if (at != std::string::npos) out.replace(at, 18, "edge_crease 5 1 9\n");
+    return out;
+  };
+  auto lines = kFourVertices;
+  lines.push_back("polygon_set_corner_uint32 1 5 1 2 3 0");
+  std::string message;
+  EXPECT_EQ(first_failure(sut, lines, &message), "CREASE-INITIAL-1") << message;
+
+  OneFault refusing;
+  refusing.refuse = [](const Command& c) { return std::holds_alternative<cmd::CreaseSetVertex>(c); };
+  EXPECT_EQ(first_failure(refusing, {"crease_set_vertex \"abc\" 7"}, &message), "CREASE-LAYER-MISSING-1")
+      << message;
+}
+
+}  // namespace
+}  // namespace vgc
