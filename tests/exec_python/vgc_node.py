@@ -604,11 +604,11 @@ class Node:
         del self.layers[lid]
 
     def do_layer_subscribe(self, f):
+        if f["real_format"] > 1:  # wire alias (4.2): a format above REAL64 is the unsubscribe
+            return self.do_layer_unsubscribe(f)
         l = self.layers.get(f["layer_id"])
         if l is None:
             raise Rejected("NO_SUCH_LAYER")
-        if f["real_format"] > 1:
-            raise Rejected("BAD_REAL_FORMAT")
         l.sub = f["real_format"]
 
     def do_layer_unsubscribe(self, f):
