@@ -2,11 +2,14 @@
 // compared, and any difference attributed to a clause.
 //
 // Spec: every clause of the catalog (clause.h); attribution.h says which.
+// README (r6 wire facts): "Hosts on the wire send no acknowledgement and no
+// error: a command is applied ... or dropped silently" — hence `done` answers.
 //
 // Rationale: this is the model-versus-implementation comparison that every
 // property (rc::state commands, property.h) and `vgc replay` share, so a
 // counterexample replays exactly as it failed. After each command it
-// compares (1) applied or rejected, (2) the reason code (SHOULD level),
+// compares (1) applied or rejected (read from the state when the answer is
+// `done`), (2) the reason code (SHOULD level),
 // (3) the snapshot, (4) the derived document. The first MUST-level
 // difference ends the check; SHOULD-level ones are returned as notes.
 #pragma once
@@ -33,11 +36,22 @@ struct Finding {
 struct StepResult {
   std::optional<Finding> failure;  // a MUST or IMPLEMENTATION-DEFINED clause broken
   std::vector<Finding> notes;      // SHOULD clauses broken (the verdict stands)
+  // false when the implementation answered `done` (Answer::verdict_reported):
+  // applied or rejected was read from its state, and REASON-1 (reason codes)
+  // could not be judged on this step: a runner reports it "not-applicable"
+  // when no step of a run reported a verdict.
+  bool verdict_reported = true;
 };
 
 // Applies `c` to a copy of `before` and to `sut` (which must hold the same
 // state as `before`), and compares. On return *after holds the reference's
 // state after `c`. Never throws for any command or any answer.
+// An answer `done` (verdict not reported, docs/adapters.md) is judged from
+// the state: the implementation's snapshot after `c` identical to `before`'s
+// means dropped (rejected), otherwise applied; then as usual, except that a
+// command the reference applies without changing its own snapshot is
+// consistent with an unchanged state, and no reason is compared. Same calls
+// as an ok/rejected answer: apply, snapshot, derived.
 StepResult check_step(const Node& before, const Command& c, Implementation& sut, Node* after);
 
 // Compares the implementation's documents with the reference node's, with
