@@ -5,6 +5,7 @@
 #include "clause.h"
 #include "command_text.h"
 #include "document_diff.h"
+#include "implementation_choice.h"
 #include "snapshot.h"
 
 namespace vgc {
@@ -48,7 +49,8 @@ const char* finding_status_name(FindingStatus s) {
   return "?";
 }
 
-StepResult check_step(const Node& before, const Command& c, Implementation& sut, Node* after) {
+StepResult check_step(const Node& before, const Command& c, Implementation& sut, Node* after,
+                      bool follow_choices) {
   StepResult result;
   *after = before;
   const Reason expected = after->apply(c);
@@ -116,7 +118,17 @@ StepResult check_step(const Node& before, const Command& c, Implementation& sut,
     result.failure = call_failure("STABLE-1", snap.status, "reading the snapshot after `" + text + "`", snap.detail);
     return result;
   }
-  if (auto d = diff_documents(print_snapshot(*after), snap.text)) {
+  std::optional<DocumentDifference> d = diff_documents(print_snapshot(*after), snap.text);
+  if (d && expected == Reason::Ok && follow_choices) {
+    // A choice the spec leaves to the implementation (which free id it
+    // picked): the model follows it, and the choice is a note at its clause.
+    if (auto choice = follow_implementation_choice(before, c, snap.text)) {
+      *after = std::move(choice->model);
+      result.notes.push_back(std::move(choice->note));
+      d.reset();
+    }
+  }
+  if (d) {
     Finding f;
     const bool missing_or_extra = d->expected_line.empty() || d->observed_line.empty();
     f.clause = expected == Reason::Ok
