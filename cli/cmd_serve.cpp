@@ -1,4 +1,4 @@
-// cmd_serve.cpp — `vgc serve [--impl reference|plugin:PATH]`: serve a node
+// cmd_serve.cpp — `vgc serve [--impl reference|plugin:PATH] [--done]`: serve a node
 // over the exec protocol (docs/adapters.md) on standard input and output.
 //
 // Spec: docs/adapters.md "The exec protocol"; command lines are the text
@@ -12,7 +12,11 @@
 // requests ?hello ?reset ?snapshot ?derived ?quit and the optional
 // capability requests (?capabilities ?classify ?subdivide ?normals ...,
 // capability_document_header) are answered as the
-// protocol says. Exit codes: 0 at ?quit or end of input; 2 when the
+// protocol says. A plugin's VGC_DONE is relayed as "done"; with --done every
+// command is answered "done" instead of "ok" / "rejected <REASON>", the way
+// a host on the Verse wire answers nothing (README: "Hosts on the wire send
+// no acknowledgement and no error"), so the suite's `done` judging can be
+// certified against the reference itself. Exit codes: 0 at ?quit or end of input; 2 when the
 // implementation cannot be opened; 3 when writing the answer fails.
 #include <fmt/core.h>
 
@@ -31,6 +35,7 @@ namespace {
 
 struct ServeOptions {
   std::string impl = "reference";
+  bool done = false;  // answer every command "done" (verdict not reported)
 };
 
 bool put(const std::string& s) {
@@ -54,7 +59,7 @@ std::string one_line(const std::string& s) {
   return d;
 }
 
-std::string answer_line(Implementation& impl, const std::string& line) {
+std::string answer_line(Implementation& impl, const std::string& line, bool done) {
   if (line == "?hello") return "vgc-exec 1 " + one_line(impl.identity()) + "\n";
   if (line == "?reset") {
     const Answer a = impl.reset();
@@ -80,8 +85,9 @@ std::string answer_line(Implementation& impl, const std::string& line) {
   }
   const Answer a = impl.apply(c);
   if (a.status != CallStatus::Ok) return failure_line(a.status, a.detail);
-  if (a.applied) return "ok\n";
   if (a.malformed) return "error " + one_line(a.detail) + "\n";
+  if (done || !a.verdict_reported) return "done\n";
+  if (a.applied) return "ok\n";
   return "rejected " + a.reason + "\n";
 }
 
@@ -98,7 +104,7 @@ int run_serve(const ServeOptions& o) {
   while (std::getline(std::cin, line)) {
     if (!line.empty() && line.back() == '\r') line.pop_back();
     if (line == "?quit") return 0;
-    if (!put(answer_line(*impl, line))) return 3;
+    if (!put(answer_line(*impl, line, o.done))) return 3;
   }
   return 0;
 }
@@ -108,6 +114,9 @@ void add_serve(CLI::App& app, int* exit_code) {
   CLI::App* sub = app.add_subcommand(
       "serve", "Serve a node over the exec protocol on stdin/stdout (docs/adapters.md)");
   sub->add_option("--impl", opts->impl, "What to serve: reference (default) or plugin:PATH (loaded in this process)");
+  sub->add_flag("--done", opts->done,
+                "Answer every command \"done\" (processed, verdict not reported), as a host on the Verse wire "
+                "reports nothing (docs/adapters.md)");
   sub->callback([opts, exit_code] { *exit_code = run_serve(*opts); });
 }
 

@@ -5,6 +5,7 @@
 #include "clause.h"
 #include "command_text.h"
 #include "document_diff.h"
+#include "implementation_choice.h"
 #include "snapshot.h"
 
 namespace vgc {
@@ -48,7 +49,8 @@ const char* finding_status_name(FindingStatus s) {
   return "?";
 }
 
-StepResult check_step(const Node& before, const Command& c, Implementation& sut, Node* after) {
+StepResult check_step(const Node& before, const Command& c, Implementation& sut, Node* after,
+                      bool follow_choices) {
   StepResult result;
   *after = before;
   const Reason expected = after->apply(c);
@@ -71,8 +73,33 @@ StepResult check_step(const Node& before, const Command& c, Implementation& sut,
   }
   const std::string expected_answer =
       expected == Reason::Ok ? "ok" : "rejected " + std::string(reason_name(expected));
-  const std::string observed_answer = answer.applied ? "ok" : "rejected " + answer.reason;
-  if (answer.applied != (expected == Reason::Ok)) {
+
+  // A `done` answer (Answer::verdict_reported false) says nothing about the
+  // verdict, so it is read from the state: the snapshot after the command
+  // against the one before it. The implementation held the state `before`
+  // (the precondition, checked by the previous step), so its snapshot
+  // before is print_snapshot(before) as diff_documents compares it, and no
+  // extra call is needed; the snapshot after is the one compared below
+  // anyway. Unchanged means dropped (rejected), changed means applied,
+  // except that a command the reference applies without changing anything
+  // (writing the value a slot already holds) is consistent with either.
+  Document snap;
+  bool applied = answer.applied;
+  std::string observed_answer = answer.applied ? "ok" : "rejected " + answer.reason;
+  result.verdict_reported = answer.verdict_reported;
+  if (!answer.verdict_reported) {
+    snap = sut.snapshot();
+    if (snap.status != CallStatus::Ok) {
+      result.failure = call_failure("STABLE-1", snap.status, "reading the snapshot after `" + text + "`", snap.detail);
+      return result;
+    }
+    const std::string before_text = print_snapshot(before);
+    const bool changed = diff_documents(before_text, snap.text).has_value();
+    const bool reference_changed = expected == Reason::Ok && print_snapshot(*after) != before_text;
+    applied = changed || (expected == Reason::Ok && !reference_changed);
+    observed_answer = changed ? "done, and the state changed (applied)" : "done, and the state is unchanged (dropped)";
+  }
+  if (applied != (expected == Reason::Ok)) {
     Finding f;
     f.clause = std::string(expected == Reason::Ok ? clause_for_acceptance(c, before)
                                                   : clause_for_rejection(c, expected, before));
@@ -80,19 +107,29 @@ StepResult check_step(const Node& before, const Command& c, Implementation& sut,
     result.failure = f;
     return result;
   }
-  if (!answer.applied && answer.reason != reason_name(expected)) {
+  if (answer.verdict_reported && !answer.applied && answer.reason != reason_name(expected)) {
     Finding f;
     f.clause = "REASON-1";
     f.message = "`" + text + "`: expected " + expected_answer + ", observed " + observed_answer;
     result.notes.push_back(f);
   }
 
-  const Document snap = sut.snapshot();
+  if (answer.verdict_reported) snap = sut.snapshot();
   if (snap.status != CallStatus::Ok) {
     result.failure = call_failure("STABLE-1", snap.status, "reading the snapshot after `" + text + "`", snap.detail);
     return result;
   }
-  if (auto d = diff_documents(print_snapshot(*after), snap.text)) {
+  std::optional<DocumentDifference> d = diff_documents(print_snapshot(*after), snap.text);
+  if (d && expected == Reason::Ok && follow_choices) {
+    // A choice the spec leaves to the implementation (which free id it
+    // picked): the model follows it, and the choice is a note at its clause.
+    if (auto choice = follow_implementation_choice(before, c, snap.text)) {
+      *after = std::move(choice->model);
+      result.notes.push_back(std::move(choice->note));
+      d.reset();
+    }
+  }
+  if (d) {
     Finding f;
     const bool missing_or_extra = d->expected_line.empty() || d->observed_line.empty();
     f.clause = expected == Reason::Ok

@@ -2,13 +2,18 @@
 // compared, and any difference attributed to a clause.
 //
 // Spec: every clause of the catalog (clause.h); attribution.h says which.
+// README (r6 wire facts): "Hosts on the wire send no acknowledgement and no
+// error: a command is applied ... or dropped silently" — hence `done` answers.
 //
 // Rationale: this is the model-versus-implementation comparison that every
 // property (rc::state commands, property.h) and `vgc replay` share, so a
 // counterexample replays exactly as it failed. After each command it
-// compares (1) applied or rejected, (2) the reason code (SHOULD level),
+// compares (1) applied or rejected (read from the state when the answer is
+// `done`), (2) the reason code (SHOULD level),
 // (3) the snapshot, (4) the derived document. The first MUST-level
-// difference ends the check; SHOULD-level ones are returned as notes.
+// difference ends the check; SHOULD-level ones are returned as notes, and,
+// when the caller asks to follow choices, so is a free id the implementation
+// picked where the reference picks another (implementation_choice.h).
 #pragma once
 
 #include <optional>
@@ -32,15 +37,37 @@ struct Finding {
 
 struct StepResult {
   std::optional<Finding> failure;  // a MUST or IMPLEMENTATION-DEFINED clause broken
-  std::vector<Finding> notes;      // SHOULD clauses broken (the verdict stands)
-  Reason expected = Reason::Ok;    // the reference's verdict on the command
-  bool verdict_reported = true;    // false: the implementation answered `done`
+  // SHOULD clauses broken, and implementation choices the model followed
+  // (follow_choices, implementation_choice.h) at their clause's level; the
+  // check goes on.
+  std::vector<Finding> notes;
+  Reason expected = Reason::Ok;  // the reference's verdict on the command
+  // false when the implementation answered `done` (Answer::verdict_reported):
+  // applied or rejected was read from its state, and REASON-1 (reason codes)
+  // could not be judged on this step: the runner reports it "not-applicable"
+  // when no step of a run judged it.
+  bool verdict_reported = true;
 };
 
 // Applies `c` to a copy of `before` and to `sut` (which must hold the same
 // state as `before`), and compares. On return *after holds the reference's
 // state after `c`. Never throws for any command or any answer.
-StepResult check_step(const Node& before, const Command& c, Implementation& sut, Node* after);
+// An answer `done` (verdict not reported, docs/adapters.md) is judged from
+// the state: the implementation's snapshot after `c` identical to `before`'s
+// means dropped (rejected), otherwise applied; then as usual, except that a
+// command the reference applies without changing its own snapshot is
+// consistent with an unchanged state, and no reason is compared. Same calls
+// as an ok/rejected answer: apply, snapshot, derived.
+//
+// follow_choices: where the spec leaves the implementation a visible choice
+// (which free id a pick takes; implementation_choice.h) and the
+// implementation made another one than the reference, *after is the state
+// with the implementation's choice and the choice is a note at its clause,
+// not a failure. Only for a caller that starts the next step from *after
+// (otherwise the next step would diverge at another clause); by default a
+// different choice is a failure, as before.
+StepResult check_step(const Node& before, const Command& c, Implementation& sut, Node* after,
+                      bool follow_choices = false);
 
 // Compares the implementation's documents with the reference node's, with
 // no command involved (used after reset). nullopt when equal.

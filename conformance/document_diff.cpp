@@ -6,7 +6,9 @@
 #include <set>
 #include <sstream>
 
+#include "command.h"
 #include "number_text.h"
+#include "snapshot.h"
 
 namespace vgc {
 namespace {
@@ -49,6 +51,39 @@ bool poses_match(const std::string& a, const std::string& b) {
   return same || opposite;
 }
 
+// A snapshot "layer" line reduced to what the spec gives meaning to
+// (snapshot.h used_defaults, docs/commands.md 6.1): a default the layer's
+// type does not use becomes "-" whatever was printed, and a
+// POLYGON_FACE_UINT8 layer's def_uint keeps its low 8 bits (all its slots
+// take, LAYER-DEFAULT-1). Any other line, or a layer line that does not
+// parse, is returned unchanged (and then differs as printed).
+std::string comparable_line(const std::string& line) {
+  static const std::string kHead = "layer ";
+  if (line.rfind(kHead, 0) != 0) return line;
+  const std::size_t id_end = line.find(' ', kHead.size());
+  if (id_end == std::string::npos) return line;
+  std::uint32_t id = 0;
+  if (!parse_uint(std::string_view(line).substr(kHead.size(), id_end - kHead.size()), 16, &id)) return line;
+  std::string name;
+  std::size_t used = 0, error_at = 0;
+  if (!parse_quoted(std::string_view(line).substr(id_end + 1), &name, &used, &error_at)) return line;
+  const std::size_t name_end = id_end + 1 + used;
+  auto w = words(line.substr(name_end));
+  if (w.size() != 4 || name_end >= line.size() || line[name_end] != ' ') return line;
+  std::uint8_t raw = 0;
+  if (!parse_layer_type_name(w[0], &raw)) return line;
+  const LayerType type = static_cast<LayerType>(raw);
+  const UsedDefaults meaning = used_defaults(static_cast<std::uint16_t>(id), type);
+  if (!meaning.def_uint) {
+    w[1] = "-";
+  } else if (type == LayerType::PolygonFaceUint8) {
+    std::uint32_t v = 0;
+    if (parse_uint(w[1], 32, &v)) w[1] = format_uint(v & 0xFFu, 32);
+  }
+  if (!meaning.def_real) w[2] = "-";
+  return line.substr(0, name_end) + " " + w[0] + " " + w[1] + " " + w[2] + " " + w[3];
+}
+
 bool lines_match(const std::string& expected, const std::string& observed) {
   if (expected == observed) return true;
   return first_word(expected) == "bone_pose" && poses_match(expected, observed);
@@ -78,7 +113,10 @@ std::string DocumentDifference::describe() const {
 
 std::optional<DocumentDifference> diff_documents(const std::string& expected, const std::string& observed) {
   if (expected == observed) return std::nullopt;
-  const auto e = split_lines(expected), o = split_lines(observed);
+  const auto e_printed = split_lines(expected), o_printed = split_lines(observed);
+  std::vector<std::string> e, o;  // compared as comparable_line; reported as printed
+  for (const auto& l : e_printed) e.push_back(comparable_line(l));
+  for (const auto& l : o_printed) o.push_back(comparable_line(l));
   // Walk both in order. Lines of a canonical document are unique and
   // sorted within each section, so a line present on one side only is a
   // missing or extra line; a changed line shows up as a pair that share
@@ -96,14 +134,14 @@ std::optional<DocumentDifference> diff_documents(const std::string& expected, co
       return w.size() >= 2 ? w[0] + " " + w[1] : l;
     };
     if (i < e.size() && j < o.size() && key(e[i]) == key(o[j])) {
-      d.expected_line = e[i];
-      d.observed_line = o[j];
+      d.expected_line = e_printed[i];
+      d.observed_line = o_printed[j];
     } else if (i < e.size() && (j >= o.size() || oset.count(e[i]) == 0)) {
-      d.expected_line = e[i];  // the implementation lacks it
+      d.expected_line = e_printed[i];  // the implementation lacks it
     } else if (j < o.size()) {
-      d.observed_line = o[j];  // the implementation has an extra line
+      d.observed_line = o_printed[j];  // the implementation has an extra line
     } else {
-      d.expected_line = e[i];
+      d.expected_line = e_printed[i];
     }
     d.kind = first_word(d.expected_line.empty() ? d.observed_line : d.expected_line);
     return d;

@@ -6,7 +6,9 @@
 // Rationale: stored state must match byte for byte (the snapshot is
 // canonical), but bone world poses are computed in floating point, where two
 // correct implementations may differ in the last bits; those are compared
-// within a tolerance, and a rotation q equals -q. A difference is reported as
+// within a tolerance, and a rotation q equals -q. A layer's default that its
+// type never gives a slot is no state the spec gives meaning to, so it is
+// not compared (an implementation need not keep it). A difference is reported as
 // the first line that differs, in the reference's order, with both sides, so
 // a person can see it without a diff tool.
 #pragma once
@@ -28,7 +30,9 @@ struct DocumentDifference {
 inline constexpr double kPoseTolerance = 1e-9;
 
 // nullopt when the documents agree (exactly, except bone_pose numbers
-// within kPoseTolerance). Precondition: none; malformed text just differs.
+// within kPoseTolerance, and a snapshot layer line's defaults: only the
+// default its type uses is compared, snapshot.h used_defaults; LAYER-DEFAULT-1).
+// Precondition: none; malformed text just differs.
 std::optional<DocumentDifference> diff_documents(const std::string& expected, const std::string& observed);
 
 // Splits on '\n' (a trailing "\r" is dropped from each line).

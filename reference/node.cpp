@@ -151,10 +151,15 @@ Reason Node::apply_one(const cmd::LayerDestroy& c) {
 }
 
 Reason Node::apply_one(const cmd::LayerSubscribe& c) {
+  // README: "a real_format above REAL64 (any value > 1) means
+  // g_layer_unsubscribe(layer_id): on the wire there is no separate
+  // unsubscribe command". The two forms are the same bytes, so the alias is
+  // exactly the unsubscribe (same verdict, same effect); BAD_REAL_FORMAT is
+  // no longer produced.
+  if (c.real_format > 1) return apply_one(cmd::LayerUnsubscribe{c.layer_id});
   auto it = layers_.find(c.layer_id);
   if (it == layers_.end()) return Reason::NoSuchLayer;
   // README: "REAL32=0, REAL64=1".
-  if (c.real_format > 1) return Reason::BadRealFormat;
   it->second.subscription = static_cast<RealFormat>(c.real_format);
   return Reason::Ok;
 }

@@ -22,7 +22,7 @@ enum class Reason {
   NoSuchPolygon,      // the polygon id names no live polygon
   BadPolygon,         // corners: not 3 or 4, repeated, or unused before the 4th
   BadValue,           // a value the rule forbids (non-finite base position, zero rotation)
-  BadRealFormat,      // real format not REAL32 (0) or REAL64 (1)
+  BadRealFormat,      // kept for stable names; no longer produced: a format > 1 is the unsubscribe alias
   NoSuchBone,         // the bone id names no bone
   BoneCycle,          // the parent link would make the bone its own ancestor
   BadWeightLayer,     // weight layer missing or not VERTEX_UINT32 / VERTEX_REAL

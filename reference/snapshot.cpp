@@ -36,12 +36,30 @@ std::string slot_values(LayerType type, const Slot& s) {
 
 }  // namespace
 
+UsedDefaults used_defaults(std::uint16_t layer_id, LayerType type) {
+  UsedDefaults used;
+  if (layer_id == Node::kVertexLayer || layer_id == Node::kPolygonLayer) return used;
+  switch (type) {
+    case LayerType::VertexUint32:
+    case LayerType::PolygonCornerUint32:
+    case LayerType::PolygonFaceUint8:
+    case LayerType::PolygonFaceUint32: used.def_uint = true; break;
+    case LayerType::VertexXyz:
+    case LayerType::VertexReal:
+    case LayerType::PolygonCornerReal:
+    case LayerType::PolygonFaceReal: used.def_real = true; break;
+  }
+  return used;
+}
+
 std::string print_snapshot(const Node& node) {
   std::string out = "vgc-snapshot 1\n";
   for (const auto& [id, layer] : node.layers()) {
+    const UsedDefaults used = used_defaults(id, layer.type);
     out += "layer " + u16(id) + " " + format_quoted(layer.name) + " " +
            std::string(layer_type_name(static_cast<std::uint8_t>(layer.type))) + " " +
-           u32(layer.def_uint) + " " + format_f64(layer.def_real) + " " +
+           (used.def_uint ? u32(layer.def_uint) : "-") + " " + (used.def_real ? format_f64(layer.def_real) : "-") +
+           " " +
            (!layer.subscription ? "-" : *layer.subscription == RealFormat::Real32 ? "REAL32" : "REAL64") +
            "\n";
   }

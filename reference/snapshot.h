@@ -23,4 +23,17 @@ namespace vgc {
 std::string print_snapshot(const Node& node);
 std::string print_derived(const Node& node);
 
+// Which of a layer's two defaults the spec gives meaning to (000 2.6.1: a new
+// slot "is typically initialized with a default value"; Table 2-1 gives each
+// type one value type): an integer type's new slots take def_uint, a real or
+// XYZ type's take def_real (in every component), and the base layers 0 and 1
+// take neither (their slots hold the written positions and corners). The
+// snapshot prints an unused default as "-", and document comparison ignores
+// that field whatever an implementation prints there (docs/commands.md 6.1).
+struct UsedDefaults {
+  bool def_uint = false;
+  bool def_real = false;
+};
+UsedDefaults used_defaults(std::uint16_t layer_id, LayerType type);
+
 }  // namespace vgc

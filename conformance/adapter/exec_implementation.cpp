@@ -491,6 +491,10 @@ Answer ExecImplementation::apply(const Command& c) {
     a.applied = true;
     return a;
   }
+  if (line == "done") {  // processed, verdict not reported (docs/adapters.md)
+    a.verdict_reported = false;
+    return a;
+  }
   if (line.rfind(kRejected, 0) == 0) {
     const std::string reason = line.substr(kRejected.size());
     const bool token = !reason.empty() && std::none_of(reason.begin(), reason.end(), [](char ch) {
@@ -506,7 +510,7 @@ Answer ExecImplementation::apply(const Command& c) {
     return a;
   }
   fail(CallStatus::ProtocolError, "answered " + quote_line(line) + " to " + quote_line(text) +
-                                      "; expected \"ok\", \"rejected <REASON>\" or \"error <message>\"");
+                                      "; expected \"ok\", \"rejected <REASON>\", \"done\" or \"error <message>\"");
   a.status = failed_;
   a.detail = failed_detail_;
   return a;

@@ -39,6 +39,12 @@ struct Answer {
   // reason is empty and detail holds its message. The suite only sends
   // canonical text, so this is a finding against the implementation.
   bool malformed = false;
+  // false when status == Ok and the implementation answered `done` (exec) /
+  // VGC_DONE (plugin): it processed the command but does not say whether it
+  // applied or dropped it, as a host on the Verse wire, which sends no
+  // acknowledgement and no error (README). applied is then false and reason
+  // empty; check_step decides applied or not from the state.
+  bool verdict_reported = true;
 };
 
 // The text documents of snapshot.h, as the implementation printed them.

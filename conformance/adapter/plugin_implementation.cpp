@@ -127,13 +127,16 @@ Answer PluginImplementation::apply_line(const std::string& line) {
                     "; a reason is one word such as \"NO_SUCH_LAYER\"");
       a.reason = reason;
       return a;
+    case VGC_DONE:  // processed, verdict not reported (docs/adapters.md)
+      a.verdict_reported = false;
+      return a;
     case VGC_MALFORMED:
       a.malformed = true;
       a.detail = reason ? reason : "";
       return a;
     default:
       return fail("apply() returned " + std::to_string(r) + " for " + format_quoted(line) +
-                  "; expected VGC_APPLIED (1), VGC_REJECTED (0) or VGC_MALFORMED (-1)");
+                  "; expected VGC_APPLIED (1), VGC_REJECTED (0), VGC_DONE (2) or VGC_MALFORMED (-1)");
   }
 }
 

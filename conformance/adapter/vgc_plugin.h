@@ -25,6 +25,15 @@ typedef struct vgc_node vgc_node; /* opaque, the plugin's own */
 #define VGC_APPLIED 1
 #define VGC_REJECTED 0
 #define VGC_MALFORMED (-1)
+/* Processed, verdict not reported: the plugin does not say whether it
+ * applied or dropped the command, as a host on the Verse wire, which sends
+ * no acknowledgement and no error. vgc then judges from the snapshot
+ * (docs/adapters.md "done answers"). Added in header revision 2 within ABI
+ * version 1: a plugin that never returns it is unchanged, so the ABI
+ * version stays 1; a vgc older than revision 2 reports it as a
+ * protocol-error. */
+#define VGC_DONE 2
+#define VGC_PLUGIN_HEADER_REVISION 2u
 
 typedef struct vgc_plugin_v1_table {
   uint32_t abi_version; /* VGC_PLUGIN_ABI_VERSION */
@@ -33,7 +42,8 @@ typedef struct vgc_plugin_v1_table {
   void (*destroy)(vgc_node* node);
   /* One command line of the text language, without the newline. Returns
    * VGC_APPLIED, VGC_REJECTED (and sets *reason to a reason name such as
-   * "NO_SUCH_LAYER"), or VGC_MALFORMED (and sets *reason to a message). */
+   * "NO_SUCH_LAYER"), VGC_DONE (verdict not reported; *reason unused), or
+   * VGC_MALFORMED (and sets *reason to a message). */
   int (*apply)(vgc_node* node, const char* line, const char** reason);
   /* The snapshot and derived documents, each ending in "end\n". */
   const char* (*snapshot)(vgc_node* node);

@@ -56,6 +56,7 @@ inline std::vector<Command> cube_commands() {
 // One line per answer: "ok", "rejected R", "error", or "<status>" for a failed call.
 inline std::string answer_text(const Answer& a) {
   if (a.status != CallStatus::Ok) return std::string(call_status_name(a.status)) + ": " + a.detail;
+  if (!a.verdict_reported) return "done";
   if (a.applied) return "ok";
   if (a.malformed) return "error";
   return "rejected " + a.reason;

@@ -75,6 +75,24 @@ TEST_P(PluginRoute, ADocumentWithoutEndIsAProtocolError) {
   EXPECT_NE(d.detail.find("returned a document that does not end in a line"), std::string::npos) << d.detail;
 }
 
+// VGC_DONE (header revision 2, ABI 1): processed, verdict not reported;
+// relayed by `vgc serve` as "done" when isolated.
+TEST_P(PluginRoute, VgcDoneIsAnAnswerWithoutAVerdict) {
+  std::string error;
+  auto impl = open_plugin("vgc_test_faulty_all_done", GetParam(), &error);
+  ASSERT_NE(impl, nullptr) << error;
+  ASSERT_EQ(impl->reset().status, CallStatus::Ok);
+  for (int i = 0; i < 2; ++i) {
+    const Answer a = impl->apply(kCommand);
+    EXPECT_EQ(a.status, CallStatus::Ok) << a.detail;
+    EXPECT_FALSE(a.verdict_reported);
+    EXPECT_FALSE(a.applied);
+    EXPECT_FALSE(a.malformed);
+    EXPECT_EQ(a.reason, "");
+  }
+  EXPECT_EQ(impl->snapshot().status, CallStatus::Ok);
+}
+
 INSTANTIATE_TEST_SUITE_P(Plugin, PluginRoute, ::testing::Values(true, false),
                          [](const auto& info) { return info.param ? "Isolated" : "InProcess"; });
 

@@ -48,6 +48,22 @@ TEST(Serve, MalformedLinesAreErrorsWithTheirColumnAndServingGoesOn) {
   EXPECT_EQ(s.text.find("\"uv\""), std::string::npos);
 }
 
+// `vgc serve --done` answers every command "done" (docs/adapters.md), and
+// the exec route reads it as an answer without a verdict.
+TEST(Serve, DoneAnswersEveryCommandDone) {
+  auto impl = std::make_unique<ExecImplementation>(shell_quote(VGC_BINARY) + " serve --done", test_options(10.0));
+  ASSERT_EQ(impl->start().status, CallStatus::Ok);
+  EXPECT_EQ(ask(*impl, "layer_create 2 \"uv\" VERTEX_REAL 0 0.5"), "done");
+  EXPECT_EQ(ask(*impl, "layer_destroy 9"), "done");
+  EXPECT_EQ(ask(*impl, "vertex_set_xyz_real64 0 0 1 2 x").rfind("error line 1, column ", 0), 0u);
+  EXPECT_NE(impl->snapshot().text.find("\"uv\""), std::string::npos);  // applied all the same
+  const Answer a = impl->apply(cmd::LayerDestroy{2});
+  EXPECT_EQ(a.status, CallStatus::Ok) << a.detail;
+  EXPECT_FALSE(a.verdict_reported);
+  EXPECT_FALSE(a.applied);
+  EXPECT_EQ(impl->snapshot().text.find("\"uv\""), std::string::npos);
+}
+
 TEST(Serve, QuitEndsItWithStatusZero) {
   const std::string out = std::string(::testing::TempDir()) + "/vgc_serve_quit.txt";
   const std::string cmd = "printf '?hello\\r\\n?quit\\nlayer_destroy 9\\n' | " + shell_quote(VGC_BINARY) +

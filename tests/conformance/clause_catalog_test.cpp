@@ -103,8 +103,52 @@ TEST(ClauseCatalog, EveryClauseIdLiteralInTheSourcesExists) {
   }
   EXPECT_GE(found, 60);  // attribution.cpp alone has dozens
   for (const auto& fault : faults::fault_catalog())
-    if (!fault.expected_clause.empty())
+    if (!fault.expected_clause.empty()) {
       EXPECT_NE(find_clause(fault.expected_clause), nullptr) << "fault " << fault.name;
+    }
+}
+
+// Levels follow the spec's words (issue "Certify to the end", item 5): MUST
+// only where 000 2.6 or a README wire fact makes it a rule; SHOULD where the
+// text says "typically"; IMPLEMENTATION-DEFINED where it is silent, and then
+// the reading says it is the suite's.
+TEST(ClauseCatalog, LevelsFollowTheSpecsWords) {
+  const std::vector<std::pair<std::string_view, ClauseLevel>> expected = {
+      // "This slot is typically initialized with a default value"
+      {"LAYER-DEFAULT-1", ClauseLevel::Should},
+      // "Bones are typically numbered from zero and upwards ... kept tight"
+      {"BONE-ID-PICK-1", ClauseLevel::Should},
+      // "asks the host to pick a free id": which one is not said
+      {"LAYER-ID-PICK-1", ClauseLevel::ImplementationDefined},
+      {"VERTEX-ID-PICK-1", ClauseLevel::ImplementationDefined},
+      // the r6 host's behaviour is "one implementation-defined profile, not the rule"
+      {"POLY-DISTINCT-1", ClauseLevel::ImplementationDefined},
+      // the text says what a VERTEX_UINT32 reference layer does, nothing about another
+      {"BONE-REFERENCE-1", ClauseLevel::ImplementationDefined},
+      // rules of the text or the wire facts
+      {"LAYER-BASE-1", ClauseLevel::Must},
+      {"POLY-CORNERS-1", ClauseLevel::Must},
+      {"POLY-VERTEX-REF-1", ClauseLevel::Must},
+      {"VERTEX-DELETE-1", ClauseLevel::Must},
+      {"LAYER-SUBSCRIBE-1", ClauseLevel::Must},
+      {"ATOMIC-1", ClauseLevel::Must},  // "a command is applied ... or dropped silently"
+      {"REASON-1", ClauseLevel::Should},
+  };
+  for (const auto& [id, level] : expected) {
+    const Clause* c = find_clause(id);
+    ASSERT_NE(c, nullptr) << id;
+    EXPECT_EQ(clause_level_name(c->level), clause_level_name(level)) << id;
+  }
+  for (const Clause& c : clause_catalog()) {
+    const std::string reading(c.reading);
+    if (c.level == ClauseLevel::ImplementationDefined && c.group != "derived") {
+      EXPECT_NE(reading.find("suite's reading"), std::string::npos)
+          << c.id << ": an IMPLEMENTATION-DEFINED clause says that its reading is the suite's";
+    }
+    if (c.level == ClauseLevel::Should && c.id != "REASON-1") {
+      EXPECT_NE(std::string(c.text).find("typically"), std::string::npos) << c.id << ": SHOULD, but no \"typically\"";
+    }
+  }
 }
 
 // ---- attribution ------------------------------------------------------------

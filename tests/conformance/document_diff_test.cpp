@@ -155,5 +155,57 @@ TEST(DocumentDiff, OnlyBonePosesHaveATolerance) {
   EXPECT_EQ(d->kind, "slot");
 }
 
+// LAYER-DEFAULT-1 / docs/commands.md 6.1: a layer line's unused default is
+// not state, so whatever an implementation prints there (a number it never
+// uses, "-", the r6 host's zero) is not a difference; the default the type
+// uses still is. Seen failing before comparable_line existed: every case
+// below that expects nullopt reported a "layer" difference.
+TEST(DocumentDiff, OnlyTheDefaultALayersTypeUsesIsCompared) {
+  Node n;
+  n.apply(cmd::LayerCreate{2, "u", 1, 7, 1.5});         // VERTEX_UINT32
+  n.apply(cmd::LayerCreate{3, "r", 2, 7, 1.5});         // VERTEX_REAL
+  n.apply(cmd::LayerCreate{4, "xyz", 0, 7, 1.5});       // VERTEX_XYZ
+  n.apply(cmd::LayerCreate{5, "c", 128, 7, 1.5});       // POLYGON_CORNER_UINT32
+  n.apply(cmd::LayerCreate{6, "f8", 130, 0x1234, 1.5}); // POLYGON_FACE_UINT8
+  n.apply(cmd::LayerCreate{7, "a b", 132, 7, 1.5});     // POLYGON_FACE_REAL, a name with a blank
+  const std::string e = print_snapshot(n);
+  struct Case {
+    std::string from, to;
+    bool differs;
+  };
+  const Case cases[] = {
+      // unused defaults, printed otherwise: no difference
+      {"layer 0 \"vertex\" VERTEX_XYZ - - -", "layer 0 \"vertex\" VERTEX_XYZ 0 0 -", false},
+      {"layer 1 \"polygon\" POLYGON_CORNER_UINT32 - - -", "layer 1 \"polygon\" POLYGON_CORNER_UINT32 9 nan -", false},
+      {"layer 2 \"u\" VERTEX_UINT32 7 - -", "layer 2 \"u\" VERTEX_UINT32 7 1.5 -", false},
+      {"layer 2 \"u\" VERTEX_UINT32 7 - -", "layer 2 \"u\" VERTEX_UINT32 7 0 -", false},
+      {"layer 3 \"r\" VERTEX_REAL - 1.5 -", "layer 3 \"r\" VERTEX_REAL 0 1.5 -", false},
+      {"layer 4 \"xyz\" VERTEX_XYZ - 1.5 -", "layer 4 \"xyz\" VERTEX_XYZ 12 1.5 -", false},
+      {"layer 5 \"c\" POLYGON_CORNER_UINT32 7 - -", "layer 5 \"c\" POLYGON_CORNER_UINT32 7 -3 -", false},
+      {"layer 6 \"f8\" POLYGON_FACE_UINT8 4660 - -", "layer 6 \"f8\" POLYGON_FACE_UINT8 52 - -", false},
+      {"layer 6 \"f8\" POLYGON_FACE_UINT8 4660 - -", "layer 6 \"f8\" POLYGON_FACE_UINT8 0x34 0 -", false},
+      {"layer 7 \"a b\" POLYGON_FACE_REAL - 1.5 -", "layer 7 \"a b\" POLYGON_FACE_REAL 99 1.5 -", false},
+      // the used default, wrong: a difference
+      {"layer 2 \"u\" VERTEX_UINT32 7 - -", "layer 2 \"u\" VERTEX_UINT32 8 1.5 -", true},
+      {"layer 3 \"r\" VERTEX_REAL - 1.5 -", "layer 3 \"r\" VERTEX_REAL - 2.5 -", true},
+      {"layer 4 \"xyz\" VERTEX_XYZ - 1.5 -", "layer 4 \"xyz\" VERTEX_XYZ 7 0 -", true},
+      {"layer 5 \"c\" POLYGON_CORNER_UINT32 7 - -", "layer 5 \"c\" POLYGON_CORNER_UINT32 - 1.5 -", true},
+      {"layer 6 \"f8\" POLYGON_FACE_UINT8 4660 - -", "layer 6 \"f8\" POLYGON_FACE_UINT8 53 - -", true},
+      {"layer 7 \"a b\" POLYGON_FACE_REAL - 1.5 -", "layer 7 \"a b\" POLYGON_FACE_REAL - nan -", true},
+      // everything else on the line still counts
+      {"layer 2 \"u\" VERTEX_UINT32 7 - -", "layer 2 \"u\" VERTEX_UINT32 7 - REAL32", true},
+      {"layer 3 \"r\" VERTEX_REAL - 1.5 -", "layer 3 \"r\" POLYGON_FACE_REAL - 1.5 -", true},
+      {"layer 7 \"a b\" POLYGON_FACE_REAL - 1.5 -", "layer 7 \"a c\" POLYGON_FACE_REAL - 1.5 -", true},
+  };
+  for (const Case& c : cases) {
+    const auto d = diff_documents(e, replace_line(e, c.from, c.to));
+    EXPECT_EQ(d.has_value(), c.differs) << c.to;
+    if (d) {
+      EXPECT_EQ(d->kind, "layer") << c.to;
+      EXPECT_EQ(d->observed_line, c.to);  // reported as printed
+    }
+  }
+}
+
 }  // namespace
 }  // namespace vgc

@@ -604,11 +604,11 @@ class Node:
         del self.layers[lid]
 
     def do_layer_subscribe(self, f):
+        if f["real_format"] > 1:  # wire alias (4.2): a format above REAL64 is the unsubscribe
+            return self.do_layer_unsubscribe(f)
         l = self.layers.get(f["layer_id"])
         if l is None:
             raise Rejected("NO_SUCH_LAYER")
-        if f["real_format"] > 1:
-            raise Rejected("BAD_REAL_FORMAT")
         l.sub = f["real_format"]
 
     def do_layer_unsubscribe(self, f):
@@ -786,8 +786,17 @@ class Node:
         for lid in sorted(self.layers):
             l = self.layers[lid]
             sub = "-" if l.sub is None else REAL_FORMAT_NAMES[l.sub]
+            # commands.md 6.1: only the default the type uses is state; the other
+            # (both, for layers 0 and 1) is "-". A FACE_UINT8 default is kept as
+            # the uint8 its slots take.
+            du, dr = "-", "-"
+            if lid not in (0, 1):
+                if is_real_type(l.type):
+                    dr = r64(l.def_real)
+                else:
+                    du = format_uint(l.def_uint & 0xFF if l.type == POLY_FACE_UINT8 else l.def_uint, U32_MAX)
             out.append("layer %s %s %s %s %s %s" % (format_uint(lid, U16_MAX), format_name(l.name), LAYER_TYPE_NAMES[l.type],
-                                                     format_uint(l.def_uint, U32_MAX), r64(l.def_real), sub))
+                                                     du, dr, sub))
         out.append("crease_vertex %s %s" % (format_name(self.crease_vertex[0]), format_uint(self.crease_vertex[1], U32_MAX)))
         out.append("crease_edge %s %s" % (format_name(self.crease_edge[0]), format_uint(self.crease_edge[1], U32_MAX)))
         for vid in sorted(self.vertices):

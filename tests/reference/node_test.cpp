@@ -367,8 +367,8 @@ TEST(Node, EveryReasonCodeIsProducedByACommandThatShouldProduceIt) {
       {"", "bone_create 1 \"r\" \"\" 0xFFFF 0 0 0 \"\" 0 0 0 0 \"\"", Reason::BadValue},
       {"", "bone_create 1 \"r\" \"\" 0xFFFF 0 nan 0 \"\" 0 0 0 1 \"\"", Reason::BadValue},
       {"", "bone_create 1 \"r\" \"\" 0xFFFF 0 0 0 \"\" 0 inf 0 1 \"\"", Reason::BadValue},
-      {"", "layer_subscribe 3 2", Reason::BadRealFormat},
-      {"", "layer_subscribe 3 0xFF", Reason::BadRealFormat},
+      {"", "layer_subscribe 3 2", Reason::Ok},     // the unsubscribe alias, not BAD_REAL_FORMAT
+      {"", "layer_subscribe 9 0xFF", Reason::NoSuchLayer},  // unsubscribe of no layer
       {"", "bone_destroy 7", Reason::NoSuchBone},
       {"", "bone_create 7 \"\" \"\" 0 0 0 0 \"\" 0 0 0 1 \"\"", Reason::NoSuchBone},  // empty weight: destroy 7
       {"", "bone_create 1 \"r\" \"\" 1 0 0 0 \"\" 0 0 0 1 \"\"", Reason::BoneCycle},  // its own parent
@@ -389,12 +389,17 @@ TEST(Node, EveryReasonCodeIsProducedByACommandThatShouldProduceIt) {
     const std::string before = print_snapshot(n);
     const Reason got = A(n, rc.command);
     EXPECT_EQ(reason_name(got), reason_name(rc.expected)) << rc.command;
-    if (got != Reason::Ok) EXPECT_EQ(print_snapshot(n), before) << rc.command;
+    if (got != Reason::Ok) {
+      EXPECT_EQ(print_snapshot(n), before) << rc.command;
+    }
     if (got == rc.expected) seen.insert(got);
   }
   // NO_FREE_ID and LIMIT need a full id space or small limits: see below.
   seen.insert(Reason::NoFreeId);
   seen.insert(Reason::Limit);
+  // BAD_REAL_FORMAT is no longer produced: a format above REAL64 is the
+  // unsubscribe alias (README "Wire aliases"); the name stays for stability.
+  seen.insert(Reason::BadRealFormat);
   for (int r = static_cast<int>(Reason::Ok); r <= static_cast<int>(Reason::Limit); ++r)
     EXPECT_TRUE(seen.count(static_cast<Reason>(r))) << "no case for " << reason_name(static_cast<Reason>(r));
 }
@@ -505,6 +510,98 @@ TEST(Node, BoneCreateWithEmptyWeightDestroysTheBone) {
   apply_all(n, "layer_create 2 \"w\" VERTEX_REAL 0 0\nbone_create 3 \"w\" \"\" 0xFFFF 0 0 0 \"\" 0 0 0 1 \"\"\n");
   ASSERT_EQ(A(n, "bone_create 3 \"\" \"junk\" 0 nan 0 0 \"\" 0 0 0 0 \"\""), Reason::Ok);
   EXPECT_TRUE(n.bones().empty());
+}
+
+TEST(Node, LayerSubscribeWithAFormatAboveReal64UnsubscribesTheLayer) {
+  // README: "a real_format above REAL64 (any value > 1) means g_layer_unsubscribe(layer_id)".
+  for (const char* format : {"2", "7", "0xFF"}) {
+    Node n;
+    ASSERT_EQ(A(n, "layer_subscribe 0 REAL64"), Reason::Ok);
+    EXPECT_EQ(A(n, std::string("layer_subscribe 0 ") + format), Reason::Ok) << format;
+    EXPECT_FALSE(n.find_layer(0)->subscription.has_value()) << format;
+    EXPECT_EQ(A(n, std::string("layer_subscribe 0 ") + format), Reason::Ok) << format;  // as unsubscribe: no-op
+    EXPECT_EQ(A(n, std::string("layer_subscribe 9 ") + format), Reason::NoSuchLayer) << format;
+  }
+}
+
+// README "Wire aliases": "A host reached over the wire cannot tell the two
+// forms apart, so a suite must not expect different answers for them." Each
+// aliased form gives exactly the verdict and the state of the command it
+// aliases, on a node with layers of every stack, a subscription and a bone,
+// whatever the other fields hold.
+TEST(Node, EveryAliasedFormAnswersAndActsExactlyAsTheCommandItAliases) {
+  const std::string setup = std::string(test::kCubeScript) +
+                            "layer_create 2 \"u\" VERTEX_UINT32 7 0\n"
+                            "layer_create 3 \"r\" VERTEX_REAL 0 0.5\n"
+                            "layer_subscribe 3 REAL64\n"
+                            "layer_create 4 \"xyz\" VERTEX_XYZ 0 2\n"
+                            "layer_create 5 \"f\" POLYGON_FACE_REAL 0 1\n"
+                            "layer_create 6 \"c\" POLYGON_CORNER_UINT32 3 0\n"
+                            "bone_create 3 \"r\" \"\" 0xFFFF 0 0 0 \"\" 0 0 0 1 \"\"\n";
+  struct Pair {
+    const char* alias;
+    const char* plain;
+  };
+  const Pair pairs[] = {
+      // layer_subscribe with a format > REAL64 = layer_unsubscribe
+      {"layer_subscribe 3 2", "layer_unsubscribe 3"},
+      {"layer_subscribe 3 0xFF", "layer_unsubscribe 3"},
+      {"layer_subscribe 2 9", "layer_unsubscribe 2"},
+      {"layer_subscribe 0 2", "layer_unsubscribe 0"},
+      {"layer_subscribe 9 2", "layer_unsubscribe 9"},
+      {"layer_subscribe 0xFFFF 0xFF", "layer_unsubscribe 0xFFFF"},
+      // layer_create with an empty name = layer_destroy (type and defaults ignored)
+      {"layer_create 3 \"\" POLYGON_FACE_REAL 1 2", "layer_destroy 3"},
+      {"layer_create 6 \"\" 99 0 nan", "layer_destroy 6"},
+      {"layer_create 0 \"\" VERTEX_XYZ 0 0", "layer_destroy 0"},
+      {"layer_create 1 \"\" 200 0 0", "layer_destroy 1"},
+      {"layer_create 9 \"\" VERTEX_REAL 0 0", "layer_destroy 9"},
+      {"layer_create 0xFFFF \"\" VERTEX_REAL 0 0", "layer_destroy 0xFFFF"},
+      // vertex_set_xyz_real32/64 with a coordinate FLT_MAX / DBL_MAX = vertex_delete, whatever the layer
+      {"vertex_set_xyz_real32 0 2 3.4028235e+38 0 0", "vertex_delete 2"},
+      {"vertex_set_xyz_real32 0 2 0 3.4028235e+38 nan", "vertex_delete 2"},
+      {"vertex_set_xyz_real32 4 2 0 0 3.4028235e+38", "vertex_delete 2"},   // a non-base XYZ layer
+      {"vertex_set_xyz_real32 2 2 3.4028235e+38 0 0", "vertex_delete 2"},   // a VERTEX_UINT32 layer
+      {"vertex_set_xyz_real32 9 2 3.4028235e+38 0 0", "vertex_delete 2"},   // no such layer
+      {"vertex_set_xyz_real32 0 99 3.4028235e+38 0 0", "vertex_delete 99"}, // no such vertex
+      {"vertex_set_xyz_real32 0 0xFFFFFFFF 3.4028235e+38 0 0", "vertex_delete 0xFFFFFFFF"},
+      {"vertex_set_xyz_real64 0 5 1.7976931348623157e+308 0 0", "vertex_delete 5"},
+      {"vertex_set_xyz_real64 0 5 inf 1.7976931348623157e+308 0", "vertex_delete 5"},
+      {"vertex_set_xyz_real64 4 5 0 0 1.7976931348623157e+308", "vertex_delete 5"},
+      {"vertex_set_xyz_real64 5 5 0 0 1.7976931348623157e+308", "vertex_delete 5"},  // a polygon layer
+      {"vertex_set_xyz_real64 0xFFFF 5 1.7976931348623157e+308 0 0", "vertex_delete 5"},
+      {"vertex_set_xyz_real64 0 77 1.7976931348623157e+308 0 0", "vertex_delete 77"},
+      // polygon_set_corner_uint32 on layer 1 with v0 = 0xFFFFFFFF = polygon_delete
+      {"polygon_set_corner_uint32 1 3 0xFFFFFFFF 1 2 3", "polygon_delete 3"},
+      {"polygon_set_corner_uint32 1 3 0xFFFFFFFF 0xFFFFFFFF 0xFFFFFFFF 0xFFFFFFFF", "polygon_delete 3"},
+      {"polygon_set_corner_uint32 1 3 0xFFFFFFFF 9 9 9", "polygon_delete 3"},
+      {"polygon_set_corner_uint32 1 99 0xFFFFFFFF 0 1 2", "polygon_delete 99"},
+      {"polygon_set_corner_uint32 1 0xFFFFFFFF 0xFFFFFFFF 0 1 2", "polygon_delete 0xFFFFFFFF"},
+      // bone_create with an empty weight name = bone_destroy (all other fields ignored)
+      {"bone_create 3 \"\" \"junk\" 0 nan 0 0 \"\" 0 0 0 0 \"\"", "bone_destroy 3"},
+      {"bone_create 3 \"\" \"abcdefghijklmnopq\" 3 0 0 0 \"\" 0 0 0 1 \"\"", "bone_destroy 3"},
+      {"bone_create 9 \"\" \"\" 0xFFFF 0 0 0 \"\" 0 0 0 1 \"\"", "bone_destroy 9"},
+      {"bone_create 0xFFFF \"\" \"\" 0xFFFF 0 0 0 \"\" 0 0 0 1 \"\"", "bone_destroy 0xFFFF"},
+  };
+  for (const Pair& p : pairs) {
+    Node a, b;
+    apply_all(a, setup);
+    apply_all(b, setup);
+    const Reason ra = A(a, p.alias), rb = A(b, p.plain);
+    EXPECT_EQ(reason_name(ra), reason_name(rb)) << p.alias << " vs " << p.plain;
+    EXPECT_EQ(print_snapshot(a), print_snapshot(b)) << p.alias << " vs " << p.plain;
+    EXPECT_EQ(print_derived(a), print_derived(b)) << p.alias << " vs " << p.plain;
+  }
+  // Not aliases: the same conditions elsewhere are ordinary data.
+  Node n;
+  apply_all(n, setup);
+  EXPECT_EQ(A(n, "polygon_set_corner_uint32 6 3 0xFFFFFFFF 1 2 3"), Reason::Ok);  // corner layer other than 1
+  EXPECT_EQ(n.polygons().count(3), 1u);
+  EXPECT_EQ(A(n, "vertex_set_xyz_real32 0 2 -3.4028235e+38 0 0"), Reason::Ok);   // -FLT_MAX
+  EXPECT_EQ(A(n, "vertex_set_xyz_real64 0 2 3.4028234663852886e+38 0 0"), Reason::Ok);  // FLT_MAX widened
+  EXPECT_EQ(n.vertices().count(2), 1u);
+  EXPECT_EQ(A(n, "layer_subscribe 3 REAL32"), Reason::Ok);
+  EXPECT_EQ(n.find_layer(3)->subscription, RealFormat::Real32);
 }
 
 // ---- picking ids -------------------------------------------------------------------

@@ -17,8 +17,8 @@ TEST(Snapshot, FreshNodePrintsTheBaseLayersAndConstantCreases) {
   Node n;
   EXPECT_EQ(print_snapshot(n),
             "vgc-snapshot 1\n"
-            "layer 0 \"vertex\" VERTEX_XYZ 0 0 -\n"
-            "layer 1 \"polygon\" POLYGON_CORNER_UINT32 0 0 -\n"
+            "layer 0 \"vertex\" VERTEX_XYZ - - -\n"
+            "layer 1 \"polygon\" POLYGON_CORNER_UINT32 - - -\n"
             "crease_vertex \"\" 0\n"
             "crease_edge \"\" 0\n"
             "end\n");
@@ -51,11 +51,11 @@ TEST(Snapshot, ListsLayersCreasesVerticesPolygonsSlotsAndBonesInIdOrder) {
   apply_all(n, kScene);
   EXPECT_EQ(print_snapshot(n),
             "vgc-snapshot 1\n"
-            "layer 0 \"vertex\" VERTEX_XYZ 0 0 REAL64\n"
-            "layer 1 \"polygon\" POLYGON_CORNER_UINT32 0 0 -\n"
-            "layer 2 \"uv\" VERTEX_REAL 0 0.25 REAL32\n"
-            "layer 3 \"w\" VERTEX_UINT32 0xFFFFFFFF 0 -\n"
-            "layer 5 \"fr\" POLYGON_FACE_REAL 0 -0.5 -\n"
+            "layer 0 \"vertex\" VERTEX_XYZ - - REAL64\n"
+            "layer 1 \"polygon\" POLYGON_CORNER_UINT32 - - -\n"
+            "layer 2 \"uv\" VERTEX_REAL - 0.25 REAL32\n"
+            "layer 3 \"w\" VERTEX_UINT32 0xFFFFFFFF - -\n"
+            "layer 5 \"fr\" POLYGON_FACE_REAL - -0.5 -\n"
             "crease_vertex \"w\" 3\n"
             "crease_edge \"\" 0xFFFFFFFF\n"
             "vertex 2 0.5 -0 1e-300\n"
@@ -131,17 +131,41 @@ TEST(Snapshot, PrintsEverySlotOfEveryNonBaseLayerWithItsTypesValueCount) {
 TEST(Snapshot, SubscriptionColumnShowsDashReal32OrReal64) {
   Node n;
   apply_all(n, "layer_create 2 \"a\" VERTEX_REAL 0 0\nlayer_subscribe 2 REAL32\n");
-  EXPECT_NE(print_snapshot(n).find("layer 2 \"a\" VERTEX_REAL 0 0 REAL32\n"), std::string::npos);
+  EXPECT_NE(print_snapshot(n).find("layer 2 \"a\" VERTEX_REAL - 0 REAL32\n"), std::string::npos);
   apply_all(n, "layer_subscribe 2 REAL64\n");
-  EXPECT_NE(print_snapshot(n).find("layer 2 \"a\" VERTEX_REAL 0 0 REAL64\n"), std::string::npos);
+  EXPECT_NE(print_snapshot(n).find("layer 2 \"a\" VERTEX_REAL - 0 REAL64\n"), std::string::npos);
   apply_all(n, "layer_unsubscribe 2\n");
-  EXPECT_NE(print_snapshot(n).find("layer 2 \"a\" VERTEX_REAL 0 0 -\n"), std::string::npos);
+  EXPECT_NE(print_snapshot(n).find("layer 2 \"a\" VERTEX_REAL - 0 -\n"), std::string::npos);
+}
+
+// 000 2.6.1: a new slot "is typically initialized with a default value" of
+// its layer's value type (Table 2-1), so only that default is state: the
+// other prints "-", and the base layers, whose slots hold written data,
+// print both as "-".
+TEST(Snapshot, OnlyTheDefaultALayersTypeUsesIsPrinted) {
+  Node n;
+  apply_all(n,
+            "layer_create 2 \"xyz\" VERTEX_XYZ 7 1.5\n"
+            "layer_create 3 \"u\" VERTEX_UINT32 7 1.5\n"
+            "layer_create 4 \"r\" VERTEX_REAL 7 1.5\n"
+            "layer_create 5 \"cu\" POLYGON_CORNER_UINT32 7 1.5\n"
+            "layer_create 6 \"cr\" POLYGON_CORNER_REAL 7 1.5\n"
+            "layer_create 7 \"f8\" POLYGON_FACE_UINT8 0x1234 1.5\n"
+            "layer_create 8 \"f32\" POLYGON_FACE_UINT32 7 1.5\n"
+            "layer_create 9 \"fr\" POLYGON_FACE_REAL 7 1.5\n");
+  const std::string s = print_snapshot(n);
+  for (const char* line : {"layer 0 \"vertex\" VERTEX_XYZ - - -\n", "layer 1 \"polygon\" POLYGON_CORNER_UINT32 - - -\n",
+                           "layer 2 \"xyz\" VERTEX_XYZ - 1.5 -\n", "layer 3 \"u\" VERTEX_UINT32 7 - -\n",
+                           "layer 4 \"r\" VERTEX_REAL - 1.5 -\n", "layer 5 \"cu\" POLYGON_CORNER_UINT32 7 - -\n",
+                           "layer 6 \"cr\" POLYGON_CORNER_REAL - 1.5 -\n", "layer 7 \"f8\" POLYGON_FACE_UINT8 4660 - -\n",
+                           "layer 8 \"f32\" POLYGON_FACE_UINT32 7 - -\n", "layer 9 \"fr\" POLYGON_FACE_REAL - 1.5 -\n"})
+    EXPECT_NE(s.find(line), std::string::npos) << line << " in\n" << s;
 }
 
 TEST(Snapshot, NamesAreQuotedWithEscapes) {
   Node n;
   apply_all(n, "layer_create 2 \"a b\\\\\\x01\" VERTEX_REAL 0 0\n");
-  EXPECT_NE(print_snapshot(n).find("layer 2 \"a b\\\\\\x01\" VERTEX_REAL 0 0 -\n"), std::string::npos);
+  EXPECT_NE(print_snapshot(n).find("layer 2 \"a b\\\\\\x01\" VERTEX_REAL - 0 -\n"), std::string::npos);
 }
 
 }  // namespace

@@ -6,6 +6,8 @@
  *   FAULT_NO_ENTRY        no vgc_plugin_v1 symbol is exported
  *   FAULT_BAD_REASON      rejects with the reason "NO SUCH LAYER" (not a token)
  *   FAULT_BAD_DOCUMENT    the snapshot does not end in a line "end"
+ *   FAULT_ALL_DONE        not a fault: answers VGC_DONE (verdict not
+ *                         reported) to every command, as a wire host would
  * Otherwise it behaves like minimal_plugin.c: every command is rejected
  * with NO_SUCH_LAYER; the documents are those of a fresh node.
  */
@@ -25,6 +27,9 @@ static int apply(vgc_node* node, const char* line, const char** reason) {
   node->commands++;
 #if FAULT_ABORT_ON_THIRD
   if (node->commands == 3) abort();
+#endif
+#if FAULT_ALL_DONE
+  return VGC_DONE;
 #endif
 #if FAULT_BAD_REASON
   *reason = "NO SUCH LAYER";

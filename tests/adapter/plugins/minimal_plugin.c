@@ -39,8 +39,8 @@ static int apply(vgc_node* node, const char* line, const char** reason) {
 static const char* snapshot(vgc_node* node) {
   (void)node;
   return "vgc-snapshot 1\n"
-         "layer 0 \"vertex\" VERTEX_XYZ 0 0 -\n"
-         "layer 1 \"polygon\" POLYGON_CORNER_UINT32 0 0 -\n"
+         "layer 0 \"vertex\" VERTEX_XYZ - - -\n"
+         "layer 1 \"polygon\" POLYGON_CORNER_UINT32 - - -\n"
          "crease_vertex \"\" 0\n"
          "crease_edge \"\" 0\n"
          "end\n";
