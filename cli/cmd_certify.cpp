@@ -58,8 +58,10 @@ bool parse_shard(const std::string& s, int* index, int* count) {
 }
 
 std::string rerun_command(const Options& o) {
-  std::string c = "./vgc certify --impl " + shell_quote(o.impl) + " --seed " + std::to_string(o.seed) +
-                  " --cases " + std::to_string(o.cases) + " --budget " + fmt::format("{:g}", o.budget);
+  std::string c = vgc_environment_prefix() + "./vgc certify --impl " + shell_quote(o.impl) + " --seed " +
+                  std::to_string(o.seed) + " --cases " + std::to_string(o.cases) + " --budget " +
+                  fmt::format("{:g}", o.budget);
+  if (o.max_size != 50) c += " --max-size " + std::to_string(o.max_size);
   if (o.clauses != "*") c += " --clauses " + shell_quote(o.clauses);
   if (o.shard != "1/1") c += " --shard " + o.shard;
   if (!o.baseline.empty()) c += " --baseline " + shell_quote(o.baseline);

@@ -19,14 +19,6 @@ FindingStatus status_of(CallStatus s) {
   }
 }
 
-Finding call_failure(std::string_view clause, CallStatus s, const std::string& what, const std::string& detail) {
-  Finding f;
-  f.status = status_of(s);
-  f.clause = s == CallStatus::ProtocolError ? "ACCEPT-1" : std::string(clause);
-  f.message = std::string(call_status_name(s)) + " while " + what + (detail.empty() ? "" : ": " + detail);
-  return f;
-}
-
 long bone_id_of(const std::string& line) {
   // "bone_pose <id> ..."
   const auto sp = line.find(' ');
@@ -47,6 +39,14 @@ const char* finding_status_name(FindingStatus s) {
     case FindingStatus::Timeout: return "timeout";
   }
   return "?";
+}
+
+Finding call_failure(std::string_view clause, CallStatus s, const std::string& what, const std::string& detail) {
+  Finding f;
+  f.status = status_of(s);
+  f.clause = s == CallStatus::ProtocolError ? "ACCEPT-1" : std::string(clause);
+  f.message = std::string(call_status_name(s)) + " while " + what + (detail.empty() ? "" : ": " + detail);
+  return f;
 }
 
 StepResult check_step(const Node& before, const Command& c, Implementation& sut, Node* after,

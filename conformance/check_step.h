@@ -18,6 +18,7 @@
 
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "command.h"
@@ -48,6 +49,11 @@ struct StepResult {
   // when no step of a run judged it.
   bool verdict_reported = true;
 };
+
+// The finding for a call that did not answer (crash, timeout) or answered
+// outside the contract (ProtocolError, always ACCEPT-1): `clause` is the
+// rule of what was asked, `what` says what was being done ("applying ...").
+Finding call_failure(std::string_view clause, CallStatus s, const std::string& what, const std::string& detail);
 
 // Applies `c` to a copy of `before` and to `sut` (which must hold the same
 // state as `before`), and compares. On return *after holds the reference's

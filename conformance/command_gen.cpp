@@ -446,6 +446,8 @@ Gen<Command> set_crease(const View& v) {
         {5, gen::just(std::string(vertex ? "vcrease" : "ecrease"))},
         {existing.empty() ? 0u : 4u, existing.empty() ? gen::just(std::string()) : gen::elementOf(existing)},
         {2, layer_name(v)},
+        // names at the limit: 15 bytes is a name, 16 is not (CREASE-NAME-1)
+        {1, gen::elementOf(std::vector<std::string>{"fifteen_bytes_x", "sixteen_bytes_xx"})},
     });
     if (vertex) return cmd::CreaseSetVertex{name, *crease_value()};
     return cmd::CreaseSetEdge{name, *crease_value()};
@@ -548,6 +550,23 @@ Gen<Command> destroy_bone(const View& v) {
   });
 }
 
+// A well-formed bone create that asks for a free id (0xFFFF, BONE-ID-PICK-1):
+// a weight layer that exists when there is one, no reference layer, a live
+// parent or none, plain values; so that the pick itself is what is judged.
+Gen<Command> pick_bone(const View& v) {
+  return gen::exec([v]() -> Command {
+    cmd::BoneCreate c;
+    c.bone_id = kNone16;
+    std::vector<std::string> weights = v.vertex_uint_names;
+    weights.insert(weights.end(), v.vertex_real_names.begin(), v.vertex_real_names.end());
+    c.weight = weights.empty() ? std::string("weight") : *gen::elementOf(weights);
+    c.parent = *pick<std::uint16_t>(v.bones, gen::just(std::uint16_t(kNone16)));
+    for (auto& x : c.pos) x = *unit_component();
+    c.rot = {0, 0, 0, 1};
+    return c;
+  });
+}
+
 Gen<Command> bone_layer(const View&) {
   return gen::exec([]() -> Command {
     cmd::LayerCreate c;
@@ -606,7 +625,8 @@ Gen<Command> gen_command(const Node& model, Focus focus) {
     }
     case Focus::Ids:
       return rc::gen::weightedOneOf<Command>({W{3, create_layer(v)}, W{4, set_vertex(v)}, W{3, build_polygon(v)},
-                                          W{2, create_bone(v)}, W{1, bone_layer(v)}, W{2, delete_vertex(v)}});
+                                          W{2, create_bone(v)}, W{2, pick_bone(v)}, W{1, bone_layer(v)},
+                                          W{2, delete_vertex(v)}});
     case Focus::Anything:
       break;
   }

@@ -61,7 +61,8 @@ struct CaseContext {
   int cases_done = 0, judged = 0, set_aside = 0, target = 0;
   bool dominated = false;           // set-aside cases dominate: stop
 
-  // Run-wide tallies (outside shrinking), owned by run_certification.
+  // Tallies (outside shrinking): the property's exercised counts, the run's
+  // command kinds and unreported verdicts.
   std::map<std::string, long>* exercised = nullptr;
   std::map<std::string, CommandKindCount>* kinds = nullptr;
   long* unreported = nullptr;
@@ -124,12 +125,17 @@ struct Step final : rc::state::Command<Node, Implementation> {
 
   void apply(Node& model) const override { model.apply(command); }
 
-  void run(const Node& model, Implementation& sut) const override {
+  void run(const Node& /*rapidcheck_model*/, Implementation& sut) const override {
     CaseContext& c = *g_context;
     if (c.stop || c.abandoned || c.set_aside_case || c.deadline_hit || past_deadline()) return;
     c.trace.push_back(command);
+    // The step starts from the case's own model, not RapidCheck's: where the
+    // implementation made a choice the spec leaves open (which free id it
+    // picked), the model follows it (implementation_choice.h) and the rest
+    // of the case is still judged.
+    const Node before = c.model;
     Node after;
-    StepResult r = check_step(model, command, sut, &after);
+    StepResult r = check_step(before, command, sut, &after, /*follow_choices=*/true);
     c.model = after;
     for (auto& note : r.notes) {
       auto it = c.notes.find(note.clause);
@@ -138,7 +144,7 @@ struct Step final : rc::state::Command<Node, Implementation> {
     }
     if (!r.failure && !c.shrinking) {
       std::vector<std::string_view> decided;
-      exercised_clauses(model, command, r.expected, after, r.verdict_reported, &decided);
+      exercised_clauses(before, command, r.expected, after, r.verdict_reported, &decided);
       count_exercised(decided);
       CommandKindCount& k = (*c.kinds)[command_kind(command)];
       ++k.sent;
@@ -229,15 +235,7 @@ std::optional<Finding> run_capability_check(const CapabilityCheck& check, const 
 // A fresh node must look like the reference's fresh node.
 std::optional<Finding> check_fresh(Implementation& sut) {
   const Answer a = sut.reset();
-  if (a.status != CallStatus::Ok) {
-    Finding f;
-    f.clause = "STABLE-1";
-    f.status = a.status == CallStatus::Timeout ? FindingStatus::Timeout
-               : a.status == CallStatus::Crash ? FindingStatus::Crash
-                                               : FindingStatus::Fail;
-    f.message = std::string(call_status_name(a.status)) + " on reset: " + a.detail;
-    return f;
-  }
+  if (a.status != CallStatus::Ok) return call_failure("STABLE-1", a.status, "resetting to a fresh node", a.detail);
   auto f = check_state(Node{}, sut, "LAYER-BASE-1");
   if (f && f->message.find("crease") != std::string::npos) f->clause = "CREASE-INITIAL-1";
   return f;
@@ -258,7 +256,7 @@ std::string join(const std::set<std::string>& s) {
 
 PropertyOutcome run_property(const PropertySpec& spec, Implementation& sut, const RunOptions& o,
                              Clock::time_point deadline, RunProgress* progress, Clock::time_point run_start,
-                             RunResult* run, std::map<std::string, long>* exercised) {
+                             RunResult* run) {
   PropertyOutcome out;
   out.id = std::string(spec.id);
   out.seed = property_seed(o.seed, spec.id);
@@ -270,7 +268,7 @@ PropertyOutcome run_property(const PropertySpec& spec, Implementation& sut, cons
   ctx.tolerated = o.tolerated;
   ctx.baseline = o.tolerated;
   ctx.target = spec.capability.empty() ? o.cases : std::max(1, o.cases / 4);
-  ctx.exercised = exercised;
+  ctx.exercised = &out.exercised;
   ctx.kinds = &run->command_kinds;
   ctx.unreported = &run->unreported_verdicts;
   out.cases_target = ctx.target;
@@ -492,21 +490,15 @@ RunResult run_certification(Implementation& sut, const RunOptions& o) {
     const Answer a = sut.reset();
     std::optional<Finding> f;
     if (a.status != CallStatus::Ok) {
-      f = Finding{a.status == CallStatus::ProtocolError ? "ACCEPT-1" : "STABLE-1",
-                  a.status == CallStatus::Timeout ? FindingStatus::Timeout
-                  : a.status == CallStatus::Crash ? FindingStatus::Crash
-                                                  : FindingStatus::Fail,
-                  std::string(call_status_name(a.status)) + " on reset: " + a.detail};
+      f = call_failure("STABLE-1", a.status, "resetting to a fresh node", a.detail);
     } else {
       for (int doc = 0; doc < 2 && !f; ++doc) {
         const Document d = doc == 0 ? sut.snapshot() : sut.derived();
-        if (d.status == CallStatus::Ok) continue;
-        f = Finding{d.status == CallStatus::ProtocolError ? "ACCEPT-1" : "STABLE-1",
-                    d.status == CallStatus::Timeout ? FindingStatus::Timeout
-                    : d.status == CallStatus::Crash ? FindingStatus::Crash
-                                                    : FindingStatus::Fail,
-                    std::string(call_status_name(d.status)) + " while reading the " +
-                        (doc == 0 ? "snapshot" : "derived document") + " of a fresh node: " + d.detail};
+        if (d.status != CallStatus::Ok)
+          f = call_failure("STABLE-1", d.status,
+                           std::string("reading the ") + (doc == 0 ? "snapshot" : "derived document") +
+                               " of a fresh node",
+                           d.detail);
       }
     }
     run.preflight = f;
@@ -515,7 +507,6 @@ RunResult run_certification(Implementation& sut, const RunOptions& o) {
   const auto& props = property_catalog();
   std::vector<std::string> claimed;
   bool asked = false;
-  std::map<std::string, long> exercised;
   RunProgress progress;
   progress.property_count = static_cast<int>(props.size());
   for (std::size_t i = 0; i < props.size(); ++i) {
@@ -564,7 +555,7 @@ RunResult run_certification(Implementation& sut, const RunOptions& o) {
     progress.failures = 0;
     progress.cases_total = spec.capability.empty() ? o.cases : std::max(1, o.cases / 4);
     progress.shrinking = false;
-    run.properties.push_back(run_property(spec, sut, o, deadline, &progress, start, &run, &exercised));
+    run.properties.push_back(run_property(spec, sut, o, deadline, &progress, start, &run));
   }
 
   // Per clause: the findings of every property that ran, whoever declared it.
@@ -572,7 +563,8 @@ RunResult run_certification(Implementation& sut, const RunOptions& o) {
     ClauseOutcome co;
     co.clause = &clause;
     const std::string id(clause.id);
-    if (auto it = exercised.find(id); it != exercised.end()) co.exercised = it->second;
+    for (const PropertyOutcome& po : run.properties)
+      if (auto it = po.exercised.find(id); it != po.exercised.end()) co.exercised += it->second;
     bool declared_and_ran = false;
     std::string stopped_note, skip_note;
     for (std::size_t i = 0; i < props.size(); ++i) {
@@ -679,7 +671,7 @@ ReplayResult replay_program(const Program& program, Implementation& sut) {
   Node model;
   for (std::size_t i = 0; i < program.commands.size(); ++i) {
     Node after;
-    StepResult s = check_step(model, program.commands[i], sut, &after);
+    StepResult s = check_step(model, program.commands[i], sut, &after, /*follow_choices=*/true);
     for (auto& n : s.notes) r.notes.push_back(n);
     if (s.failure) {
       r.failure = s.failure;

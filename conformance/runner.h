@@ -108,6 +108,7 @@ struct PropertyOutcome {
   int rounds = 0;           // RapidCheck runs (1 + one per new finding)
   double seconds = 0;
   std::vector<PropertyFinding> findings;  // in the order found
+  std::map<std::string, long> exercised;  // clause id -> judged steps of this property that decided it
   std::vector<std::pair<Finding, Program>> notes;  // SHOULD-level findings, one per clause
 };
 

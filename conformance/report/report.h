@@ -35,6 +35,10 @@ std::string default_run_dir(const std::string& reports_root, const RunResult& ru
 std::string counterexample_path(const ClauseOutcome& co);
 // The one-line command that replays a counterexample file.
 std::string replay_command(const std::string& file, const std::string& implementation_spec);
+// "VGC_FAULT='a,b' " for every VGC_* variable of this process's environment
+// (sorted), so a printed command repeats the run with what the
+// implementation under test may read; empty when there is none.
+std::string vgc_environment_prefix();
 
 std::string render_counterexample(const ClauseOutcome& co, const ReportContext& ctx);
 std::string render_report_json(const RunResult& run, const Verdict& v, const ReportContext& ctx);

@@ -1,8 +1,12 @@
 // report_files.cpp — run directory naming, counterexample files, and the
 // whole-or-nothing write of a report (report.h).
+#include <unistd.h>
+
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <system_error>
+#include <vector>
 
 #include "command_text.h"
 #include "exec_implementation.h"  // shell_quote
@@ -53,8 +57,22 @@ std::string counterexample_path(const ClauseOutcome& co) {
   return "counterexamples/" + std::string(co.clause->id) + ".vgc";
 }
 
+std::string vgc_environment_prefix() {
+  std::vector<std::string> vars;
+  for (char** e = environ; e && *e; ++e) {
+    const std::string entry(*e);
+    const auto eq = entry.find('=');
+    if (entry.rfind("VGC_", 0) != 0 || eq == std::string::npos) continue;
+    vars.push_back(entry.substr(0, eq) + "=" + shell_quote(entry.substr(eq + 1)) + " ");
+  }
+  std::sort(vars.begin(), vars.end());
+  std::string out;
+  for (const auto& v : vars) out += v;
+  return out;
+}
+
 std::string replay_command(const std::string& file, const std::string& implementation_spec) {
-  return "./vgc replay " + shell_quote(file) + " --impl " + shell_quote(implementation_spec);
+  return vgc_environment_prefix() + "./vgc replay " + shell_quote(file) + " --impl " + shell_quote(implementation_spec);
 }
 
 std::string render_counterexample(const ClauseOutcome& co, const ReportContext& ctx) {

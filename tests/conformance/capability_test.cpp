@@ -280,7 +280,7 @@ TEST(Capability, ThePluginWithoutTheRequestSymbolClaimsNothing) {
 TEST(Capability, ExecAndIsolatedPluginRoutesCertifyTheReferenceWithAll) {
   OpenOptions o;
   o.vgc_binary = VGC_BINARY;
-  for (const std::string spec : {"exec:" + shell_quote(VGC_BINARY) + " serve",
+  for (const std::string& spec : {"exec:" + shell_quote(VGC_BINARY) + " serve",
                                  std::string("plugin:") + VGC_REFERENCE_PLUGIN}) {
     std::string error;
     auto impl = open_implementation(spec, o, &error);

@@ -4,6 +4,8 @@
 // in a child process, as a user's would.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <cstdlib>
 
 #include "faulty_implementation.h"
@@ -55,8 +57,17 @@ Outcome certify_fault(int fault) {
   // A SHOULD fault is caught without changing the verdict; every other
   // fault must make the implementation non-conformant.
   const Clause* clause = find_clause(info.expected_clause);
-  if (clause && clause->level == ClauseLevel::Should) out.killed = out.killed && v.name == "conformant";
-  else out.killed = out.killed && v.exit_code == 1;
+  // An IMPLEMENTATION-DEFINED fault is a profile difference: reported,
+  // gating only with --strict (a crash or a hang gates regardless).
+  if (clause && clause->level == ClauseLevel::Should) {
+    out.killed = out.killed && v.name == "conformant";
+  } else if (clause && clause->level == ClauseLevel::ImplementationDefined && info.expected_status == "fail") {
+    const auto& diffs = v.profile_differences;
+    out.killed = out.killed && std::find(diffs.begin(), diffs.end(), std::string(clause->id)) != diffs.end() &&
+                 judge(run, nullptr, /*strict=*/true).exit_code == 1;
+  } else {
+    out.killed = out.killed && v.exit_code == 1;
+  }
   return out;
 }
 

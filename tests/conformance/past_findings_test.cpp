@@ -14,10 +14,14 @@
 #include <fstream>
 #include <map>
 #include <set>
+#include <utility>
+#include <variant>
 
 #include "command_text.h"
+#include "exercised_clauses.h"
 #include "exec_implementation.h"
 #include "faulty_implementation.h"
+#include "property.h"
 #include "reference_implementation.h"
 #include "runner.h"
 #include "verdict.h"
@@ -89,7 +93,6 @@ TEST(PastFindings, FiveFaultsAreAllNamedEachWithItsOwnCounterexample) {
     ASSERT_TRUE(co->finding) << fault << " (" << clause << ") was not named; found: " << findings_of(run);
     EXPECT_EQ(co->status, "fail") << clause;
     EXPECT_FALSE(co->tolerated_from_start);
-    properties_that_found.insert(co->found_by);
     // Its counterexample shows this clause and no other: replayed against
     // the same five-fault implementation, the first divergence is it.
     faults::FaultyImplementation again(faults_of(kFiveFaults));
@@ -100,6 +103,12 @@ TEST(PastFindings, FiveFaultsAreAllNamedEachWithItsOwnCounterexample) {
     ReferenceImplementation reference;
     EXPECT_FALSE(replay_program(co->program, reference).failure) << clause;
   }
+  // Across at least three properties: each finding clause is found by a
+  // property of its own group (several properties may find the same one).
+  for (const auto& p : run.properties)
+    for (const auto& f : p.findings)
+      for (const auto& [fault, clause] : kClauseOf)
+        if (f.finding.clause == clause) properties_that_found.insert(p.id);
   EXPECT_GE(properties_that_found.size(), 3u);
   const Verdict v = judge(run, nullptr);
   EXPECT_EQ(v.name, "not-conformant");
@@ -218,6 +227,12 @@ TEST(PastFindings, AnImplementationThatCannotAnswerGetsNoPass) {
 // Certification of the reference, as `./vgc certify` runs it: every clause
 // `pass`, each exercised by judged steps; each command kind applied at
 // least 50 times.
+// Every command kind of the language, by its keyword.
+template <std::size_t... I>
+std::vector<std::string> all_kinds(std::index_sequence<I...>) {
+  return {command_kind(Command{std::in_place_index<I>})...};
+}
+
 TEST(PastFindings, TheReferencePassesEveryClauseWithANonzeroExercisedCount) {
   ReferenceImplementation reference;
   const RunResult run = run_certification(reference, defaults());
@@ -228,9 +243,26 @@ TEST(PastFindings, TheReferencePassesEveryClauseWithANonzeroExercisedCount) {
   EXPECT_TRUE(run.complete);
   EXPECT_TRUE(run.conformant);
   for (const auto& p : run.properties) {
+    // Each property exercises every clause it declares, so that a shard
+    // holding only this property can judge them (runner_test's shards).
+    const PropertySpec* spec = find_property(p.id);
+    ASSERT_NE(spec, nullptr);
+    for (auto clause : spec->clauses) {
+      const auto it = p.exercised.find(std::string(clause));
+      EXPECT_TRUE(it != p.exercised.end() && it->second > 0)
+          << p.id << " declares " << clause << " but no judged step of it exercised it";
+    }
     EXPECT_EQ(p.status, "pass") << p.id << ": " << p.note;
     EXPECT_EQ(p.cases, p.cases_target) << p.id;
     EXPECT_EQ(p.judged, p.cases) << p.id;
+  }
+  // Generator reach: a default run sends and applies every command kind at
+  // least 50 times (an implementation that drops one kind's writes would
+  // otherwise pass), and rejects it at least once where it can be rejected.
+  for (const std::string& kind : all_kinds(std::make_index_sequence<std::variant_size_v<Command>>{})) {
+    const auto it = run.command_kinds.find(kind);
+    ASSERT_NE(it, run.command_kinds.end()) << kind << " was never sent";
+    EXPECT_GE(it->second.applied, 50) << kind << ": sent " << it->second.sent;
   }
 }
 
