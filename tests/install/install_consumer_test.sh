@@ -38,7 +38,7 @@ check() {  # check DESCRIPTION COMMAND...: run it, report ok or FAIL
 # 1. The install.
 "$cmake" --install "$build" --prefix "$prefix" >"$tmp/install.log" 2>&1 ||
   { cat "$tmp/install.log"; echo "FAIL: cmake --install $build --prefix $prefix"; exit 1; }
-for f in bin/vgc include/vgc/vgc_plugin.h share/doc/vgc/README.md share/doc/vgc/docs/certify.md \
+for f in bin/vgc include/vgc/vgc_plugin.h share/doc/vgc/README.md share/doc/vgc/docs/certify.md share/doc/vgc/docs/ci.md \
   lib/cmake/vgc/vgcConfig.cmake lib/cmake/vgc/vgcConfigVersion.cmake lib/cmake/vgc/vgcTargets.cmake \
   lib/cmake/vgc/vgcCertification.cmake; do
   check "installed $f" test -f "$prefix/$f"
