@@ -20,6 +20,10 @@
 # plugin:$<TARGET_FILE:my_node>. A relative BASELINE is relative to
 # CMAKE_CURRENT_SOURCE_DIR. ENVIRONMENT sets the test's ENVIRONMENT property.
 
+if(CMAKE_VERSION VERSION_LESS 3.20)
+  message(FATAL_ERROR "vgcCertification.cmake needs CMake 3.20 or newer (cmake_path); this is ${CMAKE_VERSION}")
+endif()
+
 function(vgc_add_certification)
   cmake_parse_arguments(PARSE_ARGV 0 arg "STRICT" "NAME;IMPL;BASELINE;CLAUSES;CASES;SEED;TIMEOUT" "ENVIRONMENT")
   if(arg_UNPARSED_ARGUMENTS)
