@@ -1,10 +1,12 @@
 // vgc_main.cpp — the vgc command line. Each subcommand lives in its own
 // cmd_*.cpp and registers itself (subcommand.h); this file only runs them.
 #include <CLI/CLI.hpp>
+#include <fmt/core.h>
 
 #include <vector>
 
 #include "subcommand.h"
+#include "version.h"
 
 namespace vgc::cli {
 namespace {
@@ -25,6 +27,10 @@ void add_all_subcommands(CLI::App& app, int* exit_code) {
 int main(int argc, char** argv) {
   CLI::App app{"vgc: the Verse geometry conformance and fuzz suite"};
   app.require_subcommand(1);
+  // --version: the program, the clause catalog and the report format (version.h).
+  app.set_version_flag("--version", fmt::format("vgc {}\nclause catalog version {}\nreport format version {}",
+                                                vgc::kVgcVersion, vgc::kClauseCatalogVersion,
+                                                vgc::kReportFormatVersion));
   int exit_code = 0;
   vgc::cli::add_all_subcommands(app, &exit_code);
   try {
