@@ -17,6 +17,7 @@
 #include "command_text.h"
 #include "reference_implementation.h"
 #include "runner.h"
+#include "verdict.h"
 #include "snapshot.h"
 
 namespace vgc {
@@ -165,6 +166,18 @@ TEST(DoneAnswers, TheReferenceBehindDoneAnswersCertifiesWithNoClauseFailed) {
         << co.clause->id << " " << co.status << ": " << (co.finding ? co.finding->message : "");
   EXPECT_TRUE(run.conformant);
   EXPECT_TRUE(run.complete);
+  // Nothing reported a verdict, so reason codes cannot be judged: REASON-1
+  // is not-applicable (not failed, not unchecked); every other clause passes.
+  EXPECT_GT(run.unreported_verdicts, 0);
+  for (const ClauseOutcome& co : run.clauses) {
+    if (co.clause->id == "REASON-1") {
+      EXPECT_EQ(co.status, "not-applicable") << co.note;
+      EXPECT_EQ(co.exercised, 0);
+    } else if (co.status != "not-claimed") {
+      EXPECT_EQ(co.status, "pass") << co.clause->id << ": " << co.note;
+    }
+  }
+  EXPECT_EQ(judge(run, nullptr).name, "conformant");
 }
 
 TEST(DoneAnswers, ADoneImplementationThatDropsPolygonDeletesIsCaught) {
