@@ -275,4 +275,15 @@ std::string_view clause_for_derived(const Node& after, const DocumentDifference&
   return clause_for_derived(after, d.kind, bone_id);
 }
 
+long bone_id_of(const std::string& line) {
+  // "bone_pose <id> ..."
+  const auto sp = line.find(' ');
+  if (sp == std::string::npos) return -1;
+  try {
+    return std::stol(line.substr(sp + 1));
+  } catch (...) {
+    return -1;
+  }
+}
+
 }  // namespace vgc

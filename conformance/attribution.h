@@ -46,4 +46,7 @@ std::string_view clause_for_derived(const Node& after, std::string_view line_kin
 // that is a vertex reference makes a quad), not on a crease.
 std::string_view clause_for_derived(const Node& after, const DocumentDifference& d, long bone_id);
 
+// The bone id of a derived document's "bone_pose <id> ..." line, or -1.
+long bone_id_of(const std::string& line);
+
 }  // namespace vgc

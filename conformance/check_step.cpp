@@ -19,17 +19,6 @@ FindingStatus status_of(CallStatus s) {
   }
 }
 
-long bone_id_of(const std::string& line) {
-  // "bone_pose <id> ..."
-  const auto sp = line.find(' ');
-  if (sp == std::string::npos) return -1;
-  try {
-    return std::stol(line.substr(sp + 1));
-  } catch (...) {
-    return -1;
-  }
-}
-
 }  // namespace
 
 const char* finding_status_name(FindingStatus s) {

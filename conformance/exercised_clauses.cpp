@@ -49,16 +49,6 @@ std::vector<LineChange> changed_lines(const std::string& before, const std::stri
   return out;
 }
 
-long bone_of(const std::string& line) {
-  const auto sp = line.find(' ');
-  if (sp == std::string::npos) return -1;
-  try {
-    return std::stol(line.substr(sp + 1));
-  } catch (...) {
-    return -1;
-  }
-}
-
 }  // namespace
 
 void exercised_clauses(const Node& before, const Command& c, Reason expected, const Node& after,
@@ -79,7 +69,7 @@ void exercised_clauses(const Node& before, const Command& c, Reason expected, co
       if (ch.added || ch.removed) out->push_back(clause_for_snapshot(c, before, after, ch.kind, true));
     }
     for (const auto& ch : changed_lines(print_derived(before), print_derived(after)))
-      out->push_back(clause_for_derived(after, ch.kind, bone_of(ch.line)));
+      out->push_back(clause_for_derived(after, ch.kind, bone_id_of(ch.line)));
   }
   std::sort(out->begin() + static_cast<std::ptrdiff_t>(first), out->end());
   out->erase(std::unique(out->begin() + static_cast<std::ptrdiff_t>(first), out->end()), out->end());
