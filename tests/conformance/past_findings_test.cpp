@@ -184,6 +184,54 @@ TEST(PastFindings, AStaleBaselineEntryIsReported) {
   EXPECT_EQ(v.name, "conformant");
 }
 
+// The reference, but its snapshot names one layer wrong from the start: the
+// fresh-node check diverges in every case. After that first finding every
+// case is set aside, so each property stops, and what it declares is
+// unchecked — never pass.
+class WrongFreshNode final : public Implementation {
+ public:
+  std::string name() const override { return "wrong-fresh-node"; }
+  Answer reset() override { return inner_.reset(); }
+  Answer apply(const Command& c) override { return inner_.apply(c); }
+  Document snapshot() override {
+    Document d = inner_.snapshot();
+    const auto at = d.text.find("\"vertex\"");
+    if (at != std::string::npos) d.text.replace(at, 8, "\"vertices\"");
+    return d;
+  }
+  Document derived() override { return inner_.derived(); }
+
+ private:
+  ReferenceImplementation inner_;
+};
+
+TEST(PastFindings, APropertyWhoseCasesAreMostlySetAsideStopsAndItsClausesAreUnchecked) {
+  WrongFreshNode impl;
+  RunOptions o = defaults();
+  o.cases = 60;
+  const RunResult run = run_certification(impl, o);
+  const ClauseOutcome* base = clause_in(run, "LAYER-BASE-1");
+  ASSERT_TRUE(base && base->finding) << findings_of(run);
+  int stopped = 0;
+  for (const auto& p : run.properties) {
+    if (p.status == "skipped") continue;
+    EXPECT_EQ(p.status, "stopped") << p.id;
+    EXPECT_NE(p.note.find("set aside"), std::string::npos) << p.id << ": " << p.note;
+    EXPECT_EQ(p.judged, 0) << p.id;
+    EXPECT_LT(p.cases, p.cases_target) << p.id;
+    ++stopped;
+  }
+  EXPECT_GE(stopped, 7);
+  for (const auto& co : run.clauses) {
+    EXPECT_NE(co.status, "pass") << co.clause->id;
+    if (!co.finding && co.status != "not-claimed") {
+      EXPECT_EQ(co.status, "unchecked") << co.clause->id;
+    }
+  }
+  EXPECT_FALSE(run.complete);
+  EXPECT_EQ(judge(run, nullptr).name, "not-conformant");
+}
+
 // An exec program that answers ?hello and then one answer far over the
 // answer limit, then sleeps: nothing can be judged, and nothing passes.
 TEST(PastFindings, AnImplementationThatCannotAnswerGetsNoPass) {
