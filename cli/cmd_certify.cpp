@@ -116,6 +116,18 @@ int run(const Options& o) {
                             p.set_aside ? fmt::format(", {} set aside", p.set_aside) : "",
                             p.shrinking ? "  shrinking a failure" : "", p.elapsed_seconds));
   };
+  // One permanent line per property as it finishes (in a CI log the only
+  // sign of progress besides a status line every 10 s).
+  ro.property_done = [&line, &o](const PropertyOutcome& p, const RunProgress& at) {
+    if (o.quiet) return;
+    line.finish();
+    std::string found;
+    for (const auto& f : p.findings) found += (found.empty() ? "" : ", ") + f.finding.clause;
+    fmt::print(stderr, "[{}/{}] {:<20} {:<8} {}/{} cases ({} judged, {} set aside){}  {:.1f} s\n",
+               at.property_index + 1, at.property_count, p.id, p.status, p.cases, p.cases_target, p.judged,
+               p.set_aside, found.empty() ? "" : "; found " + found, at.elapsed_seconds);
+    if (!p.note.empty() && p.status != "pass") fmt::print(stderr, "      {}\n", p.note);
+  };
   register_oracle_checks();  // the oracles judge the optional capabilities
   const RunResult result = run_certification(*sut, ro);
   line.finish();

@@ -26,7 +26,10 @@ void ProgressLine::update(const std::string& text, bool force) {
 }
 
 void ProgressLine::finish() {
-  if (enabled_ && tty_ && drawn_) fmt::print(stderr, "\r\033[K");
+  // A log keeps its rate limit across finish(): a permanent line printed in
+  // between is no reason for another status line.
+  if (!tty_) return;
+  if (enabled_ && drawn_) fmt::print(stderr, "\r\033[K");
   drawn_ = false;
 }
 

@@ -556,6 +556,10 @@ RunResult run_certification(Implementation& sut, const RunOptions& o) {
     progress.cases_total = spec.capability.empty() ? o.cases : std::max(1, o.cases / 4);
     progress.shrinking = false;
     run.properties.push_back(run_property(spec, sut, o, deadline, &progress, start, &run));
+    if (o.property_done) {
+      progress.elapsed_seconds = std::chrono::duration<double>(Clock::now() - start).count();
+      o.property_done(run.properties.back(), progress);
+    }
   }
 
   // Per clause: the findings of every property that ran, whoever declared it.

@@ -47,6 +47,8 @@ struct RunProgress {
   double elapsed_seconds = 0;
 };
 
+struct PropertyOutcome;
+
 struct RunOptions {
   std::uint64_t seed = 1;
   int cases = 100;               // cases per property
@@ -60,6 +62,9 @@ struct RunOptions {
   // of the catalog is judged in full.
   std::set<std::string> tolerated;
   std::function<void(const RunProgress&)> progress;  // called often; may be empty
+  // Called once per property that ran, when it has finished (a log line per
+  // property for CI); may be empty.
+  std::function<void(const PropertyOutcome&, const RunProgress&)> property_done;
 };
 
 // A check of an optional capability (capability.h) to repeat after a

@@ -119,6 +119,25 @@ TEST_F(Cli, CertifyTheReferenceInProcess) {
   EXPECT_EQ(j.at("clauses").size(), clause_catalog().size());
 }
 
+// Without --quiet, in a log (stderr not a terminal): one line per property
+// that ran, as it finishes, with its status and cases.
+TEST_F(Cli, CertifyLogsOneLinePerProperty) {
+  const Result r = vgc("certify --impl reference --reports rep --cases 30 --max-size 30 --seed 3");
+  ASSERT_EQ(r.exit_code, 0) << context(r);
+  for (const auto& p : property_catalog()) {
+    const std::regex line("\\[[0-9]+/[0-9]+\\] " + std::string(p.id) + " +pass +[0-9]+/[0-9]+ cases \\([0-9]+ judged, 0 set aside\\)");
+    EXPECT_TRUE(std::regex_search(r.err, line)) << p.id << " has no line in\n" << r.err;
+  }
+  EXPECT_EQ(r.err.find("\033["), std::string::npos) << "terminal control codes in a log";
+  // A run this short prints one status line at the start, then only the
+  // per-property lines (status lines come at most every 10 s in a log).
+  std::istringstream lines(r.err);
+  std::string l;
+  int bracketed = 0;
+  while (std::getline(lines, l)) bracketed += l.rfind("[", 0) == 0;
+  EXPECT_LE(bracketed, static_cast<int>(property_catalog().size()) + 1) << r.err;
+}
+
 TEST_F(Cli, CertifyTheReferenceThroughExec) {
   const Result r = vgc("certify --impl " + shell_quote("exec:" + serve()) + " --reports rep" + kFast);
   ASSERT_EQ(r.exit_code, 0) << context(r);
