@@ -16,6 +16,7 @@
 #include "check_step.h"
 #include "command_text.h"
 #include "reference_implementation.h"
+#include "reference_wrapper.h"
 
 namespace vgc {
 namespace {
@@ -29,7 +30,7 @@ Command parse(const std::string& line) {
 }
 
 // The reference, except as the two hooks say.
-class OneFault final : public Implementation {
+class OneFault final : public test::ReferenceWrapper {
  public:
   // refuse(c): answer "rejected BAD_NAME" to c instead of applying it.
   std::function<bool(const Command&)> refuse = [](const Command&) { return false; };
@@ -40,24 +41,20 @@ class OneFault final : public Implementation {
   std::function<std::string(const std::string&)> edit_snapshot = [](const std::string& t) { return t; };
 
   std::string name() const override { return "one-fault"; }
-  Answer reset() override { return ref_.reset(); }
   Answer apply(const Command& c) override {
     if (refuse(c)) return Answer{CallStatus::Ok, false, "BAD_NAME", "", false};
-    return ref_.apply(c);
+    return inner_.apply(c);
   }
   Document snapshot() override {
-    Document d = ref_.snapshot();
+    Document d = inner_.snapshot();
     d.text = edit_snapshot(d.text);
     return d;
   }
   Document derived() override {
-    Document d = ref_.derived();
-    d.text = edit_derived(ref_.node(), d.text);
+    Document d = inner_.derived();
+    d.text = edit_derived(inner_.node(), d.text);
     return d;
   }
-
- private:
-  ReferenceImplementation ref_;
 };
 
 // Runs `lines` through check_step; returns the first failure's clause ("" if none).

@@ -16,6 +16,7 @@
 #include "check_step.h"
 #include "command_text.h"
 #include "reference_implementation.h"
+#include "reference_wrapper.h"
 #include "runner.h"
 #include "verdict.h"
 #include "snapshot.h"
@@ -28,11 +29,10 @@ namespace {
 // drops every polygon delete (polygon_delete, and its wire alias
 // polygon_set_corner_uint32 on layer 1 with v0 = 0xFFFFFFFF) and still
 // answers done: a fault that nothing but the state shows.
-class DoneAnswers final : public Implementation {
+class DoneAnswers final : public test::ReferenceWrapper {
  public:
   explicit DoneAnswers(bool drop_polygon_deletes = false) : drop_(drop_polygon_deletes) {}
   std::string name() const override { return drop_ ? "done:drop-polygon-deletes" : "done:reference"; }
-  Answer reset() override { return inner_.reset(); }
   Answer apply(const Command& c) override {
     Answer a;
     if (drop_ && is_polygon_delete(c)) {
@@ -47,8 +47,6 @@ class DoneAnswers final : public Implementation {
     }
     return a;
   }
-  Document snapshot() override { return inner_.snapshot(); }
-  Document derived() override { return inner_.derived(); }
   Document request(const std::string& line) override { return inner_.request(line); }
 
  private:
@@ -58,7 +56,6 @@ class DoneAnswers final : public Implementation {
     return x && x->layer_id == Node::kPolygonLayer && x->v[0] == kNone32;
   }
   bool drop_;
-  ReferenceImplementation inner_;
 };
 
 Command C(const std::string& line) {
@@ -118,10 +115,9 @@ TEST(DoneAnswers, AnApplyTheStateDoesNotShowIsTheAcceptanceClause) {
 
 // An implementation that answers done and changes the state on a command
 // the reference rejects: the rejection clause, as for an `ok` answer.
-class DoneButAppliesRejected final : public Implementation {
+class DoneButAppliesRejected final : public test::ReferenceWrapper {
  public:
   std::string name() const override { return "done:applies-rejected"; }
-  Answer reset() override { return inner_.reset(); }
   Answer apply(const Command& c) override {
     Answer a;
     a.verdict_reported = false;
@@ -132,11 +128,6 @@ class DoneButAppliesRejected final : public Implementation {
     inner_.apply(c);
     return a;
   }
-  Document snapshot() override { return inner_.snapshot(); }
-  Document derived() override { return inner_.derived(); }
-
- private:
-  ReferenceImplementation inner_;
 };
 
 TEST(DoneAnswers, AChangeOnACommandTheReferenceRejectsIsTheRejectionClause) {

@@ -13,6 +13,7 @@
 #include "command_text.h"
 #include "implementation_choice.h"
 #include "reference_implementation.h"
+#include "reference_wrapper.h"
 #include "runner.h"
 #include "snapshot.h"
 
@@ -86,10 +87,9 @@ TEST(ImplementationChoice, AnythingElseIsNotAChoice) {
 
 // The reference, except that every layer, vertex and polygon id it is asked
 // to pick is the highest free one instead of the lowest: within the spec.
-class PicksHighest final : public Implementation {
+class PicksHighest final : public test::ReferenceWrapper {
  public:
   std::string name() const override { return "picks-highest"; }
-  Answer reset() override { return inner_.reset(); }
   Answer apply(const Command& c) override {
     const Node& n = inner_.node();
     Command x = c;
@@ -111,11 +111,6 @@ class PicksHighest final : public Implementation {
     }
     return inner_.apply(x);
   }
-  Document snapshot() override { return inner_.snapshot(); }
-  Document derived() override { return inner_.derived(); }
-
- private:
-  ReferenceImplementation inner_;
 };
 
 TEST(ImplementationChoice, LaterCommandsOnThePickedIdAgree) {

@@ -23,6 +23,7 @@
 #include "faulty_implementation.h"
 #include "property.h"
 #include "reference_implementation.h"
+#include "reference_wrapper.h"
 #include "runner.h"
 #include "verdict.h"
 
@@ -188,21 +189,15 @@ TEST(PastFindings, AStaleBaselineEntryIsReported) {
 // fresh-node check diverges in every case. After that first finding every
 // case is set aside, so each property stops, and what it declares is
 // unchecked — never pass.
-class WrongFreshNode final : public Implementation {
+class WrongFreshNode final : public test::ReferenceWrapper {
  public:
   std::string name() const override { return "wrong-fresh-node"; }
-  Answer reset() override { return inner_.reset(); }
-  Answer apply(const Command& c) override { return inner_.apply(c); }
   Document snapshot() override {
     Document d = inner_.snapshot();
     const auto at = d.text.find("\"vertex\"");
     if (at != std::string::npos) d.text.replace(at, 8, "\"vertices\"");
     return d;
   }
-  Document derived() override { return inner_.derived(); }
-
- private:
-  ReferenceImplementation inner_;
 };
 
 TEST(PastFindings, APropertyWhoseCasesAreMostlySetAsideStopsAndItsClausesAreUnchecked) {

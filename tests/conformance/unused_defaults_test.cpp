@@ -12,6 +12,7 @@
 
 #include "document_diff.h"
 #include "reference_implementation.h"
+#include "reference_wrapper.h"
 #include "runner.h"
 
 namespace vgc {
@@ -20,12 +21,10 @@ namespace {
 // The reference, with its snapshot's layer lines rewritten: an unused
 // default ("-") printed as `unused`; with wrong_used, a used def_uint
 // printed one higher.
-class RewrittenDefaults final : public Implementation {
+class RewrittenDefaults final : public test::ReferenceWrapper {
  public:
   RewrittenDefaults(std::string unused, bool wrong_used) : unused_(std::move(unused)), wrong_used_(wrong_used) {}
   std::string name() const override { return "rewritten-defaults"; }
-  Answer reset() override { return inner_.reset(); }
-  Answer apply(const Command& c) override { return inner_.apply(c); }
   Document snapshot() override {
     Document d = inner_.snapshot();
     std::string out;
@@ -33,7 +32,6 @@ class RewrittenDefaults final : public Implementation {
     d.text = out;
     return d;
   }
-  Document derived() override { return inner_.derived(); }
 
  private:
   std::string rewrite(const std::string& line) const {
@@ -51,7 +49,6 @@ class RewrittenDefaults final : public Implementation {
   }
   std::string unused_;
   bool wrong_used_;
-  ReferenceImplementation inner_;
 };
 
 RunOptions options() {
