@@ -17,17 +17,10 @@
 #include "command_text.h"
 #include "reference_implementation.h"
 #include "reference_wrapper.h"
+#include "../reference/test_util.h"  // test::C, one command from its text
 
 namespace vgc {
 namespace {
-
-Command parse(const std::string& line) {
-  Command c;
-  bool blank = false;
-  TextError e;
-  EXPECT_TRUE(parse_command_line(line, 1, &c, &blank, &e)) << line << ": " << e.to_string();
-  return c;
-}
 
 // The reference, except as the two hooks say.
 class OneFault final : public test::ReferenceWrapper {
@@ -63,7 +56,7 @@ std::string first_failure(Implementation& sut, const std::vector<std::string>& l
   Node model;
   for (const auto& line : lines) {
     Node after;
-    const StepResult r = check_step(model, parse(line), sut, &after);
+    const StepResult r = check_step(model, test::C(line), sut, &after);
     if (r.failure) {
       *message = r.failure->message;
       return r.failure->clause;

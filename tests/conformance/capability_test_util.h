@@ -11,22 +11,16 @@
 #include "implementation.h"
 #include "property.h"
 #include "reference_implementation.h"
+#include "reference_wrapper.h"
 
 namespace vgc::test {
 
 // The reference with the default Implementation::request ("not
 // supported"): an implementation that predates the requests, so it claims
 // no optional capability.
-class ReferenceClaimingNothing final : public Implementation {
+class ReferenceClaimingNothing final : public ReferenceWrapper {
  public:
   std::string name() const override { return "claims-nothing"; }
-  Answer reset() override { return ref_.reset(); }
-  Answer apply(const Command& c) override { return ref_.apply(c); }
-  Document snapshot() override { return ref_.snapshot(); }
-  Document derived() override { return ref_.derived(); }
-
- private:
-  ReferenceImplementation ref_;
 };
 
 // The capability names the catalog's properties declare, sorted.

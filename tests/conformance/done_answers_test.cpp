@@ -17,12 +17,15 @@
 #include "command_text.h"
 #include "reference_implementation.h"
 #include "reference_wrapper.h"
+#include "../reference/test_util.h"  // test::C, one command from its text
 #include "runner.h"
 #include "verdict.h"
 #include "snapshot.h"
 
 namespace vgc {
 namespace {
+
+using test::C;
 
 // An implementation behind `done` answers: every ok / rejected answer of
 // `inner` is reported as done. With drop_polygon_deletes it also silently
@@ -57,14 +60,6 @@ class DoneAnswers final : public test::ReferenceWrapper {
   }
   bool drop_;
 };
-
-Command C(const std::string& line) {
-  Command c;
-  bool blank = false;
-  TextError e;
-  EXPECT_TRUE(parse_command_line(line, 1, &c, &blank, &e)) << e.to_string();
-  return c;
-}
 
 // Runs `lines` through check_step from a fresh node; the first failure.
 StepResult run_steps(Implementation& sut, const std::vector<std::string>& lines) {

@@ -14,19 +14,14 @@
 #include "implementation_choice.h"
 #include "reference_implementation.h"
 #include "reference_wrapper.h"
+#include "../reference/test_util.h"  // test::C, one command from its text
 #include "runner.h"
 #include "snapshot.h"
 
 namespace vgc {
 namespace {
 
-Command C(const std::string& line) {
-  Command c;
-  bool blank = false;
-  TextError e;
-  EXPECT_TRUE(parse_command_line(line, 1, &c, &blank, &e)) << e.to_string();
-  return c;
-}
+using test::C;
 
 Node state(const std::vector<std::string>& lines) {
   Node n;
