@@ -373,6 +373,15 @@ FindingPicture picture_of_finding(const ClauseOutcome& co) {
                     !pic.highlight_edges.empty() || !pic.observed_marks.empty() || !pic.observed_outlines.empty() ||
                     !pic.divergent_expected.empty() || !pic.divergent_observed.empty() ||
                     !pic.observed_segments.empty() || !pic.expected_segments.empty();
+  // Shrinking often leaves every vertex at one point: say so, or the
+  // picture (one dot) would look broken.
+  bool one_point = out.mesh.vertex_count() > 1;
+  for (const auto& p : out.mesh.positions) one_point = one_point && p == out.mesh.positions.front();
+  if (one_point) {
+    const auto& p = out.mesh.positions.front();
+    what += " All " + std::to_string(out.mesh.vertex_count()) + " vertices are at one point (" + format_f64(p[0]) +
+            ", " + format_f64(p[1]) + ", " + format_f64(p[2]) + "), so the drawing shows a single point.";
+  }
   out.caption = "The final state of the counterexample (the reference's, after its " +
                 std::to_string(co.program.commands.size()) + " commands): " + std::to_string(out.mesh.vertex_count()) +
                 " vertices, " + std::to_string(out.mesh.face_count()) + " polygons, labelled with their ids. " +

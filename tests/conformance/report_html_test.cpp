@@ -288,6 +288,21 @@ TEST(FindingPicture, AMovedVertexIsHighlightedAndItsObservedPlaceMarked) {
   EXPECT_EQ(fp.picture.observed_marks[0], (Point3{2, 2, 4}));
 }
 
+TEST(FindingPicture, VerticesAllAtOnePointAreSaidToBe) {
+  ClauseOutcome co;
+  co.clause = find_clause("POLY-DELETE-1");
+  TextError e;
+  ASSERT_TRUE(parse_commands("vertex_set_xyz_real32 0 0 -4 -4 -4\nvertex_set_xyz_real32 0 1 -4 -4 -4\n", &co.program.commands,
+                             &e));
+  co.finding = Finding{"POLY-DELETE-1", FindingStatus::Fail, "x"};
+  EXPECT_NE(picture_of_finding(co).caption.find("All 2 vertices are at one point (-4, -4, -4)"), std::string::npos)
+      << picture_of_finding(co).caption;
+  std::vector<Command> more;
+  ASSERT_TRUE(parse_commands("vertex_set_xyz_real32 0 2 -4 -4 -3\n", &more, &e));
+  co.program.commands.push_back(more.front());  // a third vertex elsewhere
+  EXPECT_EQ(picture_of_finding(co).caption.find("at one point"), std::string::npos);
+}
+
 // The page's <body> as XML (the page is HTML5; its body is written as
 // well-formed XML by pugixml).
 pugi::xml_document page_body(const std::string& html) {
