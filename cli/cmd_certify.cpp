@@ -14,6 +14,7 @@
 #include "exec_implementation.h"  // shell_quote
 #include "implementation.h"
 #include "open_impl.h"
+#include "program_command.h"
 #include "progress_line.h"
 #include "report.h"
 #include "runner.h"
@@ -58,7 +59,7 @@ bool parse_shard(const std::string& s, int* index, int* count) {
 }
 
 std::string rerun_command(const Options& o) {
-  std::string c = vgc_environment_prefix() + "./vgc certify --impl " + shell_quote(o.impl) + " --seed " +
+  std::string c = vgc_environment_prefix() + program_command() + " certify --impl " + shell_quote(o.impl) + " --seed " +
                   std::to_string(o.seed) + " --cases " + std::to_string(o.cases) + " --budget " +
                   fmt::format("{:g}", o.budget);
   if (o.max_size != 50) c += " --max-size " + std::to_string(o.max_size);

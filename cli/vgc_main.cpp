@@ -3,8 +3,12 @@
 #include <CLI/CLI.hpp>
 #include <fmt/core.h>
 
+#include <cstdlib>
+#include <filesystem>
+#include <system_error>
 #include <vector>
 
+#include "program_command.h"
 #include "subcommand.h"
 #include "version.h"
 
@@ -31,6 +35,12 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", fmt::format("vgc {}\nclause catalog version {}\nreport format version {}",
                                                 vgc::kVgcVersion, vgc::kClauseCatalogVersion,
                                                 vgc::kReportFormatVersion));
+  // Printed replay and re-run lines name this program as a shell can run it
+  // where it is installed (program_command.h).
+  std::error_code ec;
+  const auto self = std::filesystem::read_symlink("/proc/self/exe", ec);
+  const char* path = std::getenv("PATH");
+  if (!ec) vgc::set_program_command(vgc::program_command_for(self.string(), path ? path : ""));
   int exit_code = 0;
   vgc::cli::add_all_subcommands(app, &exit_code);
   try {

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "clause.h"
+#include "program_command.h"
 
 namespace vgc {
 
@@ -25,7 +26,7 @@ bool parse_baseline(const std::string& text, Baseline* out, std::string* error) 
       if (r != std::string::npos) reason = line.substr(r);
     }
     if (!find_clause(id)) {
-      *error = std::to_string(number) + ": unknown clause id '" + id + "' (see ./vgc clauses)";
+      *error = std::to_string(number) + ": unknown clause id '" + id + "' (see " + program_command() + " clauses)";
       return false;
     }
     if (reason.empty()) {

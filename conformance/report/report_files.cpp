@@ -12,6 +12,7 @@
 #include "exec_implementation.h"  // shell_quote
 #include "finding_picture.h"
 #include "obj_writer.h"
+#include "program_command.h"
 #include "program_text.h"
 #include "report.h"
 
@@ -74,7 +75,7 @@ std::string vgc_environment_prefix() {
 }
 
 std::string replay_command(const std::string& file, const std::string& implementation_spec) {
-  return vgc_environment_prefix() + "./vgc replay " + shell_quote(file) + " --impl " + shell_quote(implementation_spec);
+  return vgc_environment_prefix() + program_command() + " replay " + shell_quote(file) + " --impl " + shell_quote(implementation_spec);
 }
 
 std::string render_counterexample(const ClauseOutcome& co, const ReportContext& ctx) {

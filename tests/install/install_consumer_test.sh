@@ -12,8 +12,13 @@
 # process and as a plugin named through a generator expression, --strict,
 # a baseline that tolerates a known fault), and fail for the fault plugin
 # with VGC_FAULT=base-layer-destroyable (naming LAYER-BASE-2) and for a
-# missing plugin (exit 2, vgc's own message in the output). Temporary
-# directories are removed on exit.
+# missing plugin (exit 2, vgc's own message in the output). Then
+# examples/c_host (a C node with its own CMakeLists.txt) is copied out of
+# SOURCE_DIR and built against the same prefix alone: its ctest must pass,
+# and built with -DC_HOST_FAULT=UNROTATED_CHILDREN fail naming
+# BONE-DOWNSTREAM-1, with a replay line that names the installed vgc and,
+# run as printed, shows the failure again. Temporary directories are
+# removed on exit.
 set -euo pipefail
 
 [ $# -ge 5 ] || { echo "usage: $0 BUILD_DIR SOURCE_DIR VERSION REFERENCE_PLUGIN FAULT_PLUGIN [CMAKE [CTEST]]" >&2; exit 2; }
@@ -139,6 +144,74 @@ run_ctest "$tmp/missing.log" '^missing_plugin$' || rc=$?
 check "ctest fails a missing plugin (vgc exit 2)" test $rc -ne 0
 check "its output holds vgc's message" grep -q "vgc certify: plugin:.*no_such_plugin.so: cannot start it" "$tmp/missing.log"
 [ $rc -ne 0 ] || cat "$tmp/missing.log"
+
+# 4. examples/c_host, a C node with its own CMake project, built from a copy
+# (so nothing can reach into the vgc tree) against the prefix alone; its
+# ctest must pass, and with its seeded fault fail naming the clause, with a
+# replay line that runs the installed vgc as printed.
+mkdir "$tmp/c_host"
+cp "$source/examples/c_host/"*.[ch] "$source/examples/c_host/CMakeLists.txt" "$tmp/c_host/"
+build_example() {  # build_example DIR [CMAKE ARGS...]: configure and build it, output to DIR.log
+  local dir=$1
+  shift
+  "$cmake" -S "$tmp/c_host" -B "$dir" -DCMAKE_PREFIX_PATH="$prefix" -DCMAKE_BUILD_TYPE=RelWithDebInfo "$@" \
+    >"$dir.log" 2>&1 && "$cmake" --build "$dir" >>"$dir.log" 2>&1
+}
+runs_program() {  # runs_program LINE PROGRAM: LINE is [VGC_*='...' ...] PROGRAM replay ... (the environment's VGC_* repeated)
+  printf '%s\n' "$1" | grep -qE "^([A-Z0-9_]+='[^']*' )*$2 replay "
+}
+run_example_ctest() {  # run_example_ctest DIR LOG: its ctest, output to LOG, returns ctest's status
+  local rc=0
+  (cd "$1" && "$ctest" --output-on-failure) >"$2" 2>&1 || rc=$?
+  return $rc
+}
+example=$tmp/c_host_build
+if build_example "$example"; then
+  echo "ok: examples/c_host configures and builds against $prefix"
+  check "examples/c_host found the installed package" grep -qx "vgc_DIR:PATH=$prefix/lib/cmake/vgc" "$example/CMakeCache.txt"
+  check "examples/c_host runs the installed vgc" grep -qF "$prefix/bin/vgc" "$example/CTestTestfile.cmake"
+  rc=0
+  run_example_ctest "$example" "$tmp/c_host.log" || rc=$?
+  check "examples/c_host: ctest passes (exit $rc)" test $rc -eq 0
+  # every clause pass but the five optional capabilities it does not claim
+  check "examples/c_host: its summary.md says CONFORMANT, every clause pass or not-claimed" bash -c \
+    "grep -q -- '— CONFORMANT\$' '$example'/vgc_reports/c_host_conformance/*/*/summary.md &&
+     grep -Eqx '[0-9]+ clauses: [0-9]+ pass, 5 not-claimed\..*' '$example'/vgc_reports/c_host_conformance/*/*/summary.md"
+  [ $rc -eq 0 ] || cat "$tmp/c_host.log"
+else
+  cat "$example.log"
+  echo "FAIL: examples/c_host does not configure and build against $prefix"
+  failures=$((failures + 1))
+fi
+
+# The same build directory, reconfigured with the fault (a configure that
+# reuses its cache is quicker than a new one).
+if build_example "$example" -DC_HOST_FAULT=UNROTATED_CHILDREN; then
+  rc=0
+  run_example_ctest "$example" "$tmp/c_host_fault.log" || rc=$?
+  check "examples/c_host with C_HOST_FAULT=UNROTATED_CHILDREN: ctest fails" test $rc -ne 0
+  check "its output names BONE-DOWNSTREAM-1 failing" grep -q "fail *BONE-DOWNSTREAM-1" "$tmp/c_host_fault.log"
+  check "its output gives the verdict" grep -q ": not-conformant (" "$tmp/c_host_fault.log"
+  # The replay line names the installed program by its path (it is not on
+  # PATH here); run it as printed: it shows the failure again (exit 1).
+  replay_line=$(grep -m1 "replay: " "$tmp/c_host_fault.log" | sed 's/^.*replay: //') || true
+  check "the replay line runs $prefix/bin/vgc" runs_program "$replay_line" "$prefix/bin/vgc"
+  rc=0
+  (cd / && eval "$replay_line") >"$tmp/c_host_replay.log" 2>&1 || rc=$?
+  check "the replay line, run as printed from /, reproduces the failure (exit $rc)" test $rc -eq 1
+  check "the replay names BONE-DOWNSTREAM-1" grep -q "BONE-DOWNSTREAM-1" "$tmp/c_host_replay.log"
+  [ $rc -eq 1 ] || { echo "replay line: $replay_line"; cat "$tmp/c_host_fault.log" "$tmp/c_host_replay.log"; }
+else
+  cat "$example.log"
+  echo "FAIL: examples/c_host with C_HOST_FAULT=UNROTATED_CHILDREN does not build against $prefix"
+  failures=$((failures + 1))
+fi
+rc=0
+"$cmake" -S "$tmp/c_host" -B "$example" -DC_HOST_FAULT=NO_SUCH_FAULT \
+  >"$tmp/c_host_bad_fault.log" 2>&1 || rc=$?
+check "an unknown C_HOST_FAULT stops the configure naming the faults" \
+  bash -c "[ $rc -ne 0 ] && grep -q 'C_HOST_FAULT=NO_SUCH_FAULT is no seeded fault' '$tmp/c_host_bad_fault.log' &&
+           grep -q 'UNROTATED_CHILDREN' '$tmp/c_host_bad_fault.log'"
 
 if [ $failures -ne 0 ]; then
   echo "$failures check(s) failed"
