@@ -116,7 +116,8 @@ struct RunResult {
 // passes; then SIGTERM to the whole group, SIGKILL 2 s later.
 RunResult run_streaming(const std::vector<std::string>& argv, const std::vector<std::string>& env_add,
                         std::chrono::steady_clock::time_point deadline,
-                        const std::function<void(const std::string&)>& on_line) {
+                        const std::function<void(const std::string&)>& on_line,
+                        const std::function<bool()>& stop_now) {
   RunResult result;
   int fds[2];
   if (pipe(fds) != 0) return result;
@@ -141,8 +142,8 @@ RunResult run_streaming(const std::vector<std::string>& argv, const std::vector<
   std::string pending;
   char buf[4096];
   bool open = true;
-  auto kill_group = [&] {
-    result.killed = true;
+  auto kill_group = [&](bool late) {
+    result.killed = late;
     kill(-pid, SIGTERM);
     const auto hard = std::chrono::steady_clock::now() + std::chrono::seconds(2);
     while (std::chrono::steady_clock::now() < hard) {
@@ -155,11 +156,14 @@ RunResult run_streaming(const std::vector<std::string>& argv, const std::vector<
     kill(-pid, SIGKILL);
     return false;
   };
-  bool reaped = false;
+  bool reaped = false, stopped = false;
   while (open) {
     const auto now = std::chrono::steady_clock::now();
-    if (now >= deadline) {
-      reaped = kill_group();
+    const bool late = now >= deadline;
+    if (late || (stop_now && stop_now())) {
+      reaped = kill_group(late);
+      if (!late) reaped = reaped || waitpid(pid, nullptr, 0) == pid;
+      stopped = !late;
       break;
     }
     const int ms = static_cast<int>(
@@ -190,14 +194,14 @@ RunResult run_streaming(const std::vector<std::string>& argv, const std::vector<
       const pid_t w = waitpid(pid, &status, WNOHANG);
       if (w == pid) break;
       if (std::chrono::steady_clock::now() >= deadline) {
-        kill_group();
+        kill_group(true);
         waitpid(pid, &status, 0);
         break;
       }
       usleep(50 * 1000);
     }
   }
-  if (reaped || result.killed) {
+  if (reaped || result.killed || stopped) {
     result.exit = 128 + SIGTERM;
     return result;
   }
@@ -375,7 +379,7 @@ int run_campaign(const CampaignOptions& o, CampaignSummary* out) {
     }
   }
   const std::string target = "fuzz_" + name;
-  const fs::path src = source_dir(o);
+  const fs::path src = fs::absolute(source_dir(o));
   const fs::path fbuild = fuzz_build_dir(o);
   const fs::path binary = fbuild / "fuzz" / target;
   if (!fs::exists(binary)) {
@@ -444,14 +448,25 @@ int run_campaign(const CampaignOptions& o, CampaignSummary* out) {
       }
   const fs::path dict = src / "corpora" / "fuzz" / (target + ".dict");
 
+  // One job stopping at the first finding runs libFuzzer in its plain
+  // mode, which stops there by itself; otherwise fork mode (-fork=N).
+  const bool plain = o.stop_at_first && s.jobs == 1;
   std::vector<std::string> argv = {binary.string(),
-                                   "-fork=" + std::to_string(s.jobs),
+                                   plain ? "-runs=-1" : "-fork=" + std::to_string(s.jobs),
                                    "-max_total_time=" + std::to_string(std::max(1LL, static_cast<long long>(o.time_s))),
                                    "-seed=" + std::to_string(o.seed),
                                    "-artifact_prefix=" + crashes.string() + "/",
                                    "-print_final_stats=1",
                                    "-max_len=" + std::to_string(o.max_len)};
   if (!o.stop_at_first) argv.insert(argv.begin() + 2, "-ignore_crashes=1");
+  // --stop-at-first in fork mode: the campaign stops the jobs itself as
+  // soon as a crash input is saved.
+  std::function<bool()> stop_now;
+  if (o.stop_at_first)
+    stop_now = [crashes] {
+      std::error_code e;
+      return fs::directory_iterator(crashes, e) != fs::directory_iterator();
+    };
   if (fs::exists(dict)) argv.push_back("-dict=" + dict.string());
   argv.push_back(corpus.string());
   std::string cmdline;
@@ -484,7 +499,7 @@ int run_campaign(const CampaignOptions& o, CampaignSummary* out) {
       fmt::print(stderr, "{}\n", status);
       last_print = now;
     }
-  });
+  }, stop_now);
   if (rr.killed) log << "vgc fuzz: still running " << o.time_s + 5 << " s after the start: process group killed\n";
   log.close();
   if (tty) fmt::print(stderr, "\n");
@@ -493,8 +508,8 @@ int run_campaign(const CampaignOptions& o, CampaignSummary* out) {
   if (rr.killed) fmt::print(stderr, "vgc fuzz: libFuzzer overran --time {} s: killed\n", o.time_s);
 
   // Crashes: re-run each saved input alone (smallest first, within a budget
-  // of its own: at most 200 inputs and max(20 s, --time / 4)), sign it,
-  // keep the smallest per signature.
+  // of its own: at most 200 inputs and max(10 s, --time / 10), replays of
+  // the counterexamples included), sign it, keep the smallest per signature.
   struct Group {
     std::map<fs::path, std::string> shown;    // per input: its signature with exact clause ids
     std::vector<fs::path> files;
@@ -513,12 +528,12 @@ int run_campaign(const CampaignOptions& o, CampaignSummary* out) {
     if (auto t = seconds_since(f, sys0); t && (!s.time_to_first_finding_s || *t < *s.time_to_first_finding_s))
       s.time_to_first_finding_s = t;
   const auto sign_until = clock::now() + std::chrono::duration_cast<clock::duration>(
-                                             std::chrono::duration<double>(std::max(20.0, o.time_s / 4)));
+                                             std::chrono::duration<double>(std::max(10.0, o.time_s / 10)));
   std::map<fs::path, std::optional<double>> first_seen;
   for (const fs::path& f : saved) {
     if (s.crash_inputs_signed >= 200 || clock::now() >= sign_until) break;
     ++s.crash_inputs_signed;
-    const std::string output = run_capture("timeout 10 env " + env_prefix(target_env) + shell_quote(binary.string()) +
+    const std::string output = run_capture("timeout 5 env " + env_prefix(target_env) + shell_quote(binary.string()) +
                                            " " + shell_quote(f.string()) + " 2>&1");
     const CrashSignature sig = crash_signature(output);
     Group& g = unique[sig.key];
@@ -581,9 +596,9 @@ int run_campaign(const CampaignOptions& o, CampaignSummary* out) {
       else if (property) text += "# the target printed no command file (a sanitizer finding): replay the input\n";
       else text += stream_to_text(bytes);
       write_file(cex_file, text);
-      if (!c.clause.empty() && fs::exists(vgc)) {
+      if (!c.clause.empty() && fs::exists(vgc) && clock::now() < sign_until) {
         // Does it replay to the same clause? (`vgc replay` exits 1 naming it.)
-        const std::string r = run_capture("timeout 60 env " + env_prefix(run_env) + shell_quote(vgc) + " replay " +
+        const std::string r = run_capture("timeout 20 env " + env_prefix(run_env) + shell_quote(vgc) + " replay " +
                                           shell_quote(cex_file.string()) + " --impl " + shell_quote(impl_spec) +
                                           " 2>&1");
         std::smatch m;
