@@ -585,31 +585,53 @@ int run_campaign(const CampaignOptions& o, CampaignSummary* out) {
       c.replay = c.replay_fuzzer;
     } else {
       // A finding named by clause replays as a certify counterexample,
-      // against the same implementation, with the same environment.
-      c.replay = c.clause.empty()
-                     ? env_prefix(run_env) + "vgc apply " + shell_quote(cex_file.string())
-                     : env_prefix(run_env) + "vgc replay " + shell_quote(cex_file.string()) + " --impl " +
-                           shell_quote(impl_spec);
-      std::string text = "# vgc fuzz " + target + " counterexample: " + c.signature + "\n# from " + rep.string() +
-                         "\n# replay: " + c.replay + "\n";
-      if (printed != g.printed.end()) text += printed->second;
-      else if (property) text += "# the target printed no command file (a sanitizer finding): replay the input\n";
-      else text += stream_to_text(bytes);
-      write_file(cex_file, text);
-      if (!c.clause.empty() && fs::exists(vgc) && clock::now() < sign_until) {
-        // Does it replay to the same clause? (`vgc replay` exits 1 naming it.)
+      // against the same implementation, with the same environment. So does
+      // a crash of a plugin in fuzz_differential (in process it takes the
+      // fuzzer down unnamed): `vgc replay` runs the plugin isolated and
+      // names the clause, as certify would.
+      const bool plugin_crash = c.clause.empty() && name == "differential" && !plugin.empty();
+      const bool replayable = !c.clause.empty() || plugin_crash;
+      const auto replay_line = [&] {
+        return env_prefix(run_env) + "vgc replay " + shell_quote(cex_file.string()) + " --impl " +
+               shell_quote(impl_spec);
+      };
+      c.replay = replayable ? replay_line() : env_prefix(run_env) + "vgc apply " + shell_quote(cex_file.string());
+      std::string body;
+      if (printed != g.printed.end()) body = printed->second;
+      else if (property) body = "# the target printed no command file (a sanitizer finding): replay the input\n";
+      else body = stream_to_text(bytes);
+      auto write_cex = [&] {
+        write_file(cex_file, "# vgc fuzz " + target + " counterexample: " + c.signature + "\n# from " +
+                                 rep.string() + "\n# replay: " + c.replay + "\n" + body);
+      };
+      write_cex();
+      if (replayable && fs::exists(vgc) && clock::now() < sign_until) {
+        // Which clause does it replay to? (`vgc replay` exits 1 naming it.)
         const std::string r = run_capture("timeout 20 env " + env_prefix(run_env) + shell_quote(vgc) + " replay " +
                                           shell_quote(cex_file.string()) + " --impl " + shell_quote(impl_spec) +
-                                          " 2>&1");
-        std::smatch m;
+                                          " 2>&1; echo \"vgc-replay-exit=$?\"");
         static const std::regex named(R"(\b([A-Z][A-Z0-9]*(?:-[A-Z0-9]+)*-[0-9]+)\b)");
         std::string found;
-        for (std::sregex_iterator it(r.begin(), r.end(), named), end; it != end; ++it)
-          if (find_clause((*it)[1].str())) {
-            found = (*it)[1].str();
-            if (found == c.clause) break;
-          }
+        if (r.find("vgc-replay-exit=1") != std::string::npos)
+          for (std::sregex_iterator it(r.begin(), r.end(), named), end; it != end; ++it)
+            if (find_clause((*it)[1].str())) {
+              if (found.empty() || (*it)[1].str() == c.clause) found = (*it)[1].str();
+              if (found == c.clause) break;
+            }
         c.replayed_clause = found;
+        if (plugin_crash) {
+          if (!found.empty()) {
+            c.clause = found;  // certify's name for the crash
+            if (const Clause* cl = find_clause(c.clause)) c.level = clause_level_name(cl->level);
+            c.in_baseline = baseline.reasons.count(c.clause) > 0;
+          } else {
+            c.replay = env_prefix(run_env) + "vgc apply " + shell_quote(cex_file.string());
+            write_cex();
+          }
+        }
+      } else if (plugin_crash) {
+        c.replay = env_prefix(run_env) + "vgc apply " + shell_quote(cex_file.string());
+        write_cex();
       }
     }
     s.crashes.push_back(std::move(c));

@@ -95,6 +95,8 @@ PY
     all_capped=1
     for r in $runs; do case "$r" in '>'*) ;; *) all_capped=0 ;; esac; done
     [ "$all_capped" = 1 ] && m=">$cap"
+    # A median at the cap is a run not found: say so.
+    [ "$m" = "$cap" ] && m=">$cap"
     row="$row $m (${runs# }) |"
   done
   shown=${clause:--}
