@@ -36,6 +36,8 @@ std::vector<Command> commands_from_bytes(const std::uint8_t* data, std::size_t s
 
 // Runs those commands from a fresh node against `sut`, compared with the
 // reference as a property does; the first MUST-level finding, if any.
+// Cheap when they agree: check_program_fast (fast_check.h) compares the
+// documents once at the end and re-runs step by step only on a difference.
 std::optional<Finding> check_byte_case(const std::uint8_t* data, std::size_t size, Focus focus,
                                        Implementation& sut, std::vector<Command>* program);
 

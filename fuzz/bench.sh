@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
-# fuzz/bench.sh SAN_BUILD NOSAN_BUILD [SECONDS]  — exec/s of every fuzz target
-# on one core (taskset -c 0), with sanitizers (SAN_BUILD: -DVGC_FUZZ=ON) and
-# without (NOSAN_BUILD: -DVGC_FUZZ=ON -DVGC_FUZZ_SANITIZERS=none).
+# fuzz/bench.sh SAN_BUILD NOSAN_BUILD [SECONDS [TARGET...]]  — exec/s of every
+# fuzz target (or the TARGETs named) on one core (taskset -c 0), with
+# sanitizers (SAN_BUILD: -DVGC_FUZZ=ON) and without (NOSAN_BUILD:
+# -DVGC_FUZZ=ON -DVGC_FUZZ_SANITIZERS=none; "-" skips it).
 # Each run: libFuzzer, seed 1, for SECONDS (default 30; -max_total_time)
 # starting from a fresh copy of the target's seed corpus, with its
 # dictionary. Reports the executions (libFuzzer's final stats), libFuzzer's
@@ -10,14 +11,18 @@
 # Not a test: numbers depend on the machine. docs/fuzzing.md records them.
 set -u
 san=$1 nosan=$2 seconds=${3:-30}
+shift 3 2>/dev/null || shift $#
 root="$(cd "$(dirname "$0")/.." && pwd)"
 printf '%-24s %-10s %10s %12s %14s\n' target build runs "exec/s(wall)" "exec/cpu-s"
 # Every target the build lists (fuzz/fuzz_targets.txt), else the first three.
 targets="fuzz_stream fuzz_text fuzz_differential"
 [ -f "$san/fuzz/fuzz_targets.txt" ] && targets=$(cat "$san/fuzz/fuzz_targets.txt")
+[ $# -gt 0 ] && targets="$*"
+printf 'load before: %s\n' "$(uptime)" >&2
 printf 'targets: %s\n' "$targets" >&2
 for t in $targets; do
   for b in "$san" "$nosan"; do
+    [ "$b" = "-" ] && continue
     label=$([ "$b" = "$san" ] && echo asan+ubsan || echo none)
     work=$(mktemp -d)
     cp "$root/corpora/fuzz/$t"/* "$work/" 2>/dev/null
@@ -33,3 +38,4 @@ for t in $targets; do
     rm -rf "$work"
   done
 done
+printf 'load after: %s\n' "$(uptime)" >&2

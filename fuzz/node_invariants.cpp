@@ -1,10 +1,12 @@
 // node_invariants.cpp — see node_invariants.h.
 #include "node_invariants.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <set>
 #include <string_view>
+#include <type_traits>
 
 namespace vgc::fuzz {
 namespace {
@@ -173,6 +175,192 @@ std::string check_step(bool applied, const std::string& before, const std::strin
 std::string check_deterministic(const std::string& first, const std::string& second) {
   if (first != second) return "print_snapshot is not deterministic";
   return {};
+}
+
+namespace {
+
+// The layer-level rules of check_state, O(layers): base layers; ids, types,
+// names; every layer as many slots as its base layer.
+std::string check_layer_headers(const std::map<std::uint16_t, Layer>& layers) {
+  if (auto e = check_base_layer(layers, Node::kVertexLayer, "vertex", LayerType::VertexXyz); !e.empty()) return e;
+  if (auto e = check_base_layer(layers, Node::kPolygonLayer, "polygon", LayerType::PolygonCornerUint32); !e.empty())
+    return e;
+  const std::size_t nv = layers.at(Node::kVertexLayer).slots.size();
+  const std::size_t np = layers.at(Node::kPolygonLayer).slots.size();
+  std::set<std::string_view> names;
+  for (const auto& [id, layer] : layers) {
+    auto where = [&, id = id] { return "layer " + id_text(id); };
+    if (layer.id != id) return where() + " is stored under id " + id_text(layer.id);
+    if (!is_layer_type(static_cast<std::uint8_t>(layer.type))) return where() + " has no valid type";
+    if (layer.name.empty()) return where() + " has an empty name";
+    if (!valid_name(layer.name)) return where() + " has a name over 15 bytes or with a NUL";
+    if (!names.insert(layer.name).second) return where() + " repeats the name \"" + layer.name + "\"";
+    if (layer.slots.size() != (is_vertex_layer_type(layer.type) ? nv : np))
+      return where() + " does not hold exactly the live ids of its base layer";
+  }
+  return {};
+}
+
+std::string check_polygon(const std::map<std::uint32_t, Slot>& vertices, std::uint32_t pid, const Slot& slot) {
+  auto where = [&] { return "polygon " + id_text(pid); };
+  for (int i = 0; i < 3; ++i)
+    if (slot.u[i] == kNone32) return where() + " has an unused corner " + id_text(i);
+  const int n = slot.u[3] == kNone32 ? 3 : 4;
+  for (int i = 0; i < n; ++i) {
+    if (vertices.count(slot.u[i]) == 0) return where() + " names vertex " + id_text(slot.u[i]) + ", not live";
+    for (int j = i + 1; j < n; ++j)
+      if (slot.u[i] == slot.u[j]) return where() + " repeats vertex " + id_text(slot.u[i]);
+  }
+  return {};
+}
+
+// Element `e` of one stack: in every layer of the stack exactly when live.
+std::string check_element(const std::map<std::uint16_t, Layer>& layers, bool vertex_stack, std::uint32_t e) {
+  const auto& base = layers.at(vertex_stack ? Node::kVertexLayer : Node::kPolygonLayer).slots;
+  const bool live = base.count(e) > 0;
+  for (const auto& [id, layer] : layers)
+    if (is_vertex_layer_type(layer.type) == vertex_stack && (layer.slots.count(e) > 0) != live)
+      return "layer " + id_text(id) + " does not hold exactly the live ids of its base layer";
+  if (!live) return {};
+  const Slot& slot = base.at(e);
+  if (vertex_stack) {
+    for (int i = 0; i < 3; ++i)
+      if (!std::isfinite(slot.r[i])) return "vertex " + id_text(e) + " has a non-finite position";
+    return {};
+  }
+  return check_polygon(layers.at(Node::kVertexLayer).slots, e, slot);
+}
+
+std::string check_bone(const std::map<std::uint16_t, Bone>& bones, std::uint16_t id) {
+  auto it = bones.find(id);
+  if (it == bones.end()) return {};
+  const Bone& bone = it->second;
+  auto where = [&] { return "bone " + id_text(id); };
+  if (bone.id != id) return where() + " is stored under id " + id_text(bone.id);
+  if (bone.weight.empty()) return where() + " has an empty weight layer name";
+  for (const std::string* s : {&bone.weight, &bone.reference, &bone.pos_label, &bone.rot_label})
+    if (!valid_name(*s)) return where() + " has a name over 15 bytes or with a NUL";
+  std::size_t steps = 0;
+  for (std::uint16_t p = bone.parent;;) {
+    auto pit = bones.find(p);
+    if (pit == bones.end()) break;
+    if (p == id || ++steps > bones.size()) return where() + " is in a parent cycle";
+    p = pit->second.parent;
+  }
+  return {};
+}
+
+template <class T, class = void> struct has_vertex_id : std::false_type {};
+template <class T> struct has_vertex_id<T, std::void_t<decltype(T::vertex_id)>> : std::true_type {};
+template <class T, class = void> struct has_polygon_id : std::false_type {};
+template <class T> struct has_polygon_id<T, std::void_t<decltype(T::polygon_id)>> : std::true_type {};
+
+}  // namespace
+
+Touched touched_by(const Command& command) {
+  Touched t;
+  std::visit(
+      [&t](const auto& c) {
+        using T = std::decay_t<decltype(c)>;
+        if constexpr (std::is_same_v<T, cmd::LayerCreate> || std::is_same_v<T, cmd::LayerDestroy> ||
+                      std::is_same_v<T, cmd::LayerSubscribe> || std::is_same_v<T, cmd::LayerUnsubscribe>) {
+          if (c.layer_id == kNone16) t.whole_state = true;
+          t.layers.push_back(c.layer_id);
+        } else if constexpr (std::is_same_v<T, cmd::VertexDelete>) {
+          t.vertices.push_back(c.vertex_id);
+          t.vertex_delete = true;
+        } else if constexpr (std::is_same_v<T, cmd::PolygonDelete>) {
+          t.polygons.push_back(c.polygon_id);
+        } else if constexpr (has_vertex_id<T>::value) {
+          if (c.vertex_id == kNone32) t.whole_state = true;
+          t.vertices.push_back(c.vertex_id);
+          t.vertex_delete = true;  // the xyz forms with the max sentinel delete
+        } else if constexpr (has_polygon_id<T>::value) {
+          if (c.polygon_id == kNone32) t.whole_state = true;
+          t.polygons.push_back(c.polygon_id);
+        } else if constexpr (std::is_same_v<T, cmd::BoneCreate> || std::is_same_v<T, cmd::BoneDestroy>) {
+          if (c.bone_id == kNone16) t.whole_state = true;
+          t.bones.push_back(c.bone_id);
+        }
+        // Crease settings: not part of check_state; in every touched_digest.
+      },
+      command);
+  return t;
+}
+
+std::string check_touched(const std::map<std::uint16_t, Layer>& layers, const std::map<std::uint16_t, Bone>& bones,
+                          const Touched& t) {
+  if (t.whole_state) return check_state(layers, bones);
+  if (auto e = check_layer_headers(layers); !e.empty()) return e;
+  const auto& vertices = layers.at(Node::kVertexLayer).slots;
+  for (std::uint16_t id : t.layers) {
+    auto it = layers.find(id);
+    if (it == layers.end()) continue;
+    const auto& base = is_vertex_layer_type(it->second.type) ? vertices : layers.at(Node::kPolygonLayer).slots;
+    if (!same_ids(it->second.slots, base))
+      return "layer " + id_text(id) + " does not hold exactly the live ids of its base layer";
+  }
+  for (std::uint32_t v : t.vertices)
+    if (auto e = check_element(layers, true, v); !e.empty()) return e;
+  for (std::uint32_t p : t.polygons)
+    if (auto e = check_element(layers, false, p); !e.empty()) return e;
+  if (t.vertex_delete)
+    for (std::uint32_t v : t.vertices)
+      if (vertices.count(v) == 0)
+        for (const auto& [pid, slot] : layers.at(Node::kPolygonLayer).slots)
+          if (std::find(slot.u.begin(), slot.u.end(), v) != slot.u.end())
+            return check_polygon(vertices, pid, slot);
+  for (std::uint16_t b : t.bones)
+    if (auto e = check_bone(bones, b); !e.empty()) return e;
+  return {};
+}
+
+std::uint64_t touched_digest(const Node& node, const Touched& t) {
+  if (t.whole_state) return state_digest(node);
+  Digest d;
+  d.add(node.layers().size());
+  for (const auto& [id, layer] : node.layers()) {
+    d.add(id);
+    d.add(layer.name);
+    d.add(layer.type);
+    d.add(layer.def_uint);
+    d.add(layer.def_real);
+    d.add(layer.subscription ? static_cast<int>(*layer.subscription) : -1);
+    d.add(layer.slots.size());
+    const bool vertex_stack = is_vertex_layer_type(layer.type);
+    for (std::uint32_t e : vertex_stack ? t.vertices : t.polygons) {
+      auto it = layer.slots.find(e);
+      d.word(it == layer.slots.end() ? 0 : 1);
+      if (it == layer.slots.end()) continue;
+      d.bytes(it->second.u.data(), sizeof it->second.u);
+      d.bytes(it->second.r.data(), sizeof it->second.r);
+    }
+    if (std::find(t.layers.begin(), t.layers.end(), id) != t.layers.end())
+      for (const auto& [element, slot] : layer.slots) {
+        d.word(element);
+        d.bytes(slot.u.data(), sizeof slot.u);
+        d.bytes(slot.r.data(), sizeof slot.r);
+      }
+  }
+  d.add(node.vertex_crease().layer);
+  d.add(node.vertex_crease().def_crease);
+  d.add(node.edge_crease().layer);
+  d.add(node.edge_crease().def_crease);
+  d.add(node.bones().size());
+  for (std::uint16_t b : t.bones) {
+    auto it = node.bones().find(b);
+    d.word(it == node.bones().end() ? 0 : 1);
+    if (it == node.bones().end()) continue;
+    const Bone& bone = it->second;
+    d.add(bone.weight);
+    d.add(bone.reference);
+    d.add(bone.parent);
+    d.bytes(bone.pos.data(), sizeof bone.pos);
+    d.add(bone.pos_label);
+    d.bytes(bone.rot.data(), sizeof bone.rot);
+    d.add(bone.rot_label);
+  }
+  return d.h;
 }
 
 }  // namespace vgc::fuzz

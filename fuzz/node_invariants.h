@@ -19,7 +19,9 @@
 #include <cstdint>
 #include <map>
 #include <string>
+#include <vector>
 
+#include "command.h"
 #include "node.h"
 
 namespace vgc::fuzz {
@@ -28,6 +30,44 @@ namespace vgc::fuzz {
 std::string check_state(const std::map<std::uint16_t, Layer>& layers,
                         const std::map<std::uint16_t, Bone>& bones);
 inline std::string check_node(const Node& node) { return check_state(node.layers(), node.bones()); }
+
+// What one command may change, for the incremental checks below: the
+// vertices and polygons it names, whole layers (layer commands) and bones.
+// `whole_state` when it asks the node to pick an id (0xFFFF / 0xFFFFFFFF),
+// so that what it touches is not known beforehand: then the incremental
+// checks are the full ones.
+struct Touched {
+  std::vector<std::uint32_t> vertices, polygons;
+  std::vector<std::uint16_t> layers, bones;
+  bool vertex_delete = false;  // polygons naming the vertex go too
+  bool whole_state = false;
+};
+Touched touched_by(const Command& c);
+
+// The invariants of check_state that a command touching `t` can break,
+// checked where it touched: base layers; every layer's id, type and name
+// (names unique) and its slot count against its base layer (O(layers));
+// the touched elements live in exactly the layers of their stack, finite
+// positions, polygons' corners; for touched layers, the exact id sets; for
+// touched bones, names and the parent chain (a new cycle passes through the
+// bone that was set); after a vertex delete, no polygon names it. The
+// whole of check_state holds when every step passed this and the state
+// started valid, except for one class of bug it leaves to the full check at
+// the end of the input: an element of the same stack changed under another
+// id with the counts unchanged.
+std::string check_touched(const std::map<std::uint16_t, Layer>& layers, const std::map<std::uint16_t, Bone>& bones,
+                          const Touched& t);
+inline std::string check_touched(const Node& node, const Touched& t) {
+  return check_touched(node.layers(), node.bones(), t);
+}
+
+// A fingerprint of the part of the state `t` names, plus every layer's
+// header and slot count, the crease settings and the bone count; the whole
+// state_digest when t.whole_state. Around a rejected command: the state it
+// names must not change. (fuzz_stream also checks the whole state once per
+// input: the applied commands alone, from a fresh node, must end in the
+// same state_digest.)
+std::uint64_t touched_digest(const Node& node, const Touched& t);
 
 // A 64-bit fingerprint (not cryptographic) of everything print_snapshot() prints: every layer
 // (id, name, type, defaults, subscription, every slot's values bit for bit),

@@ -79,6 +79,26 @@ std::unique_ptr<PluginImplementation> PluginImplementation::load(const std::stri
   return impl;
 }
 
+std::unique_ptr<PluginImplementation> PluginImplementation::wrap(const vgc_plugin_v1_table* table,
+                                                                const std::string& label, std::string* error) {
+  const std::string what = "plugin " + label + ": ";
+  if (!table || table->abi_version != VGC_PLUGIN_ABI_VERSION || !table->create || !table->destroy ||
+      !table->apply || !table->snapshot || !table->derived) {
+    *error = what + "no table, another ABI version, or a NULL function";
+    return nullptr;
+  }
+  vgc_node* node = table->create();
+  if (!node) {
+    *error = what + "create() returned NULL";
+    return nullptr;
+  }
+  std::unique_ptr<PluginImplementation> impl(new PluginImplementation());
+  impl->path_ = label;
+  impl->table_ = table;
+  impl->node_ = node;
+  return impl;
+}
+
 PluginImplementation::~PluginImplementation() {
   if (node_) table_->destroy(node_);
   if (handle_) dlclose(handle_);

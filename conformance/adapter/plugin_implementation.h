@@ -28,6 +28,11 @@ class PluginImplementation final : public Implementation {
   // went wrong: the file cannot be loaded, the symbol is missing, the ABI
   // version differs, a function is NULL, or create() returned NULL.
   static std::unique_ptr<PluginImplementation> load(const std::string& path, std::string* error);
+  // The same around a table already in this program (no dlopen; `label`
+  // stands for the path in names and messages): the fuzzer's reference
+  // behind the C ABI. nullptr with *error as load().
+  static std::unique_ptr<PluginImplementation> wrap(const vgc_plugin_v1_table* table, const std::string& label,
+                                                    std::string* error);
   ~PluginImplementation() override;  // destroys the node, then dlclose
   PluginImplementation(const PluginImplementation&) = delete;
   PluginImplementation& operator=(const PluginImplementation&) = delete;

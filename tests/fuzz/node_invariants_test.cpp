@@ -181,3 +181,68 @@ TEST(StateDigest, ChangesWithEveryPrintedPart) {
 
 }  // namespace
 }  // namespace vgc::fuzz
+
+namespace vgc::fuzz {
+namespace {
+
+std::string touched_fails(const State& s, const Command& c) { return check_touched(s.layers, s.bones, touched_by(c)); }
+
+// check_touched (fuzz_stream's per-command check) finds each rule broken
+// where the command touched it.
+TEST(TouchedInvariants, FindTheRulesWhereTheCommandTouched) {
+  EXPECT_EQ(check_touched(rich_node(), touched_by(cmd::VertexSetUint32{2, 4, 1})), "");
+  State s = state_of(rich_node());
+  s.layers.at(2).slots.erase(5);  // vertex 5 missing from layer 2: the slot count shows it anywhere
+  EXPECT_NE(touched_fails(s, cmd::VertexSetUint32{2, 4, 1}).find("layer 2 does not hold"), std::string::npos);
+  s = state_of(rich_node());
+  s.layers.at(2).slots.erase(5);
+  s.layers.at(2).slots[99] = Slot{};  // same count, other ids: seen where touched
+  EXPECT_NE(touched_fails(s, cmd::VertexSetUint32{2, 5, 1}).find("layer 2 does not hold"), std::string::npos);
+  EXPECT_NE(touched_fails(s, cmd::LayerSubscribe{2, 1}).find("layer 2 does not hold"), std::string::npos);
+  s = state_of(rich_node());
+  s.layers.at(0).slots.at(3).r[1] = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_NE(touched_fails(s, cmd::VertexSetXyzReal64{0, 3, 0, 0, 0}).find("non-finite"), std::string::npos);
+  s = state_of(rich_node());
+  s.layers.at(1).slots.at(2).u = {3, 2, 3, 4};
+  EXPECT_NE(touched_fails(s, cmd::PolygonSetCornerUint32{1, 2, {3, 2, 5, 4}}).find("repeats vertex 3"),
+            std::string::npos);
+  // A vertex delete that left a polygon naming the vertex.
+  s = state_of(rich_node());
+  for (auto& [id, layer] : s.layers)
+    if (is_vertex_layer_type(layer.type)) layer.slots.erase(3);
+  EXPECT_NE(touched_fails(s, cmd::VertexDelete{3}).find("names vertex 3, not live"), std::string::npos);
+  s = state_of(rich_node());
+  s.bones.at(0).parent = 1;
+  EXPECT_NE(touched_fails(s, cmd::BoneCreate{0, "weight", "", 1, {}, "", {0, 0, 0, 1}, ""}).find("parent cycle"),
+            std::string::npos);
+  s = state_of(rich_node());
+  s.layers.at(3).name = "weight";  // names: checked for every layer, every command
+  EXPECT_NE(touched_fails(s, cmd::VertexSetUint32{2, 4, 1}).find("repeats the name"), std::string::npos);
+  // Picking an id: what it touches is unknown, so the whole check runs.
+  s = state_of(rich_node());
+  s.layers.at(1).slots.at(2).u = {3, 2, 3, 4};
+  EXPECT_NE(touched_fails(s, cmd::LayerCreate{kNone16, "x", 1, 0, 0}).find("repeats vertex 3"), std::string::npos);
+}
+
+TEST(TouchedInvariants, DigestSeesWhatTheCommandNames) {
+  const Node base = rich_node();
+  const Touched t = touched_by(cmd::VertexSetUint32{2, 4, 1});
+  const std::uint64_t d0 = touched_digest(base, t);
+  EXPECT_EQ(touched_digest(rich_node(), t), d0);
+  Node n = rich_node();
+  ASSERT_EQ(n.apply(cmd::VertexSetXyzReal64{0, 4, 9, 9, 9}), Reason::Ok);  // the same vertex, another layer
+  EXPECT_NE(touched_digest(n, t), d0);
+  n = rich_node();
+  ASSERT_EQ(n.apply(cmd::CreaseSetVertex{"weight", 1}), Reason::Ok);  // crease settings: always
+  EXPECT_NE(touched_digest(n, t), d0);
+  n = rich_node();
+  ASSERT_EQ(n.apply(cmd::LayerSubscribe{3, 1}), Reason::Ok);  // every layer's header: always
+  EXPECT_NE(touched_digest(n, t), d0);
+  n = rich_node();
+  ASSERT_EQ(n.apply(cmd::VertexSetUint32{2, 5, 7}), Reason::Ok);  // another vertex: left to the end-of-input check
+  EXPECT_EQ(touched_digest(n, t), d0);
+  EXPECT_NE(state_digest(n), state_digest(base));
+}
+
+}  // namespace
+}  // namespace vgc::fuzz

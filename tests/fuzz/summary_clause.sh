@@ -47,6 +47,38 @@ PY
 md=$(dirname "$summary")/summary.md
 grep -q -- "\*\*.*$clause " "$md" || fail "summary.md does not show $clause: $(grep '^- \*\*' "$md")"
 ! grep -q -- "${clause%-*}-N" "$md" || fail "summary.md shows a folded clause id"
-grep -q -- "counterexample: .*$clause" "$(ls "$work"/src/reports/fuzz/"$name"/*/counterexamples/crash-1.vgc)" \
+grep -q -- "counterexample: .*$clause" "$(ls "$work"/src/reports/fuzz/"$name"/*/counterexamples/crash-1*.vgc)" \
   || fail "the counterexample's header does not name $clause"
-echo "summary_clause: one crash of two inputs, shown as $clause"
+# Grouped by clause; the replay command carries the run's environment and
+# `vgc replay` of the counterexample names the same clause.
+python3 - "$summary" "$clause" "$fault" <<'PY' || exit 1
+import json, sys
+s = json.load(open(sys.argv[1])); clause, fault = sys.argv[2], sys.argv[3]
+g = s["clauses"]
+assert [x["clause"] for x in g] == [clause], "clause groups: %s" % g
+assert not g[0]["in_baseline"] and s["new_crashes"] == 1, "no baseline given, yet marked"
+c = s["crashes"][0]
+assert c["clause"] == clause, c["clause"]
+assert ("VGC_FAULT='%s'" % fault) in c["replay"], "replay lacks VGC_FAULT: %s" % c["replay"]
+assert ("VGC_FAULT='%s'" % fault) in c["replay_fuzzer"] and "VGC_FUZZ_PLUGIN=" in c["replay_fuzzer"], c["replay_fuzzer"]
+assert c["replay"].split()[1:3] == ["vgc", "replay"], c["replay"]
+assert c["replayed_clause"] == clause, "vgc replay named %r" % c["replayed_clause"]
+assert s["time_to_first_finding_s"] is not None
+PY
+# With the clause in a --baseline: marked, not new, exit 0.
+printf '# known\n%s accepted for this test\n' "$clause" >"$work/baseline.txt"
+out=$(VGC_FAULT="$fault" "$vgc" fuzz "${name#fuzz_}" --time 1 --impl "plugin:$plugin" --fuzz-build "$work" \
+      --source-dir "$work/src" --baseline "$work/baseline.txt" 2>&1)
+rc=$?
+[ "$rc" -eq 0 ] || fail "with $clause in the baseline: expected exit 0, got $rc: $(printf '%s\n' "$out" | tail -5)"
+summary=$(ls -t "$work"/src/reports/fuzz/"$name"/*/summary.json | head -1)
+python3 - "$summary" "$clause" <<'PY' || exit 1
+import json, sys
+s = json.load(open(sys.argv[1])); clause = sys.argv[2]
+g = s["clauses"]
+assert g[0]["clause"] == clause and g[0]["in_baseline"], g
+assert g[0]["baseline_reason"] == "accepted for this test", g[0]["baseline_reason"]
+assert s["new_crashes"] == 0
+PY
+grep -q -- "$clause.*\[baseline: accepted for this test\]" "$(dirname "$summary")/summary.md" || fail "summary.md does not mark the baseline"
+echo "summary_clause: one crash of two inputs, shown as $clause, grouped, replayed to it, marked by the baseline"

@@ -1,0 +1,808 @@
+// campaign.cpp — see campaign.h.
+#include "campaign.h"
+#include "campaign_html.h"
+
+#include <fmt/core.h>
+#include <nlohmann/json.hpp>
+#include <poll.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <ctime>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <iterator>
+#include <map>
+#include <regex>
+#include <sstream>
+
+#include "baseline.h"
+#include "clause.h"
+#include "command_binary.h"
+#include "command_text.h"
+#include "exec_implementation.h"
+
+namespace vgc::fuzz {
+namespace {
+
+namespace fs = std::filesystem;
+
+bool read_file(const fs::path& p, std::string* out) {
+  std::ifstream in(p, std::ios::binary);
+  if (!in) return false;
+  out->assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  return true;
+}
+
+bool write_file(const fs::path& p, const std::string& s) {
+  std::ofstream out(p, std::ios::binary);
+  out << s;
+  return static_cast<bool>(out);
+}
+
+fs::path self_exe() {
+  std::error_code ec;
+  fs::path p = fs::read_symlink("/proc/self/exe", ec);
+  return ec ? fs::path{} : p;
+}
+
+// The build directory this program was built in (…/build/cli/vgc).
+fs::path own_build_dir() { return self_exe().parent_path().parent_path(); }
+
+fs::path source_dir(const CampaignOptions& o) {
+  if (!o.source_dir.empty()) return o.source_dir;
+  if (const char* e = std::getenv("VGC_SOURCE_DIR"); e && *e) return e;
+  std::string cache;
+  if (read_file(own_build_dir() / "CMakeCache.txt", &cache)) {
+    std::smatch m;
+    if (std::regex_search(cache, m, std::regex("CMAKE_HOME_DIRECTORY:INTERNAL=([^\n]*)"))) return m[1].str();
+  }
+  return fs::current_path();
+}
+
+fs::path fuzz_build_dir(const CampaignOptions& o) {
+  if (!o.fuzz_build.empty()) return o.fuzz_build;
+  if (const char* e = std::getenv("VGC_FUZZ_BUILD_DIR"); e && *e) return e;
+  return own_build_dir().parent_path() / "build-fuzz";
+}
+
+std::string utc_stamp() {
+  const std::time_t t = std::time(nullptr);
+  std::tm tm{};
+  gmtime_r(&t, &tm);
+  char buf[32];
+  std::strftime(buf, sizeof buf, "%Y%m%dT%H%M%SZ", &tm);
+  return buf;
+}
+
+struct Progress {
+  long long execs = 0, exec_s = 0, cov = 0, ft = 0, corp = 0, crashes = 0;
+};
+
+// Reads one libFuzzer status line ("#1234 NEW cov: 5 ft: 6 corp: 7/80b ...
+// exec/s: 9", or in fork mode "#1234: cov: 5 ft: 6 corp: 7 exec/s 9
+// oom/timeout/crash: 0/0/1 ..."). Returns false for any other line.
+bool parse_progress(const std::string& line, Progress* p) {
+  if (line.empty() || line[0] != '#') return false;
+  static const std::regex head(R"(^#(\d+))");
+  std::smatch m;
+  if (!std::regex_search(line, m, head)) return false;
+  if (line.find("cov: ") == std::string::npos) return false;
+  p->execs = std::stoll(m[1]);
+  auto field = [&](const char* re, long long* out) {
+    std::smatch f;
+    if (std::regex_search(line, f, std::regex(re))) *out = std::stoll(f[1]);
+  };
+  field(R"(cov: (\d+))", &p->cov);
+  field(R"(ft: (\d+))", &p->ft);
+  field(R"(corp: (\d+))", &p->corp);
+  field(R"(exec/s:? (\d+))", &p->exec_s);
+  field(R"(oom/timeout/crash: \d+/\d+/(\d+))", &p->crashes);
+  return true;
+}
+
+struct RunResult {
+  int exit = -1;
+  bool killed = false;  // still running at the deadline: its process group was killed
+};
+
+// Runs argv (in a process group of its own) with env additions,
+// stdout+stderr into `on_line` line by line, until it exits or `deadline`
+// passes; then SIGTERM to the whole group, SIGKILL 2 s later.
+RunResult run_streaming(const std::vector<std::string>& argv, const std::vector<std::string>& env_add,
+                        std::chrono::steady_clock::time_point deadline,
+                        const std::function<void(const std::string&)>& on_line,
+                        const std::function<bool()>& stop_now) {
+  RunResult result;
+  int fds[2];
+  if (pipe(fds) != 0) return result;
+  const pid_t pid = fork();
+  if (pid < 0) return result;
+  if (pid == 0) {
+    setpgid(0, 0);
+    dup2(fds[1], 1);
+    dup2(fds[1], 2);
+    close(fds[0]);
+    close(fds[1]);
+    for (const std::string& kv : env_add) putenv(const_cast<char*>(kv.c_str()));
+    std::vector<char*> args;
+    for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
+    args.push_back(nullptr);
+    execv(args[0], args.data());
+    std::perror("execv");
+    _exit(127);
+  }
+  setpgid(pid, pid);  // also here: no race with the child's own call
+  close(fds[1]);
+  std::string pending;
+  char buf[4096];
+  bool open = true;
+  auto kill_group = [&](bool late) {
+    result.killed = late;
+    kill(-pid, SIGTERM);
+    const auto hard = std::chrono::steady_clock::now() + std::chrono::seconds(2);
+    while (std::chrono::steady_clock::now() < hard) {
+      if (waitpid(pid, nullptr, WNOHANG) == pid) {
+        kill(-pid, SIGKILL);  // any job of the group still alive
+        return true;
+      }
+      usleep(50 * 1000);
+    }
+    kill(-pid, SIGKILL);
+    return false;
+  };
+  bool reaped = false, stopped = false;
+  while (open) {
+    const auto now = std::chrono::steady_clock::now();
+    const bool late = now >= deadline;
+    if (late || (stop_now && stop_now())) {
+      reaped = kill_group(late);
+      if (!late) reaped = reaped || waitpid(pid, nullptr, 0) == pid;
+      stopped = !late;
+      break;
+    }
+    const int ms = static_cast<int>(
+        std::min<long long>(1000, std::chrono::duration_cast<std::chrono::milliseconds>(deadline - now).count() + 1));
+    pollfd pfd{fds[0], POLLIN, 0};
+    const int r = poll(&pfd, 1, ms);
+    if (r < 0 && errno == EINTR) continue;
+    if (r <= 0) continue;
+    const ssize_t n = read(fds[0], buf, sizeof buf);
+    if (n <= 0) {
+      open = false;
+      break;
+    }
+    pending.append(buf, static_cast<std::size_t>(n));
+    for (std::size_t nl; (nl = pending.find('\n')) != std::string::npos;) {
+      std::string line = pending.substr(0, nl);
+      pending.erase(0, nl + 1);
+      if (!line.empty() && line.back() == '\r') line.pop_back();
+      on_line(line);
+    }
+  }
+  if (!pending.empty()) on_line(pending);
+  close(fds[0]);
+  int status = 0;
+  if (!reaped) {
+    // The pipe closed: the fuzzer is ending; give it until the deadline.
+    for (;;) {
+      const pid_t w = waitpid(pid, &status, WNOHANG);
+      if (w == pid) break;
+      if (std::chrono::steady_clock::now() >= deadline) {
+        kill_group(true);
+        waitpid(pid, &status, 0);
+        break;
+      }
+      usleep(50 * 1000);
+    }
+  }
+  if (reaped || result.killed || stopped) {
+    result.exit = 128 + SIGTERM;
+    return result;
+  }
+  result.exit = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+  return result;
+}
+
+std::string run_capture(const std::string& command) {
+  std::string out;
+  FILE* p = popen(command.c_str(), "r");
+  if (!p) return out;
+  char buf[4096];
+  std::size_t n;
+  while ((n = std::fread(buf, 1, sizeof buf, p)) > 0) out.append(buf, n);
+  pclose(p);
+  return out;
+}
+
+const std::regex& clause_re() {
+  static const std::regex clause(R"(\b[A-Z][A-Z0-9]*(-[A-Z0-9]+)*-[0-9]+\b)");
+  return clause;
+}
+
+// Digits folded to N, except inside clause ids (BONE-FOREST-1), which stay
+// exact: "bones.stateful: BONE-FOREST-1 (MUST, fail): bone 3" becomes
+// "bones.stateful: BONE-FOREST-1 (MUST, fail): bone N".
+std::string fold_digits_keep_clauses(const std::string& s) {
+  static const std::regex digits(R"(\d+)");
+  std::string out;
+  auto from = s.cbegin();
+  for (std::sregex_iterator it(s.begin(), s.end(), clause_re()), end; it != end; ++it) {
+    out += std::regex_replace(std::string(from, (*it)[0].first), digits, "N");
+    out += it->str();
+    from = (*it)[0].second;
+  }
+  return out + std::regex_replace(std::string(from, s.cend()), digits, "N");
+}
+
+// How a crash is signed, from the output of re-running it: `key` groups
+// crashes (digits folded everywhere, clause ids included, so that one bug
+// reached with different ids or counts is one crash); `shown` is what the
+// summary prints, the same text with clause ids exact.
+struct CrashSignature {
+  std::string key, shown;
+};
+
+// The fuzz target's own FINDING line (data in quotes dropped), else the
+// sanitizer's error kind and first frame of ours, else the first UBSan
+// "runtime error", else "unknown".
+CrashSignature crash_signature(const std::string& output) {
+  std::istringstream in(output);
+  std::string line, kind;
+  static const std::regex digits(R"(\d+)");
+  while (std::getline(in, line)) {
+    if (auto at = line.find("vgc-fuzz: FINDING in "); at != std::string::npos) {
+      std::string s = line.substr(at + 10);
+      s = s.substr(0, s.find('"'));
+      return {std::regex_replace(s, digits, "N"), fold_digits_keep_clauses(s)};
+    }
+    if (auto at = line.find("runtime error: "); at != std::string::npos) {
+      const std::string u =
+          "ubsan: " + std::regex_replace(line.substr(0, at), std::regex(R"(^.*/)"), "") + line.substr(at + 15);
+      return {u, u};
+    }
+    if (auto at = line.find("ERROR: AddressSanitizer: "); at != std::string::npos && kind.empty()) {
+      kind = line.substr(at + 25);
+      kind = kind.substr(0, kind.find(' '));
+    }
+    if (auto at = line.find("ERROR: libFuzzer: "); at != std::string::npos && kind.empty())
+      kind = line.substr(at + 18);
+    if (!kind.empty()) {
+      std::smatch m;
+      static const std::regex frame(R"(#\d+ 0x[0-9a-f]+ in (\S+))");
+      if (std::regex_search(line, m, frame)) {
+        const std::string f = m[1];
+        if (f.find("__sanitizer") == std::string::npos && f.find("fuzzer::") == std::string::npos &&
+            f.find("__asan") == std::string::npos && f.find("__ubsan") == std::string::npos &&
+            f != "abort" && f != "raise" && f != "__GI_abort" && f != "__GI_raise" &&
+            f.find("pthread_kill") == std::string::npos && f.find("libc.so") == std::string::npos)
+          return {kind + " in " + f, kind + " in " + f};
+      }
+    }
+  }
+  const std::string k = kind.empty() ? "unknown" : kind;
+  return {k, k};
+}
+
+std::string normalize_target(std::string t) {
+  if (t.rfind("fuzz_", 0) == 0) t = t.substr(5);
+  return t;
+}
+
+// NAME=value of every VGC_* variable of this process, sorted.
+std::vector<std::string> vgc_environment() {
+  std::vector<std::string> vars;
+  for (char** e = environ; e && *e; ++e) {
+    const std::string entry(*e);
+    if (entry.rfind("VGC_", 0) == 0 && entry.find('=') != std::string::npos) vars.push_back(entry);
+  }
+  std::sort(vars.begin(), vars.end());
+  return vars;
+}
+
+// `NAME='value' ` for each, for the start of a shell command.
+std::string env_prefix(const std::vector<std::string>& vars) {
+  std::string out;
+  for (const std::string& v : vars) {
+    const auto eq = v.find('=');
+    out += v.substr(0, eq) + "=" + shell_quote(v.substr(eq + 1)) + " ";
+  }
+  return out;
+}
+
+std::optional<double> seconds_since(const fs::path& f, fs::file_time_type start) {
+  std::error_code ec;
+  const auto t = fs::last_write_time(f, ec);
+  if (ec) return std::nullopt;
+  return std::max(0.0, std::chrono::duration<double>(t - start).count());
+}
+
+}  // namespace
+
+std::string stream_to_text(const std::string& bytes) {
+  const auto* data = reinterpret_cast<const std::uint8_t*>(bytes.data());
+  std::vector<Command> cs;
+  std::size_t pos = 0;
+  DecodeStatus s = DecodeStatus::End;
+  for (;;) {
+    Command c;
+    s = decode_command(data, bytes.size(), &pos, &c);
+    if (s != DecodeStatus::Ok) break;
+    cs.push_back(std::move(c));
+  }
+  std::string out = print_commands(cs);
+  if (s != DecodeStatus::End)
+    out += fmt::format("# the last {} bytes do not decode ({}) and were not run\n", bytes.size() - pos,
+                       decode_status_name(s));
+  return out;
+}
+
+std::string clause_of_finding(const std::string& line) {
+  // "CLAUSE (LEVEL, status): " — the form of clause_finding.h.
+  static const std::regex form(R"((?:^|: )([A-Z][A-Z0-9]*(?:-[A-Z0-9]+)*-[0-9]+) \([A-Z-]+, [a-z]+\): )");
+  std::smatch m;
+  if (!std::regex_search(line, m, form)) return {};
+  return find_clause(m[1].str()) ? m[1].str() : std::string{};
+}
+
+int run_campaign(const CampaignOptions& o, CampaignSummary* out) {
+  using clock = std::chrono::steady_clock;
+  const std::string name = normalize_target(o.target);
+  const bool property = name.rfind("property_", 0) == 0;
+  static const char* const kGroups[] = {"layers", "polygons", "creases", "bones", "values", "ids", "commands"};
+  bool known_group = false;
+  for (const char* g : kGroups) known_group = known_group || name == std::string("property_") + g;
+  const bool mesh = name == "mesh_manifold" || name == "mesh_subdivision";
+  if (name != "stream" && name != "text" && name != "differential" && !mesh && !known_group) {
+    fmt::print(stderr,
+               "vgc fuzz: unknown target '{}': expected stream, text, differential, mesh_manifold, "
+               "mesh_subdivision or property_<group> "
+               "(layers, polygons, creases, bones, values, ids, commands)\n",
+               o.target);
+    return 2;
+  }
+  if (!(o.time_s > 0)) {
+    fmt::print(stderr, "vgc fuzz: --time must be a positive number of seconds\n");
+    return 2;
+  }
+  Baseline baseline;
+  if (!o.baseline.empty()) {
+    std::string error;
+    if (!load_baseline(o.baseline, &baseline, &error)) {
+      fmt::print(stderr, "vgc fuzz: --baseline: {}\n", error);
+      return 2;
+    }
+  }
+  const std::string target = "fuzz_" + name;
+  const fs::path src = fs::absolute(source_dir(o));
+  const fs::path fbuild = fuzz_build_dir(o);
+  const fs::path binary = fbuild / "fuzz" / target;
+  if (!fs::exists(binary)) {
+    fmt::print(stderr,
+               "vgc fuzz: no libFuzzer binary {}\n"
+               "  `./vgc fuzz ...` builds it; by hand: CC=clang CXX=clang++ cmake -S {} -B {} -DVGC_FUZZ=ON"
+               " && cmake --build {} --target {}\n",
+               binary.string(), src.string(), fbuild.string(), fbuild.string(), target);
+    return 2;
+  }
+  std::vector<std::string> env_add;
+  std::string plugin;
+  if (!o.impl.empty() && o.impl != "reference") {
+    if ((name != "differential" && !property) || o.impl.rfind("plugin:", 0) != 0) {
+      fmt::print(stderr,
+                 "vgc fuzz: --impl takes plugin:PATH (or reference), for the differential and property targets only\n");
+      return 2;
+    }
+    plugin = fs::absolute(o.impl.substr(7)).string();
+    if (!fs::exists(plugin)) {
+      fmt::print(stderr, "vgc fuzz: no such plugin {}\n", plugin);
+      return 2;
+    }
+    env_add.push_back("VGC_FUZZ_PLUGIN=" + plugin);
+  }
+  // Every VGC_* variable the target runs with: ours (VGC_FAULT,
+  // VGC_FUZZ_MESH_FAULT, ...) and the plugin's path.
+  std::vector<std::string> run_env = vgc_environment();
+  run_env.erase(std::remove_if(run_env.begin(), run_env.end(),
+                               [](const std::string& v) { return v.rfind("VGC_FUZZ_PLUGIN=", 0) == 0; }),
+                run_env.end());
+  std::vector<std::string> target_env = run_env;
+  if (!plugin.empty()) {
+    target_env.push_back("VGC_FUZZ_PLUGIN=" + plugin);
+    std::sort(target_env.begin(), target_env.end());
+  }
+
+  CampaignSummary s;
+  s.target = target;
+  s.seed = o.seed;
+  s.jobs = std::max(1, o.jobs);
+  s.time_s = o.time_s;
+  s.binary = binary.string();
+  s.implementation = plugin.empty() ? "reference" : "plugin:" + plugin;
+  s.environment = target_env;
+  s.empty_corpus = o.empty_corpus;
+  s.stop_at_first = o.stop_at_first;
+  s.baseline = o.baseline;
+  s.run = utc_stamp() + "-seed" + std::to_string(o.seed);
+  const fs::path dir = src / "reports" / "fuzz" / target / s.run;
+  s.run_dir = dir.string();
+  const fs::path corpus = dir / "corpus", crashes = dir / "crashes", cex = dir / "counterexamples";
+  std::error_code ec;
+  fs::create_directories(corpus, ec);
+  if (!ec) fs::create_directories(crashes, ec);
+  if (!ec) fs::create_directories(cex, ec);
+  if (ec) {
+    fmt::print(stderr, "vgc fuzz: cannot create {}: {}\n", dir.string(), ec.message());
+    return 2;
+  }
+  if (!o.empty_corpus && fs::is_directory(src / "corpora" / "fuzz" / target))
+    for (const auto& e : fs::directory_iterator(src / "corpora" / "fuzz" / target))
+      if (e.is_regular_file()) {
+        fs::copy_file(e.path(), corpus / e.path().filename(), fs::copy_options::overwrite_existing, ec);
+        ++s.seed_files;
+      }
+  const fs::path dict = src / "corpora" / "fuzz" / (target + ".dict");
+
+  // One job stopping at the first finding runs libFuzzer in its plain
+  // mode, which stops there by itself; otherwise fork mode (-fork=N).
+  const bool plain = o.stop_at_first && s.jobs == 1;
+  std::vector<std::string> argv = {binary.string(),
+                                   plain ? "-runs=-1" : "-fork=" + std::to_string(s.jobs),
+                                   "-max_total_time=" + std::to_string(std::max(1LL, static_cast<long long>(o.time_s))),
+                                   "-seed=" + std::to_string(o.seed),
+                                   "-artifact_prefix=" + crashes.string() + "/",
+                                   "-print_final_stats=1",
+                                   "-max_len=" + std::to_string(o.max_len)};
+  if (!o.stop_at_first) argv.insert(argv.begin() + 2, "-ignore_crashes=1");
+  // --stop-at-first in fork mode: the campaign stops the jobs itself as
+  // soon as a crash input is saved.
+  std::function<bool()> stop_now;
+  if (o.stop_at_first)
+    stop_now = [crashes] {
+      std::error_code e;
+      return fs::directory_iterator(crashes, e) != fs::directory_iterator();
+    };
+  if (fs::exists(dict)) argv.push_back("-dict=" + dict.string());
+  argv.push_back(corpus.string());
+  std::string cmdline;
+  for (const auto& a : argv) cmdline += (cmdline.empty() ? "" : " ") + shell_quote(a);
+  cmdline = env_prefix(target_env) + cmdline;
+  s.command = cmdline;
+  fmt::print(stderr, "vgc fuzz: {} for {} s, {} job(s), seed {}, {} seed inputs\n  run: {}\n  {}\n", target,
+             o.time_s, s.jobs, o.seed, s.seed_files, dir.string(), cmdline);
+
+  std::ofstream log(dir / "fuzzer.log");
+  Progress p;
+  const bool tty = isatty(2);
+  const auto t0 = clock::now();
+  const auto sys0 = fs::file_time_type::clock::now();
+  // libFuzzer is asked to stop at --time; it gets 5 s more to write its
+  // final stats, then its process group is killed.
+  const auto deadline = t0 + std::chrono::duration_cast<clock::duration>(std::chrono::duration<double>(o.time_s + 5));
+  auto last_print = t0 - std::chrono::seconds(60);
+  std::vector<CampaignSample> samples;  // for report.html's plots
+  const RunResult rr = run_streaming(argv, env_add, deadline, [&](const std::string& line) {
+    log << line << '\n';
+    if (!parse_progress(line, &p)) return;
+    const auto now = clock::now();
+    const double t = std::chrono::duration<double>(now - t0).count();
+    samples.push_back({t, p.execs, p.cov, p.ft, p.corp});
+    const std::string status =
+        fmt::format("[{:5.0f}/{:.0f} s] execs {}  exec/s {}  cov {}  ft {}  corpus {}  crashes {}", t, o.time_s,
+                    p.execs, p.exec_s, p.cov, p.ft, p.corp, p.crashes);
+    if (tty) {
+      fmt::print(stderr, "\r{:<100}", status);
+    } else if (now - last_print >= std::chrono::seconds(10)) {
+      fmt::print(stderr, "{}\n", status);
+      last_print = now;
+    }
+  }, stop_now);
+  if (rr.killed) log << "vgc fuzz: still running " << o.time_s + 5 << " s after the start: process group killed\n";
+  log.close();
+  if (tty) fmt::print(stderr, "\n");
+  s.libfuzzer_exit = rr.exit;
+  s.killed_at_deadline = rr.killed;
+  if (rr.killed) fmt::print(stderr, "vgc fuzz: libFuzzer overran --time {} s: killed\n", o.time_s);
+
+  // Crashes: re-run each saved input alone (smallest first, within a budget
+  // of its own: at most 200 inputs and max(10 s, --time / 10), replays of
+  // the counterexamples included), sign it, keep the smallest per signature.
+  struct Group {
+    std::map<fs::path, std::string> shown;    // per input: its signature with exact clause ids
+    std::vector<fs::path> files;
+    std::map<fs::path, std::string> printed;  // the target's own counterexample block, per input
+  };
+  std::map<std::string, Group> unique;
+  std::vector<fs::path> saved;
+  for (const auto& e : fs::directory_iterator(crashes))
+    if (e.is_regular_file()) saved.push_back(e.path());
+  std::sort(saved.begin(), saved.end(), [](const fs::path& a, const fs::path& b) {
+    const auto sa = fs::file_size(a), sb = fs::file_size(b);
+    return sa != sb ? sa < sb : a < b;
+  });
+  s.crash_inputs = saved.size();
+  for (const fs::path& f : saved)
+    if (auto t = seconds_since(f, sys0); t && (!s.time_to_first_finding_s || *t < *s.time_to_first_finding_s))
+      s.time_to_first_finding_s = t;
+  const auto sign_until = clock::now() + std::chrono::duration_cast<clock::duration>(
+                                             std::chrono::duration<double>(std::max(10.0, o.time_s / 10)));
+  std::map<fs::path, std::optional<double>> first_seen;
+  for (const fs::path& f : saved) {
+    if (s.crash_inputs_signed >= 200 || clock::now() >= sign_until) break;
+    ++s.crash_inputs_signed;
+    const std::string output = run_capture("timeout 5 env " + env_prefix(target_env) + shell_quote(binary.string()) +
+                                           " " + shell_quote(f.string()) + " 2>&1");
+    const CrashSignature sig = crash_signature(output);
+    Group& g = unique[sig.key];
+    g.shown[f] = sig.shown;
+    g.files.push_back(f);
+    first_seen[f] = seconds_since(f, sys0);
+    const std::string open = mesh ? "----8<---- mesh.txt\n" : "----8<---- counterexample.vgc\n";
+    if (auto a = output.find(open); a != std::string::npos) {
+      if (auto b = output.find("----8<----\n", a + open.size()); b != std::string::npos)
+        g.printed[f] = output.substr(a + open.size(), b - a - open.size());
+    }
+  }
+  const std::string vgc = o.vgc_binary.empty() ? self_exe().string() : o.vgc_binary;
+  const std::string impl_spec = plugin.empty() ? std::string("reference") : "plugin:" + plugin;
+  std::size_t k = 0;
+  for (auto& [key, g] : unique) {
+    CampaignCrash c;
+    const fs::path& rep = g.files.front();  // smallest (saved was sorted by size)
+    c.dedup_key = key;
+    c.signature = g.shown[rep];
+    for (const auto& [file, text] : g.shown)
+      if (text != c.signature && std::find(c.also.begin(), c.also.end(), text) == c.also.end()) c.also.push_back(text);
+    c.inputs = g.files.size();
+    c.input = rep.string();
+    for (const fs::path& f : g.files)
+      if (auto t = first_seen[f]; t && (!c.first_seen_s || *t < *c.first_seen_s)) c.first_seen_s = t;
+    c.clause = clause_of_finding(c.signature);
+    if (!c.clause.empty()) {
+      if (const Clause* cl = find_clause(c.clause)) c.level = clause_level_name(cl->level);
+      c.in_baseline = baseline.reasons.count(c.clause) > 0;
+    }
+    std::string bytes;
+    read_file(rep, &bytes);
+    ++k;
+    const fs::path cex_file =
+        cex / fmt::format("crash-{}{}.{}", k, c.clause.empty() ? "" : "-" + c.clause,
+                          name == "text" ? "txt" : mesh ? "mesh.txt" : "vgc");
+    c.counterexample = cex_file.string();
+    c.replay_fuzzer = env_prefix(target_env) + shell_quote(binary.string()) + " " + shell_quote(rep.string());
+    auto printed = g.printed.find(rep);
+    if (name == "text") {
+      write_file(cex_file, bytes);  // the input is text already
+      c.replay = c.replay_fuzzer;
+    } else if (mesh) {  // no command file: a mesh the node may not hold; the input replays
+      std::string text = "# vgc fuzz " + target + " counterexample: " + c.signature + "\n# from " + rep.string() +
+                         "\n# replay: " + c.replay_fuzzer + "\n";
+      text += printed != g.printed.end() ? printed->second : "# the target printed no mesh (a sanitizer finding)\n";
+      write_file(cex_file, text);
+      c.replay = c.replay_fuzzer;
+    } else {
+      // A finding named by clause replays as a certify counterexample,
+      // against the same implementation, with the same environment. So does
+      // a crash of a plugin in fuzz_differential (in process it takes the
+      // fuzzer down unnamed): `vgc replay` runs the plugin isolated and
+      // names the clause, as certify would.
+      const bool plugin_crash = c.clause.empty() && name == "differential" && !plugin.empty();
+      const bool replayable = !c.clause.empty() || plugin_crash;
+      const auto replay_line = [&] {
+        return env_prefix(run_env) + "vgc replay " + shell_quote(cex_file.string()) + " --impl " +
+               shell_quote(impl_spec);
+      };
+      c.replay = replayable ? replay_line() : env_prefix(run_env) + "vgc apply " + shell_quote(cex_file.string());
+      std::string body;
+      if (printed != g.printed.end()) body = printed->second;
+      else if (property) body = "# the target printed no command file (a sanitizer finding): replay the input\n";
+      else body = stream_to_text(bytes);
+      auto write_cex = [&] {
+        write_file(cex_file, "# vgc fuzz " + target + " counterexample: " + c.signature + "\n# from " +
+                                 rep.string() + "\n# replay: " + c.replay + "\n" + body);
+      };
+      write_cex();
+      if (replayable && fs::exists(vgc) && clock::now() < sign_until) {
+        // Which clause does it replay to? (`vgc replay` exits 1 naming it.)
+        const std::string r = run_capture("timeout 20 env " + env_prefix(run_env) + shell_quote(vgc) + " replay " +
+                                          shell_quote(cex_file.string()) + " --impl " + shell_quote(impl_spec) +
+                                          " 2>&1; echo \"vgc-replay-exit=$?\"");
+        static const std::regex named(R"(\b([A-Z][A-Z0-9]*(?:-[A-Z0-9]+)*-[0-9]+)\b)");
+        std::string found;
+        if (r.find("vgc-replay-exit=1") != std::string::npos)
+          for (std::sregex_iterator it(r.begin(), r.end(), named), end; it != end; ++it)
+            if (find_clause((*it)[1].str())) {
+              if (found.empty() || (*it)[1].str() == c.clause) found = (*it)[1].str();
+              if (found == c.clause) break;
+            }
+        c.replayed_clause = found;
+        if (plugin_crash) {
+          if (!found.empty()) {
+            c.clause = found;  // certify's name for the crash
+            if (const Clause* cl = find_clause(c.clause)) c.level = clause_level_name(cl->level);
+            c.in_baseline = baseline.reasons.count(c.clause) > 0;
+          } else {
+            c.replay = env_prefix(run_env) + "vgc apply " + shell_quote(cex_file.string());
+            write_cex();
+          }
+        }
+      } else if (plugin_crash) {
+        c.replay = env_prefix(run_env) + "vgc apply " + shell_quote(cex_file.string());
+        write_cex();
+      }
+    }
+    s.crashes.push_back(std::move(c));
+  }
+  // Group by clause.
+  std::map<std::string, CampaignClause> by_clause;
+  for (std::size_t i = 0; i < s.crashes.size(); ++i) {
+    const CampaignCrash& c = s.crashes[i];
+    CampaignClause& g = by_clause[c.clause];
+    g.clause = c.clause;
+    g.level = c.level;
+    g.in_baseline = c.in_baseline;
+    if (c.in_baseline) g.baseline_reason = baseline.reasons.at(c.clause);
+    g.crashes.push_back(i);
+    g.inputs += c.inputs;
+    if (c.first_seen_s && (!g.first_seen_s || *c.first_seen_s < *g.first_seen_s)) g.first_seen_s = c.first_seen_s;
+    if (!c.in_baseline) ++s.new_crashes;
+  }
+  for (auto& [id, g] : by_clause)
+    if (!id.empty()) s.clauses.push_back(std::move(g));
+  if (by_clause.count("")) s.clauses.push_back(std::move(by_clause[""]));
+
+  for (const auto& e : fs::directory_iterator(corpus))
+    if (e.is_regular_file()) {
+      ++s.corpus_files;
+      s.corpus_bytes += e.file_size();
+    }
+  s.wall_s = std::chrono::duration<double>(clock::now() - t0).count();
+  s.executions = p.execs;
+  s.exec_per_s_last = p.exec_s;
+  s.cov = p.cov;
+  s.ft = p.ft;
+  const double fuzz_wall = std::min(s.wall_s, o.time_s + 5);
+  s.exec_per_s_mean = fuzz_wall > 0 ? static_cast<double>(p.execs) / fuzz_wall : 0.0;
+
+  const std::string json = summary_json(s), md = summary_markdown(s);
+  // Written whole or not at all: a temporary file, then renamed.
+  for (const auto& [file, text] : {std::pair{dir / "summary.json", json}, std::pair{dir / "summary.md", md}}) {
+    fs::path tmp = file;
+    tmp += ".tmp";
+    if (!write_file(tmp, text)) {
+      fmt::print(stderr, "vgc fuzz: cannot write {}\n", file.string());
+      return 2;
+    }
+    fs::rename(tmp, file, ec);
+  }
+  // report.html: the same figures as a page, with coverage and corpus over time.
+  CampaignReport page;
+  page.target = s.target, page.run = s.run, page.command = s.command, page.implementation = s.implementation;
+  page.seed = s.seed, page.jobs = s.jobs, page.time_s = s.time_s, page.wall_s = s.wall_s;
+  page.executions = s.executions, page.exec_per_s_last = s.exec_per_s_last, page.exec_per_s_mean = s.exec_per_s_mean;
+  page.coverage = s.cov, page.features = s.ft, page.corpus_files = s.corpus_files, page.corpus_bytes = s.corpus_bytes;
+  page.seed_files = s.seed_files, page.crash_inputs = s.crash_inputs, page.samples = std::move(samples);
+  for (const CampaignCrash& c : s.crashes) {
+    CampaignFinding f;
+    f.signature = c.signature, f.also = c.also, f.inputs = c.inputs, f.counterexample = c.counterexample;
+    f.replay = c.replay, f.replay_fuzzer = c.replay_fuzzer;
+    std::ifstream in(c.counterexample, std::ios::binary);
+    f.counterexample_text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    page.findings.push_back(std::move(f));
+  }
+  if (std::string error; !write_campaign_html(dir.string(), page, &error)) fmt::print(stderr, "vgc fuzz: {}\n", error);
+  fmt::print("{}", md);
+  fmt::print("summary: {}\n", (dir / "summary.json").string());
+  const bool ran_nothing = p.execs == 0 && s.crash_inputs == 0;
+  if (out) *out = s;
+  if (ran_nothing) {
+    fmt::print(stderr, "vgc fuzz: libFuzzer ran no inputs (exit {}); see {}\n", rr.exit,
+               (dir / "fuzzer.log").string());
+    return 2;
+  }
+  return s.new_crashes == 0 ? 0 : 1;
+}
+
+std::string summary_json(const CampaignSummary& s) {
+  using nlohmann::json;
+  auto opt = [](const std::optional<double>& v) { return v ? json(*v) : json(nullptr); };
+  json crashes = json::array();
+  for (const CampaignCrash& c : s.crashes)
+    crashes.push_back({{"signature", c.signature},
+                       {"also", c.also},
+                       {"dedup_key", c.dedup_key},
+                       {"clause", c.clause},
+                       {"level", c.level},
+                       {"in_baseline", c.in_baseline},
+                       {"inputs", c.inputs},
+                       {"input", c.input},
+                       {"counterexample", c.counterexample},
+                       {"replay", c.replay},
+                       {"replay_fuzzer", c.replay_fuzzer},
+                       {"replayed_clause", c.replayed_clause ? json(*c.replayed_clause) : json(nullptr)},
+                       {"first_seen_s", opt(c.first_seen_s)}});
+  json clauses = json::array();
+  for (const CampaignClause& g : s.clauses)
+    clauses.push_back({{"clause", g.clause},
+                       {"level", g.level},
+                       {"in_baseline", g.in_baseline},
+                       {"baseline_reason", g.baseline_reason},
+                       {"crashes", g.crashes},
+                       {"inputs", g.inputs},
+                       {"first_seen_s", opt(g.first_seen_s)}});
+  json j = {{"target", s.target},
+            {"run", s.run},
+            {"run_dir", s.run_dir},
+            {"binary", s.binary},
+            {"implementation", s.implementation},
+            {"environment", s.environment},
+            {"seed", s.seed},
+            {"jobs", s.jobs},
+            {"time_s", s.time_s},
+            {"wall_s", s.wall_s},
+            {"killed_at_deadline", s.killed_at_deadline},
+            {"empty_corpus", s.empty_corpus},
+            {"stop_at_first", s.stop_at_first},
+            {"baseline", s.baseline},
+            {"executions", s.executions},
+            {"exec_per_s_last", s.exec_per_s_last},
+            {"exec_per_s_mean", s.exec_per_s_mean},
+            {"coverage", {{"cov", s.cov}, {"ft", s.ft}}},
+            {"corpus", {{"files", s.corpus_files}, {"bytes", s.corpus_bytes}, {"seed_files", s.seed_files}}},
+            {"crash_inputs", s.crash_inputs},
+            {"crash_inputs_signed", s.crash_inputs_signed},
+            {"time_to_first_finding_s", opt(s.time_to_first_finding_s)},
+            {"new_crashes", s.new_crashes},
+            {"crashes", crashes},
+            {"clauses", clauses},
+            {"libfuzzer_exit", s.libfuzzer_exit},
+            {"command", s.command}};
+  return j.dump(2) + "\n";
+}
+
+std::string summary_markdown(const CampaignSummary& s) {
+  auto secs = [](const std::optional<double>& v) { return v ? fmt::format("{:.1f} s", *v) : std::string("-"); };
+  std::string md = fmt::format(
+      "# vgc fuzz {} — {}\n\n"
+      "| | |\n|---|---|\n| implementation | {} |\n| seed, jobs, time | {}, {}, {} s (wall {:.0f} s{}) |\n"
+      "| executions | {} |\n| exec/s | {:.0f} mean, {} last reported |\n| coverage | cov {}, ft {} |\n"
+      "| corpus | {} files, {} bytes ({} seeds{}) |\n| crash inputs | {} ({} re-run and signed; {} unique, {} new) |\n"
+      "| time to first finding | {} |\n",
+      s.target, s.run, s.implementation, s.seed, s.jobs, s.time_s, s.wall_s,
+      s.killed_at_deadline ? "; libFuzzer overran and was killed" : "", s.executions, s.exec_per_s_mean,
+      s.exec_per_s_last, s.cov, s.ft, s.corpus_files, s.corpus_bytes, s.seed_files,
+      s.empty_corpus ? ", started empty" : "", s.crash_inputs, s.crash_inputs_signed, s.crashes.size(),
+      s.new_crashes, secs(s.time_to_first_finding_s));
+  if (!s.baseline.empty()) md += fmt::format("| baseline | {} |\n", s.baseline);
+  md += fmt::format("\nCommand: `{}`\n\n", s.command);
+  if (s.crashes.empty()) return md;
+  md += "## Findings by clause\n\n";
+  for (const CampaignClause& g : s.clauses) {
+    md += fmt::format("### {}{}{} — {} crash(es), {} input(s), first after {}\n\n",
+                      g.clause.empty() ? "(no clause: sanitizer or oracle finding)" : g.clause,
+                      g.level.empty() ? "" : " (" + g.level + ")",
+                      g.in_baseline ? " [baseline: " + g.baseline_reason + "]" : "", g.crashes.size(), g.inputs,
+                      secs(g.first_seen_s));
+    for (std::size_t i : g.crashes) {
+      const CampaignCrash& c = s.crashes[i];
+      md += fmt::format("- **{}** ({} inputs)\n", c.signature, c.inputs);
+      for (const auto& a : c.also) md += fmt::format("  - also: {}\n", a);
+      md += fmt::format("  - counterexample: `{}`\n  - replay: `{}`\n  - replay the input: `{}`\n", c.counterexample,
+                        c.replay, c.replay_fuzzer);
+      if (c.replayed_clause)
+        md += fmt::format("  - replayed: {}\n", c.replayed_clause->empty() ? "no clause named (did not reproduce)"
+                                                 : *c.replayed_clause == c.clause ? "same clause"
+                                                                                  : "names " + *c.replayed_clause);
+    }
+    md += "\n";
+  }
+  return md;
+}
+
+}  // namespace vgc::fuzz

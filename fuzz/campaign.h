@@ -1,0 +1,116 @@
+// campaign.h — a libFuzzer campaign on one fuzz target, run and summarized:
+// what `vgc fuzz TARGET` does (cli/cmd_fuzz.cpp parses the options and
+// calls run_campaign).
+//
+// Spec: docs/fuzzing.md "Running a campaign"; clause ids and levels of the
+// catalog (conformance/clause.h); the baseline format of `vgc certify`
+// (conformance/report/baseline.h).
+//
+// Rationale: a campaign's findings must be triaged like certify's: each
+// unique crash is signed from the target's FINDING line, named by the
+// clause the target attributed it to (fuzz/clause_finding.h), grouped by
+// clause, and marked when the clause is in a --baseline; each gets a
+// counterexample and a replay command carrying every VGC_* variable of the
+// run. The summary is a plain struct (CampaignSummary) so that other
+// renderers (JSON, Markdown here; HTML elsewhere) need nothing but it.
+// --time is a wall-clock limit: libFuzzer's -max_total_time is asked for,
+// and the whole process group is killed at the deadline if it overruns
+// (fork mode with many crashing inputs did); re-running saved crashes to
+// sign them and replaying counterexamples has its own budget after it
+// (max(10 s, --time / 10), at most 200 inputs; the summary counts the
+// inputs not re-run). Nothing here throws for anything
+// the target or the implementation does; errors are exit code 2 with a
+// message.
+#pragma once
+
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace vgc::fuzz {
+
+struct CampaignOptions {
+  std::string target;         // stream, text, differential, mesh_*, property_<group> (fuzz_ optional)
+  double time_s = 60;         // wall-clock limit of the fuzzing
+  int jobs = 1;               // libFuzzer -fork=N
+  std::string impl;           // "", "reference" or "plugin:PATH" (differential, property_*)
+  unsigned seed = 1;
+  std::size_t max_len = 1024;
+  std::string fuzz_build;     // the clang -DVGC_FUZZ=ON build ("" : $VGC_FUZZ_BUILD_DIR or build-fuzz)
+  std::string source_dir;     // corpora/, reports/ ("" : $VGC_SOURCE_DIR or the configured source)
+  std::string baseline;       // a certify baseline file; its clauses are marked, not new
+  bool empty_corpus = false;  // start from no input at all, not the committed corpus
+  bool stop_at_first = false; // stop at the first finding (time to find)
+  std::string vgc_binary;     // for replaying counterexamples ("" : this program)
+};
+
+// One unique crash (a signature), its inputs and how to replay it.
+struct CampaignCrash {
+  std::string signature;      // the smallest input's FINDING line, clause ids exact
+  std::vector<std::string> also;  // other exact forms sharing the dedup key
+  std::string dedup_key;      // digits folded
+  std::string clause;         // the clause the target named, "" when none (sanitizer, mesh)
+  std::string level;          // its level (MUST, SHOULD, ...), "" when none
+  bool in_baseline = false;
+  std::size_t inputs = 0;
+  std::string input;          // the smallest input
+  std::string counterexample; // command file (or mesh text / the text input)
+  std::string replay;         // shell command replaying the counterexample, with its environment
+  std::string replay_fuzzer;  // shell command re-running the input through the target
+  // `vgc replay` of the counterexample was run: the clause it named ("" if
+  // none); only for findings with a clause.
+  std::optional<std::string> replayed_clause;
+  std::optional<double> first_seen_s;  // seconds from the start to the first input of this crash
+};
+
+// The crashes of one clause ("" groups those without one).
+struct CampaignClause {
+  std::string clause;
+  std::string level;
+  bool in_baseline = false;
+  std::string baseline_reason;
+  std::vector<std::size_t> crashes;  // indices into CampaignSummary::crashes
+  std::size_t inputs = 0;
+  std::optional<double> first_seen_s;
+};
+
+struct CampaignSummary {
+  std::string target, run, run_dir, binary, implementation, command;
+  std::vector<std::string> environment;  // VGC_* variables of the run, NAME=value
+  unsigned seed = 0;
+  int jobs = 1;
+  double time_s = 0, wall_s = 0;
+  bool killed_at_deadline = false;   // libFuzzer overran --time and was killed
+  bool empty_corpus = false, stop_at_first = false;
+  std::string baseline;
+  long long executions = 0, exec_per_s_last = 0, cov = 0, ft = 0;
+  double exec_per_s_mean = 0;
+  std::size_t corpus_files = 0, corpus_bytes = 0, seed_files = 0;
+  std::size_t crash_inputs = 0, crash_inputs_signed = 0;  // saved, and re-run to sign them
+  std::optional<double> time_to_first_finding_s;
+  std::vector<CampaignCrash> crashes;
+  std::vector<CampaignClause> clauses;  // sorted by clause id, "" last
+  std::size_t new_crashes = 0;          // crashes whose clause is not in the baseline
+  int libfuzzer_exit = 0;
+};
+
+// Runs the campaign, writes reports/fuzz/<target>/<run>/{summary.json,
+// summary.md, counterexamples/, corpus/, crashes/, fuzzer.log}, prints the
+// Markdown summary on stdout and progress on stderr. Returns the exit code:
+// 0 nothing new found, 1 crashes found outside the baseline, 2 usage or
+// infrastructure error (message on stderr). *out (optional) gets the summary.
+int run_campaign(const CampaignOptions& o, CampaignSummary* out = nullptr);
+
+std::string summary_json(const CampaignSummary& s);
+std::string summary_markdown(const CampaignSummary& s);
+
+// A binary stream (reference/command_binary.h) as a command file: the
+// commands that decode, then a comment naming the bytes that do not.
+std::string stream_to_text(const std::string& bytes);
+
+// The clause id a FINDING line names ("fuzz_x: [property: ]CLAUSE (LEVEL,
+// status): ..."), if it is one of the catalog; "" otherwise.
+std::string clause_of_finding(const std::string& finding_line);
+
+}  // namespace vgc::fuzz
