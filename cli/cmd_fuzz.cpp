@@ -40,6 +40,7 @@
 #include "command_binary.h"
 #include "command_text.h"
 #include "read_file.h"
+#include "progress_line.h"
 #include "subcommand.h"
 
 namespace vgc::cli {
@@ -317,7 +318,9 @@ int run_campaign(const FuzzOptions& o) {
     }
     plugin = fs::absolute(o.impl.substr(7)).string();
     if (!fs::exists(plugin)) {
-      fmt::print(stderr, "vgc fuzz: no such plugin {}\n", plugin);
+      fmt::print(stderr,
+                 "vgc fuzz: no such plugin {}: give --impl plugin:PATH the path of your plugin's shared library\n",
+                 plugin);
       return 2;
     }
     env_add.push_back("VGC_FUZZ_PLUGIN=" + plugin);
@@ -361,26 +364,19 @@ int run_campaign(const FuzzOptions& o) {
 
   std::ofstream log(dir / "fuzzer.log");
   Progress p;
-  const bool tty = isatty(2);
   const auto t0 = std::chrono::steady_clock::now();
-  auto last_print = t0 - std::chrono::seconds(60);
+  // On a terminal redrawn in place, its elapsed time at least twice a
+  // second; in a log a line every 10 s (progress_line.h).
+  ProgressLine status(true);
+  status.update(fmt::format("{} for {:.0f} s: starting libFuzzer", target, o.time_s), true);
   const int rc = run_streaming(argv, env_add, [&](const std::string& line) {
     log << line << '\n';
     if (!parse_progress(line, &p)) return;
-    const auto now = std::chrono::steady_clock::now();
-    const double t = std::chrono::duration<double>(now - t0).count();
-    const std::string status =
-        fmt::format("[{:5.0f}/{:.0f} s] execs {}  exec/s {}  cov {}  ft {}  corpus {}  crashes {}", t, o.time_s,
-                    p.execs, p.exec_s, p.cov, p.ft, p.corp, p.crashes);
-    if (tty) {
-      fmt::print(stderr, "\r{:<100}", status);
-    } else if (now - last_print >= std::chrono::seconds(10)) {
-      fmt::print(stderr, "{}\n", status);
-      last_print = now;
-    }
+    status.update(fmt::format("{} for {:.0f} s: execs {}  exec/s {}  cov {}  ft {}  corpus {}  crashes {}", target,
+                              o.time_s, p.execs, p.exec_s, p.cov, p.ft, p.corp, p.crashes));
   });
   log.close();
-  if (tty) fmt::print(stderr, "\n");
+  status.finish();
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
   // Crashes: re-run each saved input alone, sign it, keep the smallest per signature.

@@ -3,6 +3,7 @@
 #include <CLI/CLI.hpp>
 #include <fmt/core.h>
 
+#include <string>
 #include <vector>
 
 #include "subcommand.h"
@@ -33,6 +34,27 @@ int main(int argc, char** argv) {
                                                 vgc::kReportFormatVersion));
   int exit_code = 0;
   vgc::cli::add_all_subcommands(app, &exit_code);
+  // A word where the subcommand goes that names none: say which there are.
+  if (argc > 1 && argv[1][0] != '-') {
+    std::string names;
+    bool known = false;
+    for (const CLI::App* sub : app.get_subcommands([](const CLI::App*) { return true; })) {
+      names += (names.empty() ? "" : ", ") + sub->get_name();
+      known = known || sub->get_name() == argv[1];
+    }
+    if (!known) {
+      fmt::print(stderr, "vgc: unknown command '{}': use one of {} (vgc --help says what each does)\n", argv[1],
+                 names);
+      return 2;
+    }
+  }
+  // Usage errors name the subcommand whose --help lists the options and
+  // the values they take.
+  app.failure_message([](const CLI::App* a, const CLI::Error& e) {
+    std::string where = "vgc";
+    for (const CLI::App* sub : a->get_subcommands()) where += " " + sub->get_name();
+    return where + ": " + e.what() + "\nRun `" + where + " --help` for the options and the values they take.\n";
+  });
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
