@@ -15,9 +15,10 @@
 #   INPUT_TIMEOUT          seconds per answer                         (--timeout, default 5)
 #   INPUT_STRICT           true: also gate on IMPLEMENTATION-DEFINED clauses (--strict)
 #   INPUT_REPORTS          where runs are written (default $RUNNER_TEMP/vgc-reports)
-#   INPUT_VGC              the vgc program to use (relative: to the workspace); empty: `vgc` from PATH if
-#                          there is one (the .deb), else built from the
-#                          action's own checkout with `./vgc build vgc`
+#   INPUT_VGC              the vgc program to use (relative: to the workspace);
+#                          empty: `vgc` from PATH if there is one (the .deb),
+#                          else built from the action's own checkout with
+#                          `./vgc build vgc`
 #   INPUT_WORKING_DIRECTORY  where certify runs (default $GITHUB_WORKSPACE), so
 #                          relative paths in exec: commands and plugin: paths work
 #   INPUT_ARTIFACT_NAME    the artifact's name (default vgc-report, or
@@ -35,8 +36,15 @@
 # quotes vgc's own words.
 set -uo pipefail
 
+annotate() {  # annotate TITLE MESSAGE: an ::error:: workflow command (% and newlines escaped)
+  local m=${2//%/%25}
+  m=${m//$'\r'/%0D}
+  m=${m//$'\n'/%0A}
+  printf '::error title=%s::%s\n' "$1" "$m"
+}
+
 fail() {  # fail MESSAGE: a problem with the action's own inputs or environment
-  echo "::error title=vgc certify::$1"
+  annotate "vgc certify" "$1"
   [ -n "${GITHUB_OUTPUT:-}" ] && printf 'verdict=error\nexit-code=2\nreport-dir=\n' >>"$GITHUB_OUTPUT"
   [ -n "${GITHUB_STEP_SUMMARY:-}" ] && printf '## vgc certify: error\n\n%s\n' "$1" >>"$GITHUB_STEP_SUMMARY"
   exit 2
@@ -143,13 +151,15 @@ case "$verdict" in
   conformant) ;;
   not-conformant)
     # One annotation per finding line ("  fail     CLAUSE  message").
-    sed -n 's/^  \(fail\|crash\|timeout\) \+\([A-Z0-9-]\+\) \+\(.*\)$/::error title=vgc \1 \2::\3/p' "$out"
-    echo "::error title=vgc certify::${first_line:-not conformant} (report: $report_dir/summary.md)" ;;
+    sed -n 's/^  \(fail\|crash\|timeout\) \+\([A-Z0-9-]\+\) \+\(.*\)$/\1 \2\t\3/p' "$out" |
+      while IFS=$'\t' read -r title message; do annotate "vgc $title" "$message"; done
+    annotate "vgc certify" "${first_line:-not conformant} (report: $report_dir/summary.md)" ;;
   incomplete)
-    echo "::error title=vgc certify::${first_line:-incomplete}: some clauses could not be judged (the 'unchecked' lines above say why); raise 'cases' or 'budget' (report: $report_dir/summary.md)" ;;
+    annotate "vgc certify" "${first_line:-incomplete}: some clauses could not be judged (the 'unchecked' lines above say why); raise 'cases' or 'budget' (report: $report_dir/summary.md)" ;;
   error)
-    msg=$(grep '^vgc' "$err" | grep -v '^vgc certify: .*(seed [0-9]*, ' | tail -n 1)
-    echo "::error title=vgc certify::${msg:-vgc exited with $code and wrote no report (the log above says why)}" ;;
+    msg=$(grep '^vgc' "$err" | grep -v '^vgc certify: .*(seed [0-9]*, ' | grep -v '^vgc certify: what to do' | tail -n 1)
+    fix=$(grep '^vgc certify: what to do: ' "$err" | tail -n 1)
+    annotate "vgc certify" "${msg:-vgc exited with $code and wrote no report (the log above says why)}${fix:+ — ${fix#vgc certify: }}" ;;
 esac
 rm -f "$out" "$err"
 [ "$verdict" = conformant ] && exit 0

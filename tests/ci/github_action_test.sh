@@ -13,7 +13,8 @@
 # relative to the workspace (conformant); a shard (its artifact name); a run
 # cut short by its budget (incomplete, exit 2, with a report); a plugin that
 # does not exist (error, exit 2, no report, vgc's message in the summary and
-# the annotation); and a missing impl input.
+# the annotation); a program the shell cannot find (the annotation says what
+# to do); and a missing impl input.
 set -uo pipefail
 
 [ $# -eq 3 ] || { echo "usage: $0 SOURCE_DIR VGC FAULT_PLUGIN" >&2; exit 2; }
@@ -110,7 +111,13 @@ check "missing plugin: report-dir is empty (nothing to upload)" test -z "$(outpu
 check "missing plugin: the job summary quotes vgc" grep -q '^vgc certify: .*libnot_there.so' "$run/summary"
 check "missing plugin: the annotation quotes vgc" grep -q '^::error title=vgc certify::vgc certify: .*libnot_there.so' "$run/log"
 
-# 7. No impl input.
+# 7. A program the shell cannot find: vgc's account and its "what to do".
+action nohost INPUT_IMPL='exec:./no-such-host --vgc'
+check "no such program: exit 2" test "$status" -eq 2 || show
+check "no such program: verdict=error" test "$(output verdict)" = error
+check "no such program: the annotation says what to do" grep -q '^::error title=vgc certify::vgc certify: exec:./no-such-host --vgc: cannot start it.* — what to do: the shell found no such program' "$run/log"
+
+# 8. No impl input.
 action noimpl
 check "no impl: exit 2" test "$status" -eq 2 || show
 check "no impl: the annotation names the input" grep -q "^::error title=vgc certify::the input 'impl' is required" "$run/log"
