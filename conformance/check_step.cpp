@@ -26,6 +26,7 @@ const char* finding_status_name(FindingStatus s) {
     case FindingStatus::Fail: return "fail";
     case FindingStatus::Crash: return "crash";
     case FindingStatus::Timeout: return "timeout";
+    case FindingStatus::NotJudged: return "not-judged";
   }
   return "?";
 }

@@ -27,8 +27,12 @@
 
 namespace vgc {
 
-enum class FindingStatus { Fail, Crash, Timeout };
-const char* finding_status_name(FindingStatus s);  // "fail", "crash", "timeout"
+// NotJudged is no finding: a capability check (capability.h) returns it
+// when its oracle cannot be asked about the case (OpenSubdiv refuses the
+// mesh), `message` saying why; certify counts the case as not judged and
+// `vgc replay` says so instead of "passes".
+enum class FindingStatus { Fail, Crash, Timeout, NotJudged };
+const char* finding_status_name(FindingStatus s);  // "fail", "crash", "timeout", "not-judged"
 
 struct Finding {
   std::string clause;          // catalog id

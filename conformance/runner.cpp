@@ -333,9 +333,10 @@ PropertyOutcome run_property(const PropertySpec& spec, Implementation& sut, cons
       const int variant = static_cast<int>(c.trace.size() % 3) + 1;
       CapabilityRequest request{capability->capability, variant, std::nullopt};
       if (capability->check_drawn) request.draw = *rc::gen::arbitrary<std::uint32_t>();
-      if (auto f = run_capability_check(*capability, c.model, *c.sut, request)) {
+      const auto f = run_capability_check(*capability, c.model, *c.sut, request);
+      if (f && f->status != FindingStatus::NotJudged) {
         fail_case(*f, request);
-      } else if (!c.shrinking) {
+      } else if (!f && !c.shrinking) {  // a case the oracle could not judge exercises nothing
         std::stringstream ids(capability_clause_list);
         std::string id;
         while (std::getline(ids, id, ',')) ++(*c.exercised)[id];
@@ -704,6 +705,10 @@ ReplayResult replay_program(const Program& program, Implementation& sut) {
     return r;
   }
   if (auto f = run_capability_check(*check, model, sut, q)) {
+    if (f->status == FindingStatus::NotJudged) {
+      r.not_judged = "not judged (" + f->clause + "): " + f->message;
+      return r;
+    }
     r.failure = f;
     r.failed_at = static_cast<int>(program.commands.size());
   }
