@@ -29,7 +29,10 @@ int run_apply(const ApplyOptions& o) {
   if (o.file == "-") {
     read_stdin(&text);
   } else if (!read_file(o.file, &text)) {
-    fmt::print(stderr, "vgc apply: cannot read {}\n", o.file);
+    fmt::print(stderr,
+               "vgc apply: cannot read {} ({}): give the path of a command file (docs/commands.md), or - for "
+               "standard input\n",
+               o.file, read_failure(o.file));
     return 2;
   }
   std::vector<Command> commands;

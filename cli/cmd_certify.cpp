@@ -4,13 +4,18 @@
 // Exit codes (verdict.h): 0 conformant, 1 not conformant, 2 usage or
 // infrastructure error or an incomplete run.
 #include <fmt/core.h>
+#include <unistd.h>
 
+#include <cerrno>
+#include <cstring>
 #include <ctime>
 #include <filesystem>
 #include <map>
 #include <memory>
+#include <sstream>
 
 #include "baseline.h"
+#include "clause.h"
 #include "exec_implementation.h"  // shell_quote
 #include "implementation.h"
 #include "open_impl.h"
@@ -58,6 +63,46 @@ bool parse_shard(const std::string& s, int* index, int* count) {
   return true;
 }
 
+int usage(const std::string& message) {
+  fmt::print(stderr, "vgc certify: {}\n", message);
+  return 2;
+}
+
+// The first comma-separated pattern of `glob` that matches no clause id
+// (a typo would silently leave clauses unchecked), or "" when all match.
+std::string unmatched_pattern(const std::string& glob) {
+  std::stringstream ss(glob);
+  std::string pattern;
+  bool any = false;
+  while (std::getline(ss, pattern, ',')) {
+    if (pattern.empty()) continue;
+    any = true;
+    bool matched = false;
+    for (const Clause& c : clause_catalog()) matched = matched || clause_selected(pattern, c.id);
+    if (!matched) return pattern;
+  }
+  return any ? "" : glob;
+}
+
+// Whether runs can be written under `dir` (it or its nearest existing
+// parent is a directory we may write into), checked before a run that may
+// take long; nothing is created.
+bool reports_writable(const std::string& dir, std::string* why) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  fs::path p = fs::absolute(dir.empty() ? "." : dir, ec);
+  while (!fs::exists(p, ec) && p.has_parent_path() && p != p.parent_path()) p = p.parent_path();
+  if (!fs::is_directory(p, ec)) {
+    *why = p.string() + " is not a directory";
+    return false;
+  }
+  if (::access(p.c_str(), W_OK | X_OK) != 0) {
+    *why = p.string() + ": " + std::strerror(errno);
+    return false;
+  }
+  return true;
+}
+
 std::string rerun_command(const Options& o) {
   std::string c = vgc_environment_prefix() + program_command() + " certify --impl " + shell_quote(o.impl) + " --seed " +
                   std::to_string(o.seed) + " --cases " + std::to_string(o.cases) + " --budget " +
@@ -79,13 +124,23 @@ int run(const Options& o) {
   ro.budget_seconds = o.budget;
   ro.clause_glob = o.clauses;
   if (!parse_shard(o.shard, &ro.shard_index, &ro.shard_count)) {
-    fmt::print(stderr, "vgc certify: --shard takes I/N with 1 <= I <= N, got '{}'\n", o.shard);
+    fmt::print(stderr, "vgc certify: --shard takes I/N with 1 <= I <= N, got '{}': for example --shard 2/3 runs "
+                       "the second of three shards\n", o.shard);
     return 2;
   }
-  if (o.cases < 1 || o.budget <= 0 || o.timeout <= 0) {
-    fmt::print(stderr, "vgc certify: --cases, --budget and --timeout must be positive\n");
-    return 2;
-  }
+  if (o.cases < 1)
+    return usage(fmt::format("--cases is {}: give a positive number of cases per property (default 200)", o.cases));
+  if (o.max_size < 1) return usage(fmt::format("--max-size is {}: give a positive size (default 50)", o.max_size));
+  if (!(o.budget > 0))
+    return usage(fmt::format("--budget is {:g}: give a positive number of seconds (default 300)", o.budget));
+  if (!(o.timeout > 0))
+    return usage(fmt::format("--timeout is {:g}: give a positive number of seconds (default 5)", o.timeout));
+  if (const std::string bad = unmatched_pattern(o.clauses); !bad.empty())
+    return usage("--clauses pattern '" + bad + "' matches no clause id: `vgc clauses` lists them; give comma-separated "
+                 "ids or globs, e.g. --clauses 'LAYER-*,BONE-FOREST-1'");
+  if (std::string why; !reports_writable(o.reports, &why))
+    return usage("cannot write reports under '" + o.reports + "' (" + why +
+                 "): give --reports a directory you can write (it is created if missing)");
   Baseline baseline;
   if (!o.baseline.empty()) {
     std::string error;
@@ -111,11 +166,12 @@ int run(const Options& o) {
 
   ProgressLine line(!o.quiet);
   ro.progress = [&line](const RunProgress& p) {
-    line.update(fmt::format("[{}/{}] {:<18} {:>4}/{} cases{}{}{}  {:.1f} s", p.property_index + 1, p.property_count,
-                            p.property, p.cases_done, p.cases_total,
-                            p.failures ? fmt::format(", {} found", p.failures) : "",
+    // ProgressLine adds the elapsed time, and on a terminal redraws it
+    // twice a second however long one case takes.
+    line.update(fmt::format("[{}/{}] {:<18} {:>4}/{} cases, {} found{}{}", p.property_index + 1, p.property_count,
+                            p.property, p.cases_done, p.cases_total, p.failures,
                             p.set_aside ? fmt::format(", {} set aside", p.set_aside) : "",
-                            p.shrinking ? "  shrinking a failure" : "", p.elapsed_seconds));
+                            p.shrinking ? "  shrinking a failure" : ""));
   };
   // One permanent line per property as it finishes (in a CI log the only
   // sign of progress besides a status line every 10 s).
@@ -130,14 +186,17 @@ int run(const Options& o) {
     if (!p.note.empty() && p.status != "pass") fmt::print(stderr, "      {}\n", p.note);
   };
   register_oracle_checks();  // the oracles judge the optional capabilities
+  line.update("asking the implementation for a fresh node", true);
   const RunResult result = run_certification(*sut, ro);
   line.finish();
   const Verdict verdict = judge(result, ctx.baseline, o.strict);
   ctx.run_dir = default_run_dir(o.reports, result, ctx);
-  std::filesystem::create_directories(std::filesystem::path(ctx.run_dir).parent_path());
   std::string error;
+  std::error_code ec;
+  std::filesystem::create_directories(std::filesystem::path(ctx.run_dir).parent_path(), ec);
   if (!write_report(o.reports, result, verdict, ctx, &error)) {
-    fmt::print(stderr, "vgc certify: {}\n", error);
+    fmt::print(stderr, "vgc certify: {}: no report was written (verdict {}); free space or give --reports a "
+                       "directory you can write, then run again: {}\n", error, verdict.name, ctx.command_line);
     return 2;
   }
 
@@ -182,7 +241,14 @@ void add(CLI::App& app, int* exit_code) {
   auto o = std::make_shared<Options>();
   auto* sub = app.add_subcommand("certify", "Certify an implementation of the geometry node against the spec");
   sub->add_option("--impl", o->impl, "reference | exec:CMD | plugin:PATH")->capture_default_str();
-  sub->add_option("--seed", o->seed, "Seed; the same seed gives the same cases and verdicts")->capture_default_str();
+  sub->add_option("--seed", o->seed, "Seed; the same seed gives the same cases and verdicts")
+      ->capture_default_str()
+      ->check(CLI::Validator(
+          [](std::string& s) -> std::string {
+            if (!s.empty() && s.size() <= 20 && s.find_first_not_of("0123456789") == std::string::npos) return "";
+            return "takes a whole number from 0 to 18446744073709551615, got '" + s + "'";
+          },
+          "UINT64"));
   sub->add_option("--cases", o->cases, "Test cases per property")->capture_default_str();
   sub->add_option("--max-size", o->max_size, "RapidCheck size: longest command sequences")->capture_default_str();
   sub->add_option("--budget", o->budget, "Wall-time limit in seconds; a run cut short is 'incomplete' (exit 2)")

@@ -20,6 +20,7 @@
 #include "campaign.h"
 #include "command_binary.h"
 #include "command_text.h"
+#include "progress_line.h"
 #include "read_file.h"
 #include "subcommand.h"
 
@@ -82,7 +83,18 @@ int run_fuzz(const FuzzArgs& a) {
                        "property_<group>) or use --to-text / --to-binary\n");
     return 2;
   }
-  return fuzz::run_campaign(a.campaign);
+  // On a terminal redrawn in place with its elapsed time at least twice a
+  // second; in a log a line every 10 s (progress_line.h).
+  ProgressLine status(true);
+  fuzz::CampaignOptions o = a.campaign;
+  status.update(fmt::format("{} for {:.0f} s: starting libFuzzer", o.target, o.time_s), true);
+  o.progress = [&status](const std::string& line) {
+    if (line.empty())
+      status.finish();
+    else
+      status.update(line);
+  };
+  return fuzz::run_campaign(o);
 }
 
 void add_fuzz(CLI::App& app, int* exit_code) {

@@ -39,7 +39,10 @@ struct Options {
 int run(const Options& o) {
   std::string text;
   if (!read_file(o.file, &text)) {
-    fmt::print(stderr, "vgc replay: cannot read {}\n", o.file);
+    fmt::print(stderr,
+               "vgc replay: cannot read {} ({}): give the path of a command file (docs/commands.md), e.g. "
+               "reports/latest/counterexamples/<CLAUSE>.vgc\n",
+               o.file, read_failure(o.file));
     return 2;
   }
   Program program;

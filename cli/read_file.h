@@ -16,6 +16,10 @@ namespace vgc::cli {
 // unspecified) when it cannot be opened. Never throws.
 bool read_file(const std::filesystem::path& path, std::string* out);
 
+// Why `path` cannot be read, for an error message: "no such file", "it is
+// a directory", or the system's reason. Never throws.
+std::string read_failure(const std::filesystem::path& path);
+
 // Reads standard input to its end into *out. Never throws.
 void read_stdin(std::string* out);
 

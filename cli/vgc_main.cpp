@@ -5,6 +5,7 @@
 
 #include <cstdlib>
 #include <filesystem>
+#include <string>
 #include <system_error>
 #include <vector>
 
@@ -43,6 +44,27 @@ int main(int argc, char** argv) {
   if (!ec) vgc::set_program_command(vgc::program_command_for(self.string(), path ? path : ""));
   int exit_code = 0;
   vgc::cli::add_all_subcommands(app, &exit_code);
+  // A word where the subcommand goes that names none: say which there are.
+  if (argc > 1 && argv[1][0] != '-') {
+    std::string names;
+    bool known = false;
+    for (const CLI::App* sub : app.get_subcommands([](const CLI::App*) { return true; })) {
+      names += (names.empty() ? "" : ", ") + sub->get_name();
+      known = known || sub->get_name() == argv[1];
+    }
+    if (!known) {
+      fmt::print(stderr, "vgc: unknown command '{}': use one of {} (vgc --help says what each does)\n", argv[1],
+                 names);
+      return 2;
+    }
+  }
+  // Usage errors name the subcommand whose --help lists the options and
+  // the values they take.
+  app.failure_message([](const CLI::App* a, const CLI::Error& e) {
+    std::string where = "vgc";
+    for (const CLI::App* sub : a->get_subcommands()) where += " " + sub->get_name();
+    return where + ": " + e.what() + "\nRun `" + where + " --help` for the options and the values they take.\n";
+  });
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -587,6 +587,10 @@ RunResult run_certification(Implementation& sut, const RunOptions& o) {
     progress.failures = 0;
     progress.cases_total = spec.capability.empty() ? o.cases : std::max(1, o.cases / 4);
     progress.shrinking = false;
+    if (o.progress) {  // the property starts (its first case may take long)
+      progress.elapsed_seconds = std::chrono::duration<double>(Clock::now() - start).count();
+      o.progress(progress);
+    }
     run.properties.push_back(run_property(spec, sut, o, deadline, &progress, start, &run));
     if (o.property_done) {
       progress.elapsed_seconds = std::chrono::duration<double>(Clock::now() - start).count();

@@ -401,7 +401,9 @@ int run_campaign(const CampaignOptions& o, CampaignSummary* out) {
     }
     plugin = fs::absolute(o.impl.substr(7)).string();
     if (!fs::exists(plugin)) {
-      fmt::print(stderr, "vgc fuzz: no such plugin {}\n", plugin);
+      fmt::print(stderr,
+                 "vgc fuzz: no such plugin {}: give --impl plugin:PATH the path of your plugin's shared library\n",
+                 plugin);
       return 2;
     }
     env_add.push_back("VGC_FUZZ_PLUGIN=" + plugin);
@@ -479,7 +481,6 @@ int run_campaign(const CampaignOptions& o, CampaignSummary* out) {
 
   std::ofstream log(dir / "fuzzer.log");
   Progress p;
-  const bool tty = isatty(2);
   const auto t0 = clock::now();
   const auto sys0 = fs::file_time_type::clock::now();
   // libFuzzer is asked to stop at --time; it gets 5 s more to write its
@@ -493,19 +494,18 @@ int run_campaign(const CampaignOptions& o, CampaignSummary* out) {
     const auto now = clock::now();
     const double t = std::chrono::duration<double>(now - t0).count();
     samples.push_back({t, p.execs, p.cov, p.ft, p.corp});
-    const std::string status =
-        fmt::format("[{:5.0f}/{:.0f} s] execs {}  exec/s {}  cov {}  ft {}  corpus {}  crashes {}", t, o.time_s,
-                    p.execs, p.exec_s, p.cov, p.ft, p.corp, p.crashes);
-    if (tty) {
-      fmt::print(stderr, "\r{:<100}", status);
+    const std::string figures = fmt::format("execs {}  exec/s {}  cov {}  ft {}  corpus {}  crashes {}", p.execs,
+                                            p.exec_s, p.cov, p.ft, p.corp, p.crashes);
+    if (o.progress) {
+      o.progress(fmt::format("{} for {:.0f} s: {}", target, o.time_s, figures));
     } else if (now - last_print >= std::chrono::seconds(10)) {
-      fmt::print(stderr, "{}\n", status);
+      fmt::print(stderr, "[{:5.0f}/{:.0f} s] {}\n", t, o.time_s, figures);
       last_print = now;
     }
   }, stop_now);
   if (rr.killed) log << "vgc fuzz: still running " << o.time_s + 5 << " s after the start: process group killed\n";
   log.close();
-  if (tty) fmt::print(stderr, "\n");
+  if (o.progress) o.progress("");
   s.libfuzzer_exit = rr.exit;
   s.killed_at_deadline = rr.killed;
   if (rr.killed) fmt::print(stderr, "vgc fuzz: libFuzzer overran --time {} s: killed\n", o.time_s);

@@ -25,6 +25,7 @@
 
 #include <cstddef>
 #include <optional>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -43,6 +44,10 @@ struct CampaignOptions {
   bool empty_corpus = false;  // start from no input at all, not the committed corpus
   bool stop_at_first = false; // stop at the first finding (time to find)
   std::string vgc_binary;     // for replaying counterexamples ("" : this program)
+  // Status while libFuzzer runs ("TARGET for T s: execs ... crashes N"),
+  // called on every libFuzzer status line, and once with "" when it has
+  // stopped. Unset: a plain line on stderr at most every 10 s (logs).
+  std::function<void(const std::string&)> progress;
 };
 
 // One unique crash (a signature), its inputs and how to replay it.

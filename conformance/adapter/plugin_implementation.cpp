@@ -32,7 +32,10 @@ std::string quote_c(const char* s) {
 std::unique_ptr<PluginImplementation> PluginImplementation::load(const std::string& path, std::string* error) {
   const std::string what = "plugin " + path + ": ";
   dlerror();
-  void* handle = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
+  // A bare file name is a file in the current directory, as everywhere else
+  // in vgc (dlopen would search the system's library path instead).
+  const std::string file = path.find('/') == std::string::npos ? "./" + path : path;
+  void* handle = dlopen(file.c_str(), RTLD_NOW | RTLD_LOCAL);
   if (!handle) {
     const char* e = dlerror();
     *error = what + "cannot load the library: " + (e ? e : "dlopen failed");

@@ -1,7 +1,10 @@
-// baseline.cpp — see baseline.h.
+// baseline.cpp — see baseline.h. Errors name the line and column and the fix.
 #include "baseline.h"
 
+#include <cerrno>
+#include <cstring>
 #include <fstream>
+#include <map>
 #include <sstream>
 
 #include "clause.h"
@@ -13,6 +16,7 @@ bool parse_baseline(const std::string& text, Baseline* out, std::string* error) 
   std::istringstream in(text);
   std::string line;
   int number = 0;
+  std::map<std::string, int> listed_on;  // id -> the line it is first listed on
   while (std::getline(in, line)) {
     ++number;
     if (!line.empty() && line.back() == '\r') line.pop_back();
@@ -25,18 +29,25 @@ bool parse_baseline(const std::string& text, Baseline* out, std::string* error) 
       const auto r = line.find_first_not_of(" \t", end_id);
       if (r != std::string::npos) reason = line.substr(r);
     }
+    // "LINE:COLUMN: what is wrong; what to do" (columns count from 1).
+    const std::string at = std::to_string(number) + ":" + std::to_string(first + 1) + ": ";
     if (!find_clause(id)) {
-      *error = std::to_string(number) + ": unknown clause id '" + id + "' (see " + program_command() + " clauses)";
+      *error = at + "unknown clause id '" + id + "': use an id that `" + program_command() +
+               " clauses` lists (one clause id, then the reason, per line)";
       return false;
     }
     if (reason.empty()) {
-      *error = std::to_string(number) + ": clause " + id + " needs a reason after the id";
+      *error = std::to_string(number) + ":" + std::to_string(first + id.size() + 1) + ": clause " + id +
+               " needs a reason after the id: write why it is a known deviation (`" + id +
+               " our host stores ... (ticket 12)`)";
       return false;
     }
     if (!out->reasons.emplace(id, reason).second) {
-      *error = std::to_string(number) + ": clause " + id + " is listed twice";
+      *error = at + "clause " + id + " is listed twice (first on line " + std::to_string(listed_on[id]) +
+               "): keep one of the lines";
       return false;
     }
+    listed_on[id] = number;
   }
   return true;
 }
@@ -44,7 +55,8 @@ bool parse_baseline(const std::string& text, Baseline* out, std::string* error) 
 bool load_baseline(const std::string& path, Baseline* out, std::string* error) {
   std::ifstream f(path, std::ios::binary);
   if (!f) {
-    *error = path + ": cannot read the baseline file";
+    *error = path + ": cannot read the baseline file (" + std::strerror(errno) +
+             "): give the path of a file of known deviations, relative to the directory vgc runs in";
     return false;
   }
   std::ostringstream ss;

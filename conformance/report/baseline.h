@@ -4,7 +4,8 @@
 //   # comment
 //   CLAUSE-ID   why this deviation is accepted (required)
 // An unknown clause id, a missing reason or a repeated id is an error that
-// names the line; a baseline that cannot be read fails the run (exit 2).
+// names the line and column and what to do; a baseline that cannot be read
+// fails the run (exit 2).
 #pragma once
 
 #include <map>
@@ -17,7 +18,7 @@ struct Baseline {
 };
 
 // Parses baseline text. On error returns false and sets *error to
-// "<line>: <what>" (1-based).
+// "<line>:<column>: <what>: <what to do>" (both 1-based).
 bool parse_baseline(const std::string& text, Baseline* out, std::string* error);
 
 // Reads and parses a file; errors name the file and line.

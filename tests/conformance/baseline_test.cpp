@@ -50,23 +50,26 @@ TEST(Baseline, CommentsBlankLinesAndReasons) {
 
 TEST(Baseline, AnUnknownIdNamesItsLine) {
   const std::string e = parse_error("# header\n\nBONE-FOREST-1 ok\nBONE-FORREST-1 typo\n");
-  EXPECT_EQ(e.rfind("4:", 0), 0u) << e;
+  EXPECT_EQ(e.rfind("4:1:", 0), 0u) << e;
   EXPECT_NE(e.find("BONE-FORREST-1"), std::string::npos) << e;
+  EXPECT_NE(e.find("vgc clauses"), std::string::npos) << "names where the ids are: " << e;
+  EXPECT_EQ(parse_error("  BONE-FORREST-1 indented\n").rfind("1:3:", 0), 0u);
 }
 
 TEST(Baseline, AMissingReasonNamesItsLine) {
   const std::string e = parse_error("LAYER-BASE-1 fine\nLAYER-BASE-2\n");
-  EXPECT_EQ(e.rfind("2:", 0), 0u) << e;
+  EXPECT_EQ(e.rfind("2:13:", 0), 0u) << "the column after the id: " << e;
   EXPECT_NE(e.find("LAYER-BASE-2"), std::string::npos) << e;
   EXPECT_NE(e.find("reason"), std::string::npos) << e;
   // Blanks after the id are not a reason.
-  EXPECT_EQ(parse_error("LAYER-BASE-2   \t\n").rfind("1:", 0), 0u);
+  EXPECT_EQ(parse_error("LAYER-BASE-2   \t\n").rfind("1:13:", 0), 0u);
 }
 
 TEST(Baseline, ADuplicateNamesTheSecondLine) {
   const std::string e = parse_error("ATOMIC-1 a\n# between\nSTABLE-1 b\nATOMIC-1 again\n");
-  EXPECT_EQ(e.rfind("4:", 0), 0u) << e;
+  EXPECT_EQ(e.rfind("4:1:", 0), 0u) << e;
   EXPECT_NE(e.find("ATOMIC-1"), std::string::npos) << e;
+  EXPECT_NE(e.find("first on line 1"), std::string::npos) << e;
 }
 
 TEST(Baseline, LoadNamesTheFileAndLine) {

@@ -4,11 +4,14 @@
 // three routes (in process, exec, plugin) certify the reference; a seeded
 // fault (libvgc_fault_plugin.so behind `vgc serve`) is rejected naming its
 // clause, replays, and passes with a baseline.
+#include <dlfcn.h>
 #include <gtest/gtest.h>
+#include <pty.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -88,6 +91,50 @@ std::string serve(const std::string& impl = "") {
   return std::string(VGC_BINARY) + " serve" + (impl.empty() ? "" : " --impl " + impl);
 }
 
+// Runs `command` (sh -c) with a pseudo-terminal as its stdin, stdout and
+// stderr; returns everything it wrote there and sets *exit_code.
+std::string on_a_terminal(const std::string& command, int* exit_code) {
+  int master = -1;
+  const pid_t pid = forkpty(&master, nullptr, nullptr, nullptr);
+  if (pid < 0) return "forkpty failed";
+  if (pid == 0) {
+    execl("/bin/sh", "sh", "-c", command.c_str(), static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  std::string screen;
+  char buf[4096];
+  for (;;) {
+    const ssize_t n = ::read(master, buf, sizeof buf);
+    if (n <= 0) break;  // EIO once the child has exited and the pty is closed
+    screen.append(buf, static_cast<std::size_t>(n));
+  }
+  ::close(master);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  *exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+  return screen;
+}
+
+// The status lines drawn in place (progress_line.h): each is "\r\033[K"
+// then the text, ending in its elapsed time ("  12.3 s"); a bare "\r\033[K"
+// clears the line and is not counted.
+std::vector<std::string> redrawn_lines(const std::string& screen) {
+  const std::string redraw = "\r\033[K";
+  const std::regex elapsed("  [0-9]+\\.[0-9] s$");
+  std::vector<std::string> lines;
+  for (std::size_t at = screen.find(redraw); at != std::string::npos; at = screen.find(redraw, at + 1)) {
+    const std::size_t from = at + redraw.size();
+    const std::string line = screen.substr(from, screen.find_first_of("\r\n", from) - from);
+    if (std::regex_search(line, elapsed)) lines.push_back(line);
+  }
+  return lines;
+}
+
+double last_elapsed(const std::string& line) {
+  std::smatch m;
+  return std::regex_search(line, m, std::regex("  ([0-9]+\\.[0-9]) s$")) ? std::stod(m[1]) : 0;
+}
+
 void expect_report_files(const fs::path& reports, const std::string& verdict) {
   const fs::path latest = reports / "latest";
   ASSERT_TRUE(fs::is_symlink(latest)) << latest;
@@ -136,6 +183,68 @@ TEST_F(Cli, CertifyLogsOneLinePerProperty) {
   int bracketed = 0;
   while (std::getline(lines, l)) bracketed += l.rfind("[", 0) == 0;
   EXPECT_LE(bracketed, static_cast<int>(property_catalog().size()) + 1) << r.err;
+}
+
+// On a terminal, a run over a slow implementation shows it is alive: the
+// status line is redrawn in place with its elapsed time, at least once a
+// second, even while one case takes seconds. The implementation is the
+// reference behind a shell loop that holds every `?reset` for 3 s, so the
+// run (a fresh-node check and one case) lasts about 6 s with few runner
+// events. Counted, not timed: at least one redraw per second of the run
+// (the ticker redraws twice a second; without it there are about three).
+TEST_F(Cli, CertifyOnATerminalRedrawsItsStatusEverySecond) {
+  const std::string slow = "sh -c " + shell_quote("while IFS= read -r l; do case \"$l\" in '?reset') sleep 3;; esac; "
+                                                  "printf '%s\\n' \"$l\"; done | " + serve());
+  const std::string command = "cd " + shell_quote(dir_.string()) + " && exec " + shell_quote(VGC_BINARY) +
+                              " certify --impl " + shell_quote("exec:" + slow) +
+                              " --reports rep --cases 1 --max-size 5 --clauses LAYER-BASE-1 --timeout 20";
+  int exit_code = -1;
+  const std::string screen = on_a_terminal(command, &exit_code);
+  EXPECT_EQ(exit_code, 0) << screen;
+  const std::vector<std::string> lines = redrawn_lines(screen);
+  const int draws = static_cast<int>(lines.size());
+  const double last = draws ? last_elapsed(lines.back()) : 0;
+  const std::regex property_line("^\\[[0-9]+/[0-9]+\\] [a-z_.]+ +[0-9]+/1 cases, 0 found  [0-9.]+ s$");
+  int property_draws = 0;
+  for (const std::string& line : lines) property_draws += std::regex_search(line, property_line);
+  EXPECT_GE(last, 5.0) << "the slow implementation was not slow:\n" << screen;
+  EXPECT_GE(draws, static_cast<int>(last)) << draws << " redraws in " << last << " s:\n" << screen;
+  EXPECT_GE(property_draws, 1) << "no status line with the property, its cases and findings:\n" << screen;
+  // The permanent line per property is there too, and the status line is
+  // cleared before the verdict is printed.
+  EXPECT_NE(screen.find("layers"), std::string::npos) << screen;
+  const std::size_t verdict = screen.find(": conformant (");
+  ASSERT_NE(verdict, std::string::npos) << screen;
+  const std::size_t line_start = screen.rfind('\n', verdict) + 1;
+  EXPECT_EQ(screen.substr(line_start, 5), "exec:") << "the verdict shares its line with a status line:\n" << screen;
+}
+
+// The same for a fuzz campaign: a stand-in for the libFuzzer binary (the
+// normal build has none; `vgc fuzz --fuzz-build` names where it is) prints
+// one status line, then nothing for 5 s, as a fuzzer deep in a slow input
+// would. The line is still redrawn, its elapsed time moving.
+TEST_F(Cli, FuzzOnATerminalRedrawsItsStatusEverySecond) {
+  fs::create_directories(dir_ / "fb" / "fuzz");
+  fs::create_directories(dir_ / "src");
+  const fs::path fuzzer = write("fb/fuzz/fuzz_stream",
+                                "#!/bin/sh\n"
+                                "echo '#2\tINITED cov: 5 ft: 6 corp: 1/1b exec/s: 0 rss: 30Mb'\n"
+                                "sleep 5\n"
+                                "echo '#9\tDONE   cov: 5 ft: 6 corp: 1/1b exec/s: 2 rss: 30Mb'\n");
+  fs::permissions(fuzzer, fs::perms::owner_all);
+  const std::string command = "cd " + shell_quote(dir_.string()) + " && exec " + shell_quote(VGC_BINARY) +
+                              " fuzz stream --time 5 --fuzz-build fb --source-dir src";
+  int exit_code = -1;
+  const std::string screen = on_a_terminal(command, &exit_code);
+  EXPECT_EQ(exit_code, 0) << screen;
+  const std::vector<std::string> lines = redrawn_lines(screen);
+  const int draws = static_cast<int>(lines.size());
+  const double last = draws ? last_elapsed(lines.back()) : 0;
+  EXPECT_GE(last, 4.0) << "the stand-in fuzzer was not slow:\n" << screen;
+  EXPECT_GE(draws, static_cast<int>(last)) << draws << " redraws in " << last << " s:\n" << screen;
+  int status_draws = 0;
+  for (const std::string& line : lines) status_draws += line.find("execs 2  exec/s 0  cov 5") != std::string::npos;
+  EXPECT_GE(status_draws, 1) << "no line with libFuzzer's figures:\n" << screen;
 }
 
 TEST_F(Cli, CertifyTheReferenceThroughExec) {
@@ -339,6 +448,72 @@ TEST_F(Cli, UsageErrorsExitTwo) {
 
   const Result impl = vgc("certify --impl nonsense:x --reports rep" + kFast);
   EXPECT_EQ(impl.exit_code, 2) << context(impl);
+}
+
+// Every mistake a newcomer can make on the command line is exit 2 with a
+// message that names what is wrong and what to do next, and writes no
+// report. Each row: the arguments, then text the message must hold (the
+// mistake, then the fix).
+TEST_F(Cli, EveryUsageErrorSaysWhatToDo) {
+  write("bad_baseline.txt", "# known\nLAYER-BASE-2 fine\n  BONE-FORREST-1 a typo\n");
+  write("no_reason.txt", "LAYER-BASE-2\n");
+  write("twice.txt", "ATOMIC-1 a\nATOMIC-1 b\n");
+  write("not_a_library.so", "hello\n");
+  write("a_file", "");
+  write("not_executable.sh", "#!/bin/sh\necho vgc-exec 1 x\n");  // written without the x bit
+  Dl_info libc{};
+  ASSERT_NE(dladdr(reinterpret_cast<void*>(&std::printf), &libc), 0);  // a library without vgc_plugin_v1
+  const std::string fault = std::string(VGC_FAULT_PLUGIN);
+  struct Row {
+    std::string args;
+    std::vector<std::string> says;
+  };
+  const std::vector<Row> rows = {
+      {"certify --impl nonsense:x", {"unknown implementation 'nonsense:x'", "expected reference, exec:CMD", "plugin:PATH"}},
+      {"certify --impl exec:", {"names no command", "expected reference, exec:CMD"}},
+      {"certify --impl plugin:", {"names no library", "plugin:PATH"}},
+      {"certify --impl exec:./no-such-host", {"no-such-host: not found", "what to do: the shell found no such program"}},
+      {"certify --impl exec:./not_executable.sh", {"status 126", "what to do: the program is not executable: chmod +x"}},
+      {"certify --impl exec:cat", {"answered ?hello with", "what to do: check that the program speaks the exec protocol"}},
+      {"certify --impl plugin:no_such.so", {"no_such.so is not there", "give the path of your plugin's shared library"}},
+      {"certify --impl plugin:not_a_library.so", {"cannot load the library", "what to do: the plugin must be a shared library"}},
+      {"certify --impl " + shell_quote(std::string("plugin:") + libc.dli_fname),
+       {"does not export the function vgc_plugin_v1", "nm -D PATH | grep vgc_plugin_v1"}},
+      {"replay " + shell_quote(std::string(VGC_SOURCE_DIR) + "/corpora/examples/cube.vgc") + " --impl plugin:no_such.so",
+       {"vgc replay: plugin:no_such.so", "give the path of your plugin"}},
+      {"certify --baseline no_such.txt", {"no_such.txt: cannot read the baseline file", "give the path of a file of known deviations"}},
+      {"certify --baseline bad_baseline.txt", {"bad_baseline.txt:3:3: unknown clause id 'BONE-FORREST-1'", "use an id that `vgc clauses` lists"}},
+      {"certify --baseline no_reason.txt", {"no_reason.txt:1:13: clause LAYER-BASE-2 needs a reason", "write why"}},
+      {"certify --baseline twice.txt", {"twice.txt:2:1: clause ATOMIC-1 is listed twice (first on line 1)", "keep one"}},
+      {"certify --clauses 'LAYER-*,BONEE-*'", {"--clauses pattern 'BONEE-*' matches no clause id", "`vgc clauses` lists them"}},
+      {"certify --clauses ','", {"matches no clause id", "`vgc clauses` lists them"}},
+      {"certify --seed abc", {"--seed", "takes a whole number", "vgc certify --help"}},
+      {"certify --seed -1", {"--seed", "takes a whole number", "got '-1'"}},
+      {"certify --cases x", {"--cases", "vgc certify --help"}},
+      {"certify --cases 0", {"--cases is 0", "give a positive number"}},
+      {"certify --max-size 0", {"--max-size is 0", "give a positive size"}},
+      {"certify --budget 0", {"--budget is 0", "give a positive number of seconds"}},
+      {"certify --timeout -2", {"--timeout is -2", "give a positive number of seconds"}},
+      {"certify --shard 4/3", {"--shard takes I/N", "for example --shard 2/3"}},
+      {"certify --reports a_file/reports", {"cannot write reports under 'a_file/reports'", "give --reports a directory you can write"}},
+      {"certify --no-such-option", {"--no-such-option", "vgc certify --help"}},
+      {"certfy", {"unknown command 'certfy'", "use one of", "certify"}},
+      {"replay", {"file is required", "vgc replay --help"}},
+      {"replay no_such.vgc", {"cannot read no_such.vgc (no such file)", "give the path of a command file"}},
+      {"apply no_such.vgc", {"cannot read no_such.vgc (no such file)", "give the path of a command file"}},
+      {"apply .", {"cannot read . (it is a directory)", "give the path of a command file"}},
+      {"fuzz no_such_target", {"unknown target 'no_such_target'", "expected stream, text, differential"}},
+  };
+  for (const Row& row : rows) {
+    SCOPED_TRACE(row.args);
+    const bool certify = row.args.rfind("certify", 0) == 0;
+    const bool own_reports = row.args.find("--reports") != std::string::npos;
+    const Result r = vgc(row.args + (certify ? (own_reports ? " --quiet" : " --reports rep --quiet") : ""));
+    EXPECT_EQ(r.exit_code, 2) << context(r);
+    for (const std::string& text : row.says) EXPECT_NE(r.err.find(text), std::string::npos) << text << "\n" << context(r);
+    EXPECT_EQ(r.err.find("terminate called"), std::string::npos) << context(r);
+    EXPECT_FALSE(fs::exists(dir_ / "rep")) << "a usage error wrote reports: " << context(r);
+  }
 }
 
 TEST_F(Cli, ClausesListsTheWholeCatalog) {

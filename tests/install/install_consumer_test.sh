@@ -142,7 +142,7 @@ check "its output gives the verdict" grep -q ": not-conformant (" "$tmp/fault.lo
 rc=0
 run_ctest "$tmp/missing.log" '^missing_plugin$' || rc=$?
 check "ctest fails a missing plugin (vgc exit 2)" test $rc -ne 0
-check "its output holds vgc's message" grep -q "vgc certify: plugin:.*no_such_plugin.so: cannot start it" "$tmp/missing.log"
+check "its output holds vgc's message and what to do" grep -q "vgc certify: plugin:.*no_such_plugin.so: .*no_such_plugin.so is not there: give the path of your plugin" "$tmp/missing.log"
 [ $rc -ne 0 ] || cat "$tmp/missing.log"
 
 # 4. examples/c_host, a C node with its own CMake project, built from a copy
