@@ -42,18 +42,24 @@ struct ClientSession::Impl {
   // Sends, receives and resends until done() or the deadline.
   Status pump(Clock::time_point deadline, const std::function<bool()>& done, const char* waiting_for) {
     if (!connected) return Status::closed("not connected");
+    std::size_t drained_late = 0;  // a host flooding us cannot keep a late call going
     for (;;) {
       Status st = flush();
       if (!st.ok()) return st;
       if (done()) return {};
       const Clock::time_point now = Clock::now();
-      if (now >= deadline) return Status::timeout(std::string("the host did not send ") + waiting_for + " in time");
+      const bool late = now >= deadline;  // then only what has already arrived is read
       Clock::time_point wake = std::min({deadline, channel->next_resend_due(), now + std::chrono::milliseconds(50)});
-      const double wait = std::chrono::duration<double>(wake - now).count();
+      const double wait = late ? 0.0 : std::chrono::duration<double>(wake - now).count();
       std::string bytes;
       PeerAddress from;
       st = socket.receive(&bytes, &from, wait > 0 ? wait : 0);
-      if (st.code == Status::Code::Timeout) continue;
+      if (st.code == Status::Code::Timeout) {
+        if (late) return Status::timeout(std::string("the host did not send ") + waiting_for + " in time");
+        continue;
+      }
+      if (late && ++drained_late > 1024)
+        return Status::timeout(std::string("the host did not send ") + waiting_for + " in time");
       if (st.code == Status::Code::ProtocolError) {
         note_protocol_error(st);
         continue;

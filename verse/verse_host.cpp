@@ -137,6 +137,7 @@ struct Host::Impl {
       return;
     }
     auto it = sessions.find(from);
+    if (it != sessions.end()) it->second.last_heard = now;
     if (const auto* c = std::get_if<login::Contact>(&m)) {
       if (it != sessions.end() && !it->second.connected) {  // repeated stage 0: same answer again
         (void)socket.send_to(from, it->second.challenge_packet);

@@ -137,6 +137,15 @@ TEST(VerseSession, CreateSubscribeSendAndSeeTheHostBroadcast) {
   ASSERT_EQ(geometry_of<cmd::LayerCreate>(seen).size(), 1u);
   EXPECT_EQ(geometry_of<cmd::LayerCreate>(seen)[0].def_uint, 5u);
 
+  // receive(…, 0) reads what has already arrived without waiting for more.
+  ASSERT_TRUE(a.s.send_geometry(a.node, cmd::VertexSetXyzReal64{0, 9, 1, 1, 1}).ok());
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));
+  WireCommand got;
+  st = a.s.receive(&got, 0);
+  ASSERT_TRUE(st.ok()) << st.to_string();
+  EXPECT_EQ(describe(got).rfind("g_vertex_set_xyz_real64", 0), 0u) << describe(got);
+  EXPECT_EQ(a.s.receive(&got, 0).code, Status::Code::Timeout);
+
   a.s.disconnect();
   b.s.disconnect();
 }
