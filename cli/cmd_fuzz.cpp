@@ -37,6 +37,7 @@
 #include <string>
 #include <vector>
 
+#include "campaign_html.h"
 #include "command_binary.h"
 #include "command_text.h"
 #include "read_file.h"
@@ -365,11 +366,13 @@ int run_campaign(const FuzzOptions& o) {
   const bool tty = isatty(2);
   const auto t0 = std::chrono::steady_clock::now();
   auto last_print = t0 - std::chrono::seconds(60);
+  std::vector<CampaignSample> samples;  // for report.html's plots
   const int rc = run_streaming(argv, env_add, [&](const std::string& line) {
     log << line << '\n';
     if (!parse_progress(line, &p)) return;
     const auto now = std::chrono::steady_clock::now();
     const double t = std::chrono::duration<double>(now - t0).count();
+    samples.push_back({t, p.execs, p.cov, p.ft, p.corp});
     const std::string status =
         fmt::format("[{:5.0f}/{:.0f} s] execs {}  exec/s {}  cov {}  ft {}  corpus {}  crashes {}", t, o.time_s,
                     p.execs, p.exec_s, p.cov, p.ft, p.corp, p.crashes);
@@ -512,6 +515,23 @@ int run_campaign(const FuzzOptions& o) {
     }
   }
   write_file(dir / "summary.md", md);
+  // report.html: the same figures as a page, with coverage and corpus over time.
+  CampaignReport page;
+  page.target = target, page.run = run, page.command = cmdline, page.implementation = summary["implementation"].get<std::string>();
+  page.seed = o.seed, page.jobs = o.jobs, page.time_s = o.time_s, page.wall_s = wall;
+  page.executions = p.execs, page.exec_per_s_last = p.exec_s, page.exec_per_s_mean = summary["exec_per_s_mean"].get<double>();
+  page.coverage = p.cov, page.features = p.ft, page.corpus_files = corpus_files, page.corpus_bytes = corpus_bytes;
+  page.seed_files = seeds, page.crash_inputs = crash_files, page.samples = std::move(samples);
+  for (const auto& c : crashes_json) {
+    CampaignFinding f;
+    f.signature = c["signature"].get<std::string>(), f.inputs = c["inputs"].get<std::size_t>();
+    f.counterexample = c["counterexample"].get<std::string>();
+    for (const auto& a : c["also"]) f.also.push_back(a.get<std::string>());
+    f.replay = c["replay"].get<std::string>(), f.replay_fuzzer = c["replay_fuzzer"].get<std::string>();
+    read_file(f.counterexample, &f.counterexample_text);
+    page.findings.push_back(std::move(f));
+  }
+  if (std::string error; !write_campaign_html(dir.string(), page, &error)) fmt::print(stderr, "vgc fuzz: {}\n", error);
   fmt::print("{}", md);
   fmt::print("summary: {}\n", (dir / "summary.json").string());
   if (p.execs == 0 && crash_files == 0) {

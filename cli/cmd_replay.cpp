@@ -10,7 +10,9 @@
 // its clause are printed); 2 usage error, a file that does not parse (line
 // and column named), an implementation that cannot be started, or a
 // capability check that cannot be judged (the implementation does not
-// claim the capability, or this vgc has no oracle for it).
+// claim the capability, this vgc has no oracle for it, or the oracle cannot
+// be asked about this state, e.g. OpenSubdiv refuses the mesh): it never
+// says "passes" for a check that compared nothing.
 #include <fmt/core.h>
 
 #include <memory>

@@ -26,6 +26,7 @@ const char* finding_status_name(FindingStatus s) {
     case FindingStatus::Fail: return "fail";
     case FindingStatus::Crash: return "crash";
     case FindingStatus::Timeout: return "timeout";
+    case FindingStatus::NotJudged: return "not-judged";
   }
   return "?";
 }
@@ -125,6 +126,10 @@ StepResult check_step(const Node& before, const Command& c, Implementation& sut,
                    ? std::string(clause_for_snapshot(c, before, *after, d->kind, missing_or_extra))
                    : "ATOMIC-1";
     f.message = "after `" + text + "` (" + observed_answer + "), snapshot: " + d->describe();
+    f.shown_by = "snapshot";
+    f.observed_document = snap.text;
+    f.expected_line = d->expected_line;
+    f.observed_line = d->observed_line;
     result.failure = f;
     return result;
   }
@@ -140,6 +145,10 @@ StepResult check_step(const Node& before, const Command& c, Implementation& sut,
     f.clause = expected == Reason::Ok ? std::string(clause_for_derived(*after, *d, bone_id_of(line)))
                                       : "ATOMIC-1";
     f.message = "after `" + text + "` (" + observed_answer + "), derived: " + d->describe();
+    f.shown_by = "derived";
+    f.observed_document = derived.text;
+    f.expected_line = d->expected_line;
+    f.observed_line = d->observed_line;
     result.failure = f;
   }
   return result;

@@ -19,6 +19,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "command.h"
@@ -27,13 +28,30 @@
 
 namespace vgc {
 
-enum class FindingStatus { Fail, Crash, Timeout };
-const char* finding_status_name(FindingStatus s);  // "fail", "crash", "timeout"
+// NotJudged is no finding: a capability check (capability.h) returns it
+// when its oracle cannot be asked about the case (OpenSubdiv refuses the
+// mesh), `message` saying why; certify counts the case as not judged and
+// `vgc replay` says so instead of "passes".
+enum class FindingStatus { Fail, Crash, Timeout, NotJudged };
+const char* finding_status_name(FindingStatus s);  // "fail", "crash", "timeout", "not-judged"
 
 struct Finding {
+  Finding() = default;
+  Finding(std::string clause_id, FindingStatus s, std::string text)
+      : clause(std::move(clause_id)), status(s), message(std::move(text)) {}
+
   std::string clause;          // catalog id
   FindingStatus status = FindingStatus::Fail;
   std::string message;         // expected versus observed, one paragraph
+  // What the implementation showed, for a picture of the finding
+  // (report_html.cpp): the document that differed ("snapshot", "derived")
+  // or the capability request it answered ("?subdivide 2"), the whole text
+  // it printed, and for a document the first differing lines (either may be
+  // empty: a line missing or extra). All empty when no document differed
+  // (a verdict, a crash).
+  std::string shown_by;
+  std::string observed_document;
+  std::string expected_line, observed_line;
 };
 
 struct StepResult {

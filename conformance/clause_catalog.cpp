@@ -284,8 +284,12 @@ const std::vector<Clause>& clause_catalog() {
        "MUST when claimed (?capabilities names \"subdivision\"), not claimed otherwise. The ?subdivide N "
        "vertices (N = 1..3) agree with OpenSubdiv Catmark refinement of the node's polygons (uniform creasing, "
        "edge-only boundaries, the crease-to-sharpness mapping of reference/crease_sharpness.h) as a bijection "
-       "within 1e-9 of the coordinate scale, and the vertex and face counts agree. Compared where the polygons "
-       "form a polygon mesh (manifold, consistently oriented); vertices in no polygon are left out."},
+       "within 1e-9 of the coordinate scale, and the vertex and face counts agree. Compared on every mesh the node "
+       "can hold, non-manifold included, with OpenSubdiv's non-manifold rules: an edge of more than two polygons, "
+       "or of two polygons running the same direction, is infinitely sharp, and a non-manifold vertex (on such "
+       "an edge, or where two fans meet: a bow-tie) is an infinitely sharp corner except on an interior "
+       "non-manifold crease (reference/catmull_clark.h); where OpenSubdiv refuses the polygons the case is not "
+       "judged. Vertices in no polygon are left out."},
       {"NORMALS-SPLIT-1", "normals", MUST, "003 (split vertex normals); optional capability \"normals\"",
        "\"A sharp edge is either tagged as such, non-manifold (i.e. used by more or less than exactly two faces), "
        "and/or manifold but used by two faces having opposed normals\"; \"Smooth fan: a set of loops sharing the "
@@ -309,8 +313,11 @@ const std::vector<Clause>& clause_catalog() {
        "the coordinate scale, with the vertex and face counts; and the face lines are the triangle tree, built "
        "on OpenSubdiv's levels: children T0..T3 of each parent consecutively, T0 = [s0 s1 s2] the centre, "
        "T(j+1) = [vj' s(j+2) s(j+1)] nearest vertex j, sk the child of the edge opposite vertex k (the oriented "
-       "order of reference/loop_subdivision.h; the spec's figure is not part of it). Compared where the polygons "
-       "form a polygon mesh. When a live polygon is a quad the answer is one line \"error ...\"."},
+       "order of reference/loop_subdivision.h; the spec's figure is not part of it). Compared on every "
+       "all-triangle mesh the node can hold, non-manifold included (OpenSubdiv's non-manifold rules as for "
+       "SUBD-CATMARK-1; each level's edges come from its parent's edges and faces, so two triangles on the same "
+       "three vertices keep distinct child edges); where OpenSubdiv refuses the polygons the case is not judged. "
+       "When a live polygon is a quad the answer is one line \"error ...\"."},
       {"EDIT-HIERARCHY-1", "edits", MUST, "001 (hierarchical edits); optional capability \"edits\"",
        "\"A hierarchical edit is an edit made to any one of the faces, edges, or vertices that arise anywhere "
        "during subdivision\"; \"'set' indicates the primitive variable value ... is to be set directly\"; \"'add' "
@@ -326,8 +333,8 @@ const std::vector<Clause>& clause_catalog() {
        "at most 1e6, so that the tolerance is far below the move). OpenSubdiv 3 "
        "has no hierarchical edits, so where the edit moves vertices (set, add at levels above N) the vertices "
        "are compared with reference/hierarchical_edit.h only (its decisions: an edit applies after its level is "
-       "computed, before the next). Vertices as a bijection within 1e-9 of the coordinate scale; compared where "
-       "the polygons form a polygon mesh."},
+       "computed, before the next). Vertices as a bijection within 1e-9 of the coordinate scale; compared on every "
+       "mesh the node can hold, non-manifold included; not judged where OpenSubdiv refuses the polygons."},
   };
   return catalog;
 }

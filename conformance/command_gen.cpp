@@ -7,6 +7,7 @@
 #include <cstring>
 #include <limits>
 
+#include "crease.h"                 // corner_count
 #include "gen/arbitrary_command.h"  // gen_quaternion_extreme
 
 namespace vgc {
@@ -26,6 +27,7 @@ template <class T> Gen<T> uniform(T lo, T hi) { return gen::resize(rc::kNominalS
 // What the generators need to know of the model, copied out of it.
 struct View {
   std::vector<std::uint32_t> vertices, polygons;
+  std::vector<std::vector<std::uint32_t>> polygon_corners;  // per live polygon (polygons order)
   std::vector<std::uint16_t> layers;  // non-base layer ids
   std::vector<std::string> names;     // all layer names
   std::vector<std::uint16_t> vertex_uint_layers, vertex_real_layers, vertex_xyz_layers;
@@ -39,7 +41,10 @@ struct View {
 View view_of(const Node& m) {
   View v;
   for (const auto& [id, s] : m.vertices()) v.vertices.push_back(id);
-  for (const auto& [id, s] : m.polygons()) v.polygons.push_back(id);
+  for (const auto& [id, s] : m.polygons()) {
+    v.polygons.push_back(id);
+    v.polygon_corners.emplace_back(s.u.begin(), s.u.begin() + corner_count(s));
+  }
   for (const auto& [id, l] : m.layers()) {
     v.names.push_back(l.name);
     if (id < 2) continue;
@@ -283,6 +288,70 @@ Gen<Command> set_polygon(const View& v) {
       case 3: c.v[*uniform<std::size_t>(1, 3)] = kNone32; break;  // fewer than three corners (v0 = 0xFFFFFFFF would be a delete)
       default: break;
     }
+    return Command{c};
+  });
+}
+
+// A new polygon (at the lowest free id) that makes the mesh one OpenSubdiv
+// treats with its non-manifold rules, next to a live polygon P = [p0 ..]:
+//  - pillow: P's corners reversed (two faces on the same vertices; from
+//    triangles, Loop's centre children share their vertices);
+//  - same-direction twin: P's corners rotated (each edge used twice the
+//    same way);
+//  - same-direction neighbour: [p0 p1 x ...] (P's edge p0->p1 the way P
+//    uses it);
+//  - fin: [p1 p0 x ...] (a third face once P's edge has a neighbour);
+//  - bow-tie: [p0 x y ...] with x, y not in P (two fans at p0 unless they
+//    join elsewhere).
+// x, y are live vertices not in P; a triangle mostly (Loop judges only
+// all-triangle meshes), sometimes a quad. Where P has too few outside
+// vertices for the shape, an ordinary polygon.
+Gen<Command> non_manifold_polygon(const View& v) {
+  if (v.polygons.empty()) return set_polygon(v);
+  return gen::exec([v]() -> Command {
+    std::uint32_t next = 0;
+    for (std::uint32_t id : v.polygons)
+      if (id == next) ++next;
+    const auto& p = v.polygon_corners[*uniform<std::size_t>(0, v.polygons.size())];
+    std::vector<std::uint32_t> outside;
+    for (std::uint32_t x : v.vertices)
+      if (std::find(p.begin(), p.end(), x) == p.end()) outside.push_back(x);
+    const int kind = *uniform(0, 5);
+    const bool quad = *uniform(0, 4) == 0;
+    cmd::PolygonSetCornerUint32 c;
+    c.layer_id = Node::kPolygonLayer;
+    c.polygon_id = next;
+    c.v = {kNone32, kNone32, kNone32, kNone32};
+    std::vector<std::uint32_t> corners;
+    auto take_outside = [&](std::size_t n) {
+      for (std::size_t i = 0; i < n && !outside.empty(); ++i) {
+        const std::size_t k = *uniform<std::size_t>(0, outside.size());
+        corners.push_back(outside[k]);
+        outside.erase(outside.begin() + static_cast<long>(k));
+      }
+    };
+    const std::size_t n = p.size();
+    const std::size_t at = *uniform<std::size_t>(0, n);
+    switch (kind) {
+      case 0: corners.assign(p.rbegin(), p.rend()); break;  // pillow
+      case 1:                                                // same-direction twin
+        for (std::size_t i = 0; i < n; ++i) corners.push_back(p[(at + 1 + i) % n]);
+        break;
+      case 2:  // same-direction neighbour
+        corners = {p[at], p[(at + 1) % n]};
+        take_outside(quad ? 2 : 1);
+        break;
+      case 3:  // fin (or an ordinary neighbour the first time)
+        corners = {p[(at + 1) % n], p[at]};
+        take_outside(quad ? 2 : 1);
+        break;
+      default:  // bow-tie
+        corners = {p[at]};
+        take_outside(quad ? 3 : 2);
+        break;
+    }
+    if (corners.size() < 3) return *set_polygon(v);
+    for (std::size_t i = 0; i < corners.size() && i < 4; ++i) c.v[i] = corners[i];
     return Command{c};
   });
 }
@@ -590,7 +659,8 @@ Gen<Command> gen_command(const Node& model, Focus focus) {
     case Focus::Polygons:
       return rc::gen::weightedOneOf<Command>({W{6, set_vertex(v)}, W{2, delete_vertex(v)}, W{7, build_polygon(v)},
                                           W{v.polygons.empty() ? 1u : 4u, delete_polygon(v)}, W{1, create_layer(v)},
-                                          W{v.polygons.empty() ? 0u : 3u, value_step(v)}});
+                                          W{v.polygons.empty() ? 0u : 3u, value_step(v)},
+                                          W{v.polygons.empty() ? 0u : 2u, non_manifold_polygon(v)}});
     case Focus::Creases: {
       // A crease rule is seen only in a state with all of: polygons, a
       // crease layer, a setting naming it, and unequal values in it (equal
@@ -605,7 +675,7 @@ Gen<Command> gen_command(const Node& model, Focus focus) {
           {W{v.vertices.size() >= 4 ? 3u : 6u, set_vertex(v)}, W{mesh ? 3u : 6u, build_polygon(v)},
            W{named_edge && named_vertex ? 2u : 4u, set_crease(v)}, W{crease_layers ? 1u : 3u, create_crease_layer(v)},
            W{write, write_crease_values(v)}, W{1, destroy_layer(v)}, W{1, delete_vertex(v)},
-           W{mesh ? 1u : 0u, value_step(v)}});
+           W{mesh ? 1u : 0u, value_step(v)}, W{mesh ? 2u : 0u, non_manifold_polygon(v)}});
     }
     case Focus::Bones:
       return rc::gen::weightedOneOf<Command>({W{2, bone_layer(v)}, W{6, create_bone(v)}, W{2, destroy_bone(v)},

@@ -224,12 +224,43 @@ const std::vector<vgc::Command>& capability_start_commands(std::string_view capa
   return capability == "loop" ? triangles : quads;
 }
 
+// Forwards every call to `sut` and keeps the last capability request and
+// its answer, so a capability finding can carry what the implementation
+// answered (Finding::observed_document, for report.html's picture).
+class RequestRecorder final : public Implementation {
+ public:
+  explicit RequestRecorder(Implementation& sut) : sut_(sut) {}
+  std::string name() const override { return sut_.name(); }
+  Answer reset() override { return sut_.reset(); }
+  Answer apply(const vgc::Command& c) override { return sut_.apply(c); }
+  Document snapshot() override { return sut_.snapshot(); }
+  Document derived() override { return sut_.derived(); }
+  std::string identity() const override { return sut_.identity(); }
+  Document request(const std::string& line) override {
+    Document d = sut_.request(line);
+    last_request = line;
+    last_answer = d.status == CallStatus::Ok ? d.text : std::string();
+    return d;
+  }
+  std::string last_request, last_answer;
+
+ private:
+  Implementation& sut_;
+};
+
 // Runs `check` as `request` says: check_drawn with the drawn value (0 when
 // absent) for a check that draws, check otherwise.
 std::optional<Finding> run_capability_check(const CapabilityCheck& check, const Node& model, Implementation& sut,
                                             const CapabilityRequest& request) {
-  if (check.check_drawn) return check.check_drawn(model, sut, request.variant, request.draw.value_or(0));
-  return check.check(model, sut, request.variant);
+  RequestRecorder recorder(sut);
+  std::optional<Finding> f = check.check_drawn
+                                 ? check.check_drawn(model, recorder, request.variant, request.draw.value_or(0))
+                                 : check.check(model, recorder, request.variant);
+  if (f && f->shown_by.empty() && !recorder.last_request.empty()) {
+    f->shown_by = recorder.last_request;
+    f->observed_document = recorder.last_answer;
+  }
+  return f;
 }
 
 // A fresh node must look like the reference's fresh node.
@@ -333,9 +364,10 @@ PropertyOutcome run_property(const PropertySpec& spec, Implementation& sut, cons
       const int variant = static_cast<int>(c.trace.size() % 3) + 1;
       CapabilityRequest request{capability->capability, variant, std::nullopt};
       if (capability->check_drawn) request.draw = *rc::gen::arbitrary<std::uint32_t>();
-      if (auto f = run_capability_check(*capability, c.model, *c.sut, request)) {
+      const auto f = run_capability_check(*capability, c.model, *c.sut, request);
+      if (f && f->status != FindingStatus::NotJudged) {
         fail_case(*f, request);
-      } else if (!c.shrinking) {
+      } else if (!f && !c.shrinking) {  // a case the oracle could not judge exercises nothing
         std::stringstream ids(capability_clause_list);
         std::string id;
         while (std::getline(ids, id, ',')) ++(*c.exercised)[id];
@@ -700,6 +732,10 @@ ReplayResult replay_program(const Program& program, Implementation& sut) {
     return r;
   }
   if (auto f = run_capability_check(*check, model, sut, q)) {
+    if (f->status == FindingStatus::NotJudged) {
+      r.not_judged = "not judged (" + f->clause + "): " + f->message;
+      return r;
+    }
     r.failure = f;
     r.failed_at = static_cast<int>(program.commands.size());
   }

@@ -180,8 +180,10 @@ std::uint64_t property_seed(std::uint64_t run_seed, std::string_view property_id
 // if it has one, as certify checks it: the first finding, if any, and the
 // index of the command it was found on (-1 for the fresh-node check,
 // commands.size() for the capability request). A request that cannot be
-// judged (sut does not claim the capability, or no check is registered for
-// it) is no finding: `not_judged` says why, naming the clause(s). Never
+// judged (sut does not claim the capability, no check is registered for
+// it, or the check's oracle cannot be asked about this state:
+// FindingStatus::NotJudged) is no finding: `not_judged` says why, naming
+// the clause(s). Never
 // throws for anything the implementation does.
 struct ReplayResult {
   std::optional<Finding> failure;

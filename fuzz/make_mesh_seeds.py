@@ -75,6 +75,23 @@ seeds = {
     "two-gon": mesh(TET_V, faces(TET_F + [[0, 1]])),
     # An isolated vertex next to a closed mesh.
     "isolated": mesh(TET_V + [(0, 0, 0)], faces(TET_F)),
+    # Non-manifold shapes a geometry node can hold (triangles and quads),
+    # compared under OpenSubdiv's non-manifold rules (issue 11):
+    # a closed "pillow": two triangles on the same three vertices (Loop's
+    # centre children share vertices; level 2 has 18 vertices, not 15).
+    "pillow": mesh([(-1, -1, 0), (1, -1, 0), (0, 1, 0.5)], faces([[0, 1, 2], [0, 2, 1]])),
+    "pillow-quads": mesh([(-1, -1, 0), (1, -1, 0), (1, 1, 0.5), (-1, 1, 0)], faces([[0, 1, 2, 3], [0, 3, 2, 1]])),
+    # two triangles using their shared edge 0->1 the same way.
+    "same-direction": mesh([(-1, -1, 0), (1, -1, 0), (0, 1, 0), (0, 0, 1)], faces([[0, 1, 2], [0, 1, 3]])),
+    # three triangles on edge 0-1 (a fin), open.
+    "fin-triangles": mesh([(-1, 0, 0), (1, 0, 0), (0, 1, 0), (0, -1, 0.5), (0, 0, 1)],
+                          [([0, 1, 2], "semi", 0x1), ([1, 0, 3], 0, 0), ([0, 1, 4], 0, 0)]),
+    # a fin along two edges: vertex 1 on an interior non-manifold crease.
+    "fin-spine": mesh([(-1, 0, 0), (0, 0, 0), (1, 0, 0), (0, 1, 0), (0, -1, 0.5), (0, 0.5, 1)],
+                      faces([[0, 1, 3], [1, 2, 3], [1, 0, 4], [2, 1, 4], [0, 1, 5], [1, 2, 5]])),
+    # two triangle fans sharing vertex 0 only (a bow-tie), with a creased vertex.
+    "bowtie-fans": mesh([(0, 0, 0, "semi"), (1, 1, 0), (1, -1, 0), (1, 0, 1), (-1, 1, 0), (-1, -1, 0), (-1, 0, 1)],
+                        faces([[0, 1, 2], [0, 2, 3], [0, 4, 5], [0, 5, 6]])),
 }
 
 root = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "corpora", "fuzz")

@@ -167,16 +167,35 @@ std::optional<std::string> compare_with_level(const SubdivisionAnswer& got, cons
   return std::nullopt;
 }
 
-// OpenSubdiv's uniform refinement of `mesh` to `level` with `scheme`, where
-// the checks compare at all: the polygons form a polygon mesh (reference
-// mesh_topology.h; the clauses' reading) and OpenSubdiv refines them.
-// nullopt otherwise (not compared).
-std::optional<OsdResult> oracle_refinement(const MeshArrays& mesh, OsdScheme scheme, int level) {
-  const MeshTopology topo = classify_mesh(mesh);
-  if (topo.status != MeshStatus::Ok || !topo.is_polygon_mesh) return std::nullopt;
+// OpenSubdiv's uniform refinement of `mesh` to `level` with `scheme`, on
+// every mesh a node can hold, non-manifold included (the reference follows
+// OpenSubdiv's non-manifold rules, catmull_clark.h). nullopt, with *why,
+// where OpenSubdiv cannot be asked: polygons that are no valid input
+// (check_mesh; a node holds none such) or a mesh OpenSubdiv refuses.
+std::optional<OsdResult> oracle_refinement(const MeshArrays& mesh, OsdScheme scheme, int level, std::string* why) {
+  int bad_face = -1;
+  if (const MeshStatus status = check_mesh(mesh, &bad_face); status != MeshStatus::Ok) {
+    *why = std::string("the polygons are no input for OpenSubdiv (") + to_string(status) + " at face " +
+           std::to_string(bad_face) + ")";
+    return std::nullopt;
+  }
   OsdResult osd = osd_refine_uniform(osd_input_from_mesh(mesh, scheme, level));
-  if (!osd.ok || osd.levels.size() != static_cast<std::size_t>(level) + 1) return std::nullopt;
+  if (!osd.ok || osd.levels.size() != static_cast<std::size_t>(level) + 1) {
+    *why = "OpenSubdiv refuses the polygons (" + (osd.ok ? std::string("too few levels") : osd.failure);
+    for (const auto& m : osd.messages) *why += "; " + m;
+    *why += ")";
+    return std::nullopt;
+  }
   return osd;
+}
+
+// A case the oracle cannot judge (FindingStatus::NotJudged).
+Finding not_judged(const char* clause, const std::string& message) {
+  Finding f;
+  f.clause = clause;
+  f.status = FindingStatus::NotJudged;
+  f.message = message;
+  return f;
 }
 
 }  // namespace
@@ -227,8 +246,9 @@ std::optional<Finding> check_subdivision(const Node& model, Implementation& sut,
                                   std::to_string(got.faces) + " faces");
     return std::nullopt;
   }
-  const std::optional<OsdResult> osd = oracle_refinement(mesh, OsdScheme::CatmullClark, level);
-  if (!osd) return std::nullopt;  // not compared
+  std::string why;
+  const std::optional<OsdResult> osd = oracle_refinement(mesh, OsdScheme::CatmullClark, level, &why);
+  if (!osd) return not_judged(kClause, request + ": " + why);
   const OsdLevel& want = osd->levels.back();
   std::vector<int> got_to_want;
   if (auto problem = compare_with_level(got, want.positions, static_cast<long>(want.face_sizes.size()), "OpenSubdiv",
@@ -377,8 +397,9 @@ std::optional<Finding> check_loop(const Node& model, Implementation& sut, int le
                                   std::to_string(got.faces) + " faces");
     return std::nullopt;
   }
-  const std::optional<OsdResult> refined = oracle_refinement(mesh, OsdScheme::Loop, level);
-  if (!refined) return std::nullopt;  // not compared
+  std::string why;
+  const std::optional<OsdResult> refined = oracle_refinement(mesh, OsdScheme::Loop, level, &why);
+  if (!refined) return not_judged(kClause, request + ": " + why);
   const OsdResult& osd = *refined;
   std::vector<int> got_to_want;
   if (auto problem = compare_with_level(got, osd.levels.back().positions,
@@ -402,18 +423,23 @@ std::optional<Finding> check_loop(const Node& model, Implementation& sut, int le
   for (int l = 1; l <= level; ++l) {
     const OsdLevel& parent = osd.levels[static_cast<std::size_t>(l - 1)];
     const OsdLevel& child = osd.levels[static_cast<std::size_t>(l)];
-    std::map<std::pair<int, int>, int> edge_of;
-    for (std::size_t e = 0; e < parent.edges.size(); ++e)
-      edge_of[{std::min(parent.edges[e][0], parent.edges[e][1]), std::max(parent.edges[e][0], parent.edges[e][1])}] =
-          static_cast<int>(e);
     std::vector<Tri> next;
     for (const Tri& t : tree) {
       std::array<int, 3> s{}, vc{};
       for (int k = 0; k < 3; ++k) {
+        // The edge opposite vertex k, through the parent face's own edges
+        // (GetFaceEdges; never by vertex pair: a Loop "pillow" has two
+        // edges on one pair).
         const int a = t.v[static_cast<std::size_t>((k + 1) % 3)], b = t.v[static_cast<std::size_t>((k + 2) % 3)];
-        auto it = edge_of.find({std::min(a, b), std::max(a, b)});
-        if (it == edge_of.end()) return std::nullopt;  // OpenSubdiv's level is not what the tree assumes
-        s[static_cast<std::size_t>(k)] = child.child_of_parent_edge[static_cast<std::size_t>(it->second)];
+        int edge = -1;
+        for (int c = 0; c < 3; ++c)
+          if (parent.face_vertices[static_cast<std::size_t>(3 * t.face + c)] == a &&
+              parent.face_vertices[static_cast<std::size_t>(3 * t.face + (c + 1) % 3)] == b)
+            edge = parent.face_edges[static_cast<std::size_t>(3 * t.face + c)];
+        if (edge < 0)
+          return not_judged(kClause, request + ": OpenSubdiv's level " + std::to_string(l - 1) +
+                                         " is not what the triangle tree assumes");
+        s[static_cast<std::size_t>(k)] = child.child_of_parent_edge[static_cast<std::size_t>(edge)];
         vc[static_cast<std::size_t>(k)] = child.child_of_parent_vertex[static_cast<std::size_t>(t.v[static_cast<std::size_t>(k)])];
       }
       const std::array<std::array<int, 3>, 4> kids = {{{s[0], s[1], s[2]},
@@ -429,7 +455,9 @@ std::optional<Finding> check_loop(const Node& model, Implementation& sut, int le
               same = same && child.face_vertices[static_cast<std::size_t>(3 * cf + (k + r) % 3)] == kid[static_cast<std::size_t>(k)];
             if (same) found = cf;
           }
-        if (found < 0) return std::nullopt;  // OpenSubdiv's children are not what the tree assumes
+        if (found < 0)
+          return not_judged(kClause, request + ": OpenSubdiv's children at level " + std::to_string(l) +
+                                         " are not what the triangle tree assumes");
         next.push_back({found, kid});
       }
     }
@@ -652,8 +680,9 @@ std::optional<Finding> check_edits(const Node& model, Implementation& sut, int l
   // that a fault in one kind does not hide behind the others' cases.
   const MeshArrays mesh = remove_unused_vertices(extract_mesh(model));
   if (mesh.face_count() == 0) return std::nullopt;  // no face for an edit to name
-  const std::optional<OsdResult> osd = oracle_refinement(mesh, OsdScheme::CatmullClark, level);
-  if (!osd) return std::nullopt;  // not compared
+  std::string why;
+  const std::optional<OsdResult> osd = oracle_refinement(mesh, OsdScheme::CatmullClark, level, &why);
+  if (!osd) return not_judged("EDIT-HIERARCHY-1", "?subdivide-edit " + std::to_string(level) + ": " + why);
   for (int kind = 0; kind < 4; ++kind)
     if (auto f = check_one_edit(mesh, *osd, sut, level, draw + 0x632BE5ABu * static_cast<std::uint32_t>(kind), kind))
       return f;

@@ -37,9 +37,11 @@ std::optional<Finding> check_classify(const Node& model, Implementation& sut);
 // Compares sut's ?subdivide <level> (1..3) with osd_refine_uniform of the
 // model's polygons (vertices in no polygon left out): vertex and face
 // counts, and the vertices as a bijection by nearest position within
-// 1e-9 * max(1, largest coordinate magnitude). Only where the polygons
-// form a polygon mesh (reference mesh_topology.h) and OpenSubdiv refines
-// them. Precondition: as check_classify. Never throws.
+// 1e-9 * max(1, largest coordinate magnitude). On every mesh a node can
+// hold, non-manifold included (OpenSubdiv's non-manifold rules, which the
+// reference follows: reference/catmull_clark.h); where OpenSubdiv refuses
+// the polygons the result is a FindingStatus::NotJudged saying why, not a
+// pass. Precondition: as check_classify. Never throws.
 std::optional<Finding> check_subdivision(const Node& model, Implementation& sut, int level);
 
 // Checks sut's ?normals (spec 003 split normals): one "corner" line per
@@ -59,8 +61,9 @@ std::optional<Finding> check_normals(const Node& model, Implementation& sut);
 // then the face lines against the spec 004 triangle tree built on
 // OpenSubdiv's levels (tree order, T0 the centre, each triangle in the
 // oriented order of reference/loop_subdivision.h). When a live polygon is
-// not a triangle the answer must be one "error" line. Compared where the
-// polygons form a polygon mesh. Precondition: as check_classify.
+// not a triangle the answer must be one "error" line. Compared on every
+// all-triangle mesh, non-manifold included; NotJudged where OpenSubdiv
+// refuses it. Precondition: as check_classify.
 std::optional<Finding> check_loop(const Node& model, Implementation& sut, int level);
 
 // Checks sut's ?subdivide-edit <level> <edit> (spec 001 hierarchical
@@ -75,8 +78,9 @@ std::optional<Finding> check_loop(const Node& model, Implementation& sut, int le
 // own level exactly one vertex moves, and "set" puts it at the value
 // (where coordinates are at most 1e6).
 // Without an oracle: the vertices and kept-face count against the
-// reference's hierarchical_edit.h. Compared where the polygons form a
-// polygon mesh. Precondition: as check_classify.
+// reference's hierarchical_edit.h. Compared on every mesh, non-manifold
+// included; NotJudged where OpenSubdiv refuses it. Precondition: as
+// check_classify.
 std::optional<Finding> check_edits(const Node& model, Implementation& sut, int level, std::uint32_t draw);
 
 // Registers the checks ("manifold", "subdivision", "normals", "loop",

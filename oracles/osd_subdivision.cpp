@@ -127,8 +127,10 @@ OsdResult osd_refine_uniform(const OsdInput& in) {
     for (const Point& q : points[static_cast<std::size_t>(l)]) out.positions.push_back({q.p[0], q.p[1], q.p[2]});
     for (int f = 0; f < t.GetNumFaces(); ++f) {
       Far::ConstIndexArray fv = t.GetFaceVertices(f);
+      Far::ConstIndexArray fe = t.GetFaceEdges(f);
       out.face_sizes.push_back(fv.size());
       for (int k = 0; k < fv.size(); ++k) out.face_vertices.push_back(fv[k]);
+      for (int k = 0; k < fe.size(); ++k) out.face_edges.push_back(fe[k]);
       out.face_hole.push_back(t.IsFaceHole(f) ? 1 : 0);
     }
     for (int e = 0; e < t.GetNumEdges(); ++e) {

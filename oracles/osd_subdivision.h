@@ -42,6 +42,7 @@ struct OsdLevel {
   std::vector<int> face_sizes;
   std::vector<int> face_vertices;
   std::vector<std::array<int, 2>> edges;  // per edge: its vertices
+  std::vector<int> face_edges;            // per corner: GetFaceEdges, faces concatenated
   std::vector<float> edge_sharpness;
   std::vector<float> vertex_sharpness;
   std::vector<unsigned char> face_hole;

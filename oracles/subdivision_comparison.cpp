@@ -24,11 +24,14 @@ std::string compare_subdivision_by_parent(const std::vector<SubdivisionLevel>& r
   std::ostringstream why;
   if (!osd.ok) return "oracle failed: " + osd.failure;
   if (ref.size() != osd.levels.size()) return "level count differs";
-  // ref index -> osd index, per level.
+  // ref index -> osd index, per level; frot[f]: ref corner k of face f is
+  // OpenSubdiv's corner (k + frot[f]) % n of face fmap[f].
   std::vector<int> vmap(static_cast<std::size_t>(ref[0].vertex_count()));
   std::iota(vmap.begin(), vmap.end(), 0);
   std::vector<int> fmap(static_cast<std::size_t>(ref[0].face_count()));
   std::iota(fmap.begin(), fmap.end(), 0);
+  std::vector<int> frot(fmap.size(), 0);
+  std::vector<int> emap;  // the previous level's edges, ref -> osd
   for (std::size_t l = 0; l < ref.size(); ++l) {
     const SubdivisionLevel& r = ref[l];
     const OsdLevel& o = osd.levels[l];
@@ -38,30 +41,21 @@ std::string compare_subdivision_by_parent(const std::vector<SubdivisionLevel>& r
           << r.face_count() << "/" << o.face_sizes.size() << ", e " << r.edge_count() << "/" << o.edges.size() << ")";
       return why.str();
     }
+    std::vector<int> ooffsets(o.face_sizes.size() + 1, 0);
+    for (std::size_t g = 0; g < o.face_sizes.size(); ++g) ooffsets[g + 1] = ooffsets[g] + o.face_sizes[g];
     if (l > 0) {
       const SubdivisionLevel& rp = ref[l - 1];
-      const OsdLevel& op = osd.levels[l - 1];
-      std::map<std::uint64_t, int> oedge;
-      for (std::size_t e = 0; e < op.edges.size(); ++e) oedge[pair_key(op.edges[e][0], op.edges[e][1])] = static_cast<int>(e);
       std::vector<int> child(static_cast<std::size_t>(r.vertex_count()), -1);
       for (int v = 0; v < rp.vertex_count(); ++v)
         child[static_cast<std::size_t>(r.child_of_parent_vertex[v])] = o.child_of_parent_vertex[vmap[v]];
-      for (int e = 0; e < rp.edge_count(); ++e) {
-        auto it = oedge.find(pair_key(vmap[rp.edges[e][0]], vmap[rp.edges[e][1]]));
-        if (it == oedge.end()) {
-          why << "level " << l - 1 << ": edge " << e << " has no OpenSubdiv counterpart";
-          return why.str();
-        }
-        child[static_cast<std::size_t>(r.child_of_parent_edge[e])] = o.child_of_parent_edge[it->second];
-      }
+      for (int e = 0; e < rp.edge_count(); ++e)
+        child[static_cast<std::size_t>(r.child_of_parent_edge[e])] = o.child_of_parent_edge[emap[static_cast<std::size_t>(e)]];
       if (face_points)
         for (int f = 0; f < rp.face_count(); ++f)
           child[static_cast<std::size_t>(r.child_of_parent_face[f])] = o.child_of_parent_face[fmap[f]];
       vmap = child;
       // Child faces: same vertices up to rotation.
-      std::vector<int> ooffsets(o.face_sizes.size() + 1, 0);
-      for (std::size_t g = 0; g < o.face_sizes.size(); ++g) ooffsets[g + 1] = ooffsets[g] + o.face_sizes[g];
-      std::vector<int> cf(static_cast<std::size_t>(r.face_count()), -1);
+      std::vector<int> cf(static_cast<std::size_t>(r.face_count()), -1), crot(cf.size(), 0);
       for (int f = 0; f < rp.face_count(); ++f) {
         const auto& ochildren = o.child_faces_of_parent_face[fmap[f]];
         const int first = r.first_child_of_parent_face[f];
@@ -72,11 +66,15 @@ std::string compare_subdivision_by_parent(const std::vector<SubdivisionLevel>& r
           for (int c = 0; c < r.face_sizes[k]; ++c) rv.push_back(vmap[r.face_vertices[r.face_offsets[k] + c]]);
           for (int oc : ochildren) {
             const int ooff = ooffsets[static_cast<std::size_t>(oc)];
-            std::vector<int> ov(o.face_vertices.begin() + ooff, o.face_vertices.begin() + ooff + o.face_sizes[oc]);
-            if (ov.size() != rv.size()) continue;
-            for (std::size_t rot = 0; rot < ov.size(); ++rot) {
-              std::rotate(ov.begin(), ov.begin() + 1, ov.end());
-              if (ov == rv) cf[static_cast<std::size_t>(k)] = oc;
+            if (o.face_sizes[oc] != static_cast<int>(rv.size())) continue;
+            for (std::size_t rot = 0; rot < rv.size(); ++rot) {
+              bool same = true;
+              for (std::size_t c = 0; c < rv.size() && same; ++c)
+                same = o.face_vertices[static_cast<std::size_t>(ooff) + (c + rot) % rv.size()] == rv[c];
+              if (same) {
+                cf[static_cast<std::size_t>(k)] = oc;
+                crot[static_cast<std::size_t>(k)] = static_cast<int>(rot);
+              }
             }
           }
           if (cf[static_cast<std::size_t>(k)] < 0) {
@@ -86,7 +84,33 @@ std::string compare_subdivision_by_parent(const std::vector<SubdivisionLevel>& r
         }
       }
       fmap = cf;
+      frot = crot;
     }
+    // Edges, through the faces that use them (never by vertex pair: two
+    // edges may join the same two vertices, as in a Loop "pillow").
+    emap.assign(static_cast<std::size_t>(r.edge_count()), -1);
+    std::vector<int> etaken(o.edges.size(), -1);
+    for (int f = 0; f < r.face_count(); ++f) {
+      const int n = r.face_sizes[f];
+      for (int k = 0; k < n; ++k) {
+        const int re = r.face_edges[r.face_offsets[f] + k];
+        const int oe = o.face_edges[static_cast<std::size_t>(ooffsets[static_cast<std::size_t>(fmap[f])] + (k + frot[f]) % n)];
+        int& m = emap[static_cast<std::size_t>(re)];
+        if (m < 0 && etaken[static_cast<std::size_t>(oe)] < 0) {
+          m = oe;
+          etaken[static_cast<std::size_t>(oe)] = re;
+        } else if (m != oe) {
+          why << "level " << l << ": edge " << re << " (corner " << k << " of face " << f
+              << ") has no single OpenSubdiv counterpart";
+          return why.str();
+        }
+      }
+    }
+    for (int e = 0; e < r.edge_count(); ++e)
+      if (emap[static_cast<std::size_t>(e)] < 0) {
+        why << "level " << l << ": edge " << e << " has no OpenSubdiv counterpart (no face uses it)";
+        return why.str();
+      }
     std::vector<int> seen(o.positions.size(), 0);
     for (int v = 0; v < r.vertex_count(); ++v) {
       const int ov = vmap[static_cast<std::size_t>(v)];
@@ -108,12 +132,12 @@ std::string compare_subdivision_by_parent(const std::vector<SubdivisionLevel>& r
         return why.str();
       }
     }
-    std::map<std::uint64_t, int> oedge;
-    for (std::size_t e = 0; e < o.edges.size(); ++e) oedge[pair_key(o.edges[e][0], o.edges[e][1])] = static_cast<int>(e);
     for (int e = 0; e < r.edge_count(); ++e) {
-      auto it = oedge.find(pair_key(vmap[r.edges[e][0]], vmap[r.edges[e][1]]));
-      if (it == oedge.end() || r.edge_sharpness[e] != o.edge_sharpness[it->second]) {
-        why << "level " << l << ": edge " << e << " missing or sharpness differs";
+      const auto& oe = o.edges[static_cast<std::size_t>(emap[static_cast<std::size_t>(e)])];
+      if (pair_key(vmap[r.edges[e][0]], vmap[r.edges[e][1]]) != pair_key(oe[0], oe[1]) ||
+          r.edge_sharpness[e] != o.edge_sharpness[static_cast<std::size_t>(emap[static_cast<std::size_t>(e)])]) {
+        why << "level " << l << ": edge " << e << " missing or sharpness differs (" << r.edge_sharpness[e] << " vs "
+            << o.edge_sharpness[static_cast<std::size_t>(emap[static_cast<std::size_t>(e)])] << ")";
         return why.str();
       }
     }
@@ -125,6 +149,5 @@ std::string compare_subdivision_by_parent(const std::vector<SubdivisionLevel>& r
   }
   return {};
 }
-
 
 }  // namespace vgc

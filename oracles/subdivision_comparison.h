@@ -9,12 +9,15 @@
 // fuzz target fuzz_mesh_subdivision, so that the fuzzer checks exactly what
 // the tests check. Plain types only (no OpenSubdiv header).
 // Level by level: vertex, face and edge counts equal; the child of a parent
-// vertex, of a parent edge (found by its two mapped vertices, as
-// Far::TopologyLevel::FindEdge), of a parent face (Catmull-Clark:
-// face_points) is mapped to OpenSubdiv's; every child face of a parent face
-// equals one of OpenSubdiv's GetFaceChildFaces up to rotation; the map is a
-// bijection; positions agree within `tolerance` (absolute, max norm);
-// vertex and edge sharpness are equal; hole flags are equal.
+// vertex, of a parent edge, of a parent face (Catmull-Clark: face_points)
+// is mapped to OpenSubdiv's; every child face of a parent face equals one of
+// OpenSubdiv's GetFaceChildFaces up to rotation; edges are matched through
+// the faces using them (corner k of a face to the corresponding corner of
+// OpenSubdiv's face, GetFaceEdges), never by vertex pair, since two edges
+// may join the same two vertices (a Loop "pillow"), and the edge map must
+// be one to one; the vertex map is a bijection; positions agree within
+// `tolerance` (absolute, max norm); vertex and edge sharpness are equal;
+// hole flags are equal.
 #pragma once
 
 #include <string>

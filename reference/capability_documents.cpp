@@ -119,7 +119,9 @@ std::string print_subdivision(const Node& node, int level, const CapabilityDocum
   std::string out = "vgc-subdivision 1\nlevel " + std::to_string(level) + "\n";
   std::size_t faces = 0;
   if (mesh.face_count() > 0) {
-    const auto levels = subdivide_catmull_clark(mesh, level);
+    CatmullClarkFaults cf;
+    cf.no_non_manifold_rule = faults.non_manifold_smooth;
+    const auto levels = subdivide_catmull_clark(mesh, level, cf);
     if (levels.size() != static_cast<std::size_t>(level) + 1) return "error the mesh cannot be subdivided\n";
     for (const auto& p : levels.back().positions)
       out += "vertex " + format_f64(p[0]) + " " + format_f64(p[1]) + " " + format_f64(p[2]) + "\n";
@@ -140,6 +142,7 @@ std::string print_loop_subdivision(const Node& node, int level, const Capability
   if (mesh.face_count() > 0) {
     LoopFaults lf;
     lf.warren_weights = faults.loop_warren_weights;
+    lf.edges_by_vertex_pair = faults.loop_edges_by_vertex_pair;
     const auto levels = subdivide_loop(mesh, level, lf);
     if (levels.size() != static_cast<std::size_t>(level) + 1) return "error the mesh cannot be subdivided\n";
     const SubdivisionLevel& last = levels.back();

@@ -36,6 +36,8 @@ struct CapabilityDocumentFaults {
   bool edit_hole_wrong_face = false;  // ?subdivide-edit holes the next sibling (or base polygon) instead
   bool edit_truncated_path = false;   // ?subdivide-edit applies a deeper edit at the asked level, path cut
   bool edit_add_zero_as_set = false;  // ?subdivide-edit treats "add" of (0, 0, 0) as "set" (to the origin)
+  bool non_manifold_smooth = false;   // ?subdivide without the non-manifold rule (CatmullClarkFaults)
+  bool loop_edges_by_vertex_pair = false;  // ?subdivide-loop merges child edges by vertex pair (LoopFaults)
 };
 
 // The document header a capability request is answered with

@@ -5,6 +5,7 @@
 #include <unordered_map>
 
 #include "crease_sharpness.h"
+#include "mesh_topology.h"
 
 namespace vgc {
 namespace {
@@ -85,7 +86,50 @@ void build_level_edges(SubdivisionLevel* level) {
   }
 }
 
-bool build_base_level(const MeshArrays& mesh, SubdivisionLevel* out) {
+NonManifoldTags non_manifold_tags(const MeshArrays& mesh, const SubdivisionLevel& l) {
+  NonManifoldTags tags;
+  const int nv = l.vertex_count(), ne = l.edge_count();
+  tags.edge.assign(static_cast<std::size_t>(ne), 0);
+  tags.vertex.assign(static_cast<std::size_t>(nv), 0);
+  tags.vertex_sharpened.assign(static_cast<std::size_t>(nv), 0);
+  // Edges: a third use, or a second use starting where the first did
+  // (edges[e][0] is the first use's start).
+  std::vector<int> uses(static_cast<std::size_t>(ne), 0);
+  for (int f = 0; f < l.face_count(); ++f)
+    for (int c = 0; c < l.face_sizes[f]; ++c) {
+      const int corner = l.face_offsets[f] + c;
+      const auto e = static_cast<std::size_t>(l.face_edges[corner]);
+      const int n = ++uses[e];
+      if (n > 2 || (n == 2 && l.face_vertices[corner] == l.edges[e][0])) tags.edge[e] = 1;
+    }
+  for (int e = 0; e < ne; ++e)
+    if (tags.edge[static_cast<std::size_t>(e)])
+      for (int end = 0; end < 2; ++end) tags.vertex[static_cast<std::size_t>(l.edges[e][end])] = 1;
+  // Vertices: in no face, or in more than one fan (mesh_topology.h; with
+  // every incident edge manifold, the fans are OpenSubdiv's walk).
+  const MeshTopology t = classify_mesh(mesh);
+  for (int v = 0; v < nv; ++v) {
+    const auto sv = static_cast<std::size_t>(v);
+    if (t.status != MeshStatus::Ok || t.vertex_kinds[sv] == VertexKind::Isolated || t.vertex_fan_counts[sv] != 1)
+      tags.vertex[sv] = 1;
+  }
+  // Sharpening, with the exception of an interior non-manifold crease.
+  std::vector<int> vedges(static_cast<std::size_t>(nv), 0), vfaces(static_cast<std::size_t>(nv), 0),
+      vnm(static_cast<std::size_t>(nv), 0), vboundary(static_cast<std::size_t>(nv), 0);
+  for (int e = 0; e < ne; ++e)
+    for (int end = 0; end < 2; ++end) {
+      const auto v = static_cast<std::size_t>(l.edges[e][end]);
+      ++vedges[v];
+      vnm[v] += tags.edge[static_cast<std::size_t>(e)];
+      vboundary[v] += uses[static_cast<std::size_t>(e)] < 2 ? 1 : 0;
+    }
+  for (int v : l.face_vertices) ++vfaces[static_cast<std::size_t>(v)];
+  for (std::size_t v = 0; v < static_cast<std::size_t>(nv); ++v)
+    if (tags.vertex[v] && !(vnm[v] == 2 && vboundary[v] == 0 && vfaces[v] > vedges[v])) tags.vertex_sharpened[v] = 1;
+  return tags;
+}
+
+bool build_base_level(const MeshArrays& mesh, SubdivisionLevel* out, bool non_manifold_rule) {
   const int nv = mesh.vertex_count();
   if (static_cast<int>(mesh.vertex_creases.size()) != nv) return false;
   if (mesh.face_offsets.size() != mesh.face_sizes.size()) return false;
@@ -119,6 +163,18 @@ bool build_base_level(const MeshArrays& mesh, SubdivisionLevel* out) {
           mesh.corner_edge_creases[static_cast<std::size_t>(mesh.face_offsets[f] + c)]);
   for (int e = 0; e < l.edge_count(); ++e)
     l.edge_sharpness.push_back(edge_sharpness_for(combine_edge_creases(stored[e]), l.edge_face_count[e]));
+  if (non_manifold_rule) {
+    // The mesh as given may have offsets that are not the level's; the tags
+    // read the level's faces and classify a copy with the level's offsets.
+    MeshArrays tiled = mesh;
+    tiled.face_offsets = l.face_offsets;
+    tiled.face_vertices = l.face_vertices;
+    const NonManifoldTags tags = non_manifold_tags(tiled, l);
+    for (int e = 0; e < l.edge_count(); ++e)
+      if (tags.edge[static_cast<std::size_t>(e)]) l.edge_sharpness[static_cast<std::size_t>(e)] = kSharpnessInfinite;
+    for (int v = 0; v < nv; ++v)
+      if (tags.vertex_sharpened[static_cast<std::size_t>(v)]) l.vertex_sharpness[static_cast<std::size_t>(v)] = kSharpnessInfinite;
+  }
   l.face_hole.assign(l.face_sizes.size(), 0);
   *out = std::move(l);
   return true;
@@ -258,7 +314,7 @@ std::vector<SubdivisionLevel> subdivide_catmull_clark(const MeshArrays& mesh, in
   std::vector<SubdivisionLevel> out;
   if (levels < 0 || levels > 6) return out;
   SubdivisionLevel base;
-  if (!build_base_level(mesh, &base)) return out;
+  if (!build_base_level(mesh, &base, !faults.no_non_manifold_rule)) return out;
   out.push_back(std::move(base));
   for (int k = 1; k <= levels; ++k) out.push_back(refine_catmull_clark(out.back(), faults));
   return out;

@@ -28,8 +28,15 @@
 //                 child rule's mask by the rest.
 // Holes (spec 001 face "hole" edits) are a per-face flag inherited by every
 // child face; they change no position.
+// Non-manifold input (a mesh a node can hold need not be a polygon mesh:
+// fins, bow-ties, pillows, faces running the same direction) follows
+// OpenSubdiv's rules, read from its Vtr::Level::completeTopologyFromFaceVertices
+// and Far::TopologyRefinerFactory (issue 11): see build_base_level and
+// non_manifold_tags below; the tags act only through sharpness, which
+// children inherit as usual.
 // Decision: a vertex in no polygon keeps its position at every level (the
-// smooth rule is undefined for valence 0; OpenSubdiv is not compared there).
+// smooth rule is undefined for valence 0; OpenSubdiv, which tags it
+// non-manifold and so infinitely sharp, is not compared there).
 #pragma once
 
 #include <array>
@@ -66,12 +73,37 @@ struct SubdivisionLevel {
 };
 
 // Level 0 of `mesh`: positions, faces, edges (numbered by first appearance
-// walking the faces in order, corner by corner), and sharpness from the
-// creases by crease_sharpness.h (shared edges: maximum; boundary and
-// non-manifold edges: infinite). Precondition: every face has >= 3 corners
-// and every corner index is in [0, vertex_count); failure: returns false and
-// leaves *out unspecified.
-bool build_base_level(const MeshArrays& mesh, SubdivisionLevel* out);
+// walking the faces in order, corner by corner; an edge's vertices in the
+// direction its first face uses it), and sharpness from the creases by
+// crease_sharpness.h (shared edges: maximum), then OpenSubdiv's rules for
+// boundaries and non-manifold topology (Far::TopologyRefinerFactory,
+// Vtr::Level::completeTopologyFromFaceVertices; see
+// non_manifold_sharpness below): boundary and non-manifold edges are
+// infinitely sharp, and so are non-manifold vertices except on a
+// non-manifold crease. With non_manifold_rule false (a seeded fault for
+// tests) only edges with other than two faces are sharpened, as before
+// issue 11. Precondition: none; failure (a face with < 3 corners, a corner
+// out of range, a vertex repeated in a face, arrays of the wrong length):
+// returns false and leaves *out unspecified.
+bool build_base_level(const MeshArrays& mesh, SubdivisionLevel* out, bool non_manifold_rule = true);
+
+// OpenSubdiv's non-manifold rules on a valid mesh (check_mesh Ok), per the
+// level-0 edges of build_base_level (face_edges numbering):
+//  - an edge is non-manifold when more than two faces use it, or when its
+//    second face uses it in the same direction as its first;
+//  - a vertex is non-manifold when it ends a non-manifold edge, is in no
+//    face, or its faces do not form one fan (two fans touching at it: a
+//    "bow-tie"); OpenSubdiv's orderVertexFacesAndEdges fails exactly there;
+//  - a non-manifold vertex is made infinitely sharp unless it lies on an
+//    interior non-manifold crease: exactly two non-manifold incident edges,
+//    no boundary edge, and more incident faces than edges (the spine of a
+//    "fin" of three or more sheets), where the crease rule applies.
+struct NonManifoldTags {
+  std::vector<unsigned char> edge;            // per level-0 edge: 1 if non-manifold
+  std::vector<unsigned char> vertex;          // per vertex: 1 if non-manifold
+  std::vector<unsigned char> vertex_sharpened;  // per vertex: 1 if made infinitely sharp
+};
+NonManifoldTags non_manifold_tags(const MeshArrays& mesh, const SubdivisionLevel& base);
 
 // Recomputes edges, face_edges and edge_face_count from the faces (used by
 // both schemes after building a child level's faces).
@@ -83,6 +115,7 @@ struct CatmullClarkFaults {
   bool pin_boundary_vertices = false;  // boundary vertices use the corner rule (EDGE_AND_CORNER everywhere)
   bool no_fractional_blend = false;    // sharpness < 1 acts as smooth (no blend)
   bool wrong_crease_weights = false;   // crease vertex rule 2/3 v + 1/6 each
+  bool no_non_manifold_rule = false;   // non-manifold vertices and same-direction edges left smooth
 };
 
 // One uniform Catmull-Clark step. Child numbering: the child of parent

@@ -151,15 +151,63 @@ SubdivisionLevel refine_loop(const SubdivisionLevel& p, const LoopFaults& faults
       c.face_hole.push_back(p.face_hole[f]);
     }
   }
-  build_level_edges(&c);
-  std::unordered_map<std::uint64_t, int> cindex;
-  for (int e = 0; e < c.edge_count(); ++e) cindex.emplace(edge_key(c.edges[e][0], c.edges[e][1]), e);
+  if (faults.edges_by_vertex_pair) {
+    // The seeded fault: edges rebuilt from vertex pairs (merges the child
+    // edges of two triangles on the same three vertices).
+    build_level_edges(&c);
+    std::unordered_map<std::uint64_t, int> cindex;
+    for (int e = 0; e < c.edge_count(); ++e) cindex.emplace(edge_key(c.edges[e][0], c.edges[e][1]), e);
+    c.edge_sharpness.assign(c.edges.size(), kSharpnessSmooth);
+    for (int e = 0; e < ne; ++e) {
+      const float cs = subdivide_sharpness(p.edge_sharpness[e]);
+      for (int end = 0; end < 2; ++end) {
+        auto it = cindex.find(edge_key(p.edges[e][end], nv + e));
+        if (it != cindex.end()) c.edge_sharpness[static_cast<std::size_t>(it->second)] = cs;
+      }
+    }
+    return c;
+  }
+  // Child edges from the parent's topology (see the header): the halves of
+  // each parent edge, then three inside each parent face.
+  c.edges.assign(static_cast<std::size_t>(2 * ne + 3 * nf), {0, 0});
   c.edge_sharpness.assign(c.edges.size(), kSharpnessSmooth);
+  c.edge_face_count.assign(c.edges.size(), 2);
   for (int e = 0; e < ne; ++e) {
     const float cs = subdivide_sharpness(p.edge_sharpness[e]);
+    const int faces = static_cast<int>(edge_faces[static_cast<std::size_t>(e)].size());
     for (int end = 0; end < 2; ++end) {
-      auto it = cindex.find(edge_key(p.edges[e][end], nv + e));
-      if (it != cindex.end()) c.edge_sharpness[static_cast<std::size_t>(it->second)] = cs;
+      const auto ce = static_cast<std::size_t>(2 * e + end);
+      c.edges[ce] = {p.edges[e][end], nv + e};
+      c.edge_sharpness[ce] = cs;
+      c.edge_face_count[ce] = faces;
+    }
+  }
+  // The half of parent edge e at its end vertex w.
+  auto half = [&](int e, int w) { return 2 * e + (p.edges[e][0] == w ? 0 : 1); };
+  c.face_edges.assign(c.face_vertices.size(), -1);
+  for (int f = 0; f < nf; ++f) {
+    const int o = p.face_offsets[f];
+    const int inner = 2 * ne + 3 * f;  // inner + j joins s(j+1) and s(j+2)
+    std::array<int, 3> sub{};
+    for (int k = 0; k < 3; ++k) sub[static_cast<std::size_t>(k)] = nv + p.face_edges[o + (k + 1) % 3];
+    for (int j = 0; j < 3; ++j)
+      c.edges[static_cast<std::size_t>(inner + j)] = {sub[static_cast<std::size_t>((j + 1) % 3)],
+                                                      sub[static_cast<std::size_t>((j + 2) % 3)]};
+    const int first = c.first_child_of_parent_face[static_cast<std::size_t>(f)];
+    // T0 = [s0 s1 s2]: s0->s1 is inner 2, s1->s2 inner 0, s2->s0 inner 1.
+    int* t0 = c.face_edges.data() + c.face_offsets[static_cast<std::size_t>(first)];
+    t0[0] = inner + 2;
+    t0[1] = inner + 0;
+    t0[2] = inner + 1;
+    // T(j+1) = [vj s(j+2) s(j+1)]: vj->s(j+2) is the half of the edge from
+    // corner j to j+1 at vj; s(j+2)->s(j+1) is inner j; s(j+1)->vj the half
+    // of the edge from corner j+2 to j at vj.
+    for (int j = 0; j < 3; ++j) {
+      const int vj = p.face_vertices[o + j];
+      int* tj = c.face_edges.data() + c.face_offsets[static_cast<std::size_t>(first + j + 1)];
+      tj[0] = half(p.face_edges[o + j], vj);
+      tj[1] = inner + j;
+      tj[2] = half(p.face_edges[o + (j + 2) % 3], vj);
     }
   }
   return c;
@@ -171,7 +219,7 @@ std::vector<SubdivisionLevel> subdivide_loop(const MeshArrays& mesh, int levels,
   for (int n : mesh.face_sizes)
     if (n != 3) return out;
   SubdivisionLevel base;
-  if (!build_base_level(mesh, &base)) return out;
+  if (!build_base_level(mesh, &base, !faults.no_non_manifold_rule)) return out;
   out.push_back(std::move(base));
   for (int k = 1; k <= levels; ++k) out.push_back(refine_loop(out.back(), faults));
   return out;

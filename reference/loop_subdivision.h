@@ -30,6 +30,8 @@ namespace vgc {
 struct LoopFaults {
   bool warren_weights = false;       // Warren's beta = 3/(8n) (3/16 for n = 3) instead of Loop's
   bool no_fractional_blend = false;  // sharpness < 1 acts as smooth
+  bool no_non_manifold_rule = false;   // non-manifold vertices and same-direction edges left smooth
+  bool edges_by_vertex_pair = false;   // child edges merged by vertex pair (the rule before issue 11)
 };
 
 // One uniform Loop step. Child numbering: the child of parent vertex v is v,
@@ -37,7 +39,13 @@ struct LoopFaults {
 // has 4 consecutive child triangles T0..T3 (triangle_tree.h): T0 =
 // [s0 s1 s2], T(j+1) = [vj' s(j+2) s(j+1)] (indices mod 3), where sk is the
 // edge point of the edge opposite corner k; every child keeps the parent's
-// orientation. Precondition: every face of `parent` is a triangle
+// orientation. Child edges come from the parent's topology, as
+// OpenSubdiv's Vtr::TriRefinement builds them, never from vertex pairs:
+// edge 2e and 2e + 1 are the halves of parent edge e (at its first and
+// second vertex), then three per parent face f, 2 * ne + 3f + j joining
+// s(j+1) and s(j+2). So two triangles on the same three vertices (a closed
+// "pillow") keep distinct child edges although their T0s share vertices.
+// Precondition: every face of `parent` is a triangle
 // (else returns an empty level).
 SubdivisionLevel refine_loop(const SubdivisionLevel& parent, const LoopFaults& faults = {});
 

@@ -1,5 +1,6 @@
-// report.h — what `vgc certify` writes: report.json, junit.xml, summary.md
-// and one replayable counterexample command file per failing clause.
+// report.h — what `vgc certify` writes: report.json, junit.xml, summary.md,
+// report.html, one replayable counterexample command file per failing
+// clause, and the final mesh of each counterexample that holds one (OBJ).
 //
 // Spec: none (CI practice); docs/reports.md describes every field.
 //
@@ -44,6 +45,12 @@ std::string render_counterexample(const ClauseOutcome& co, const ReportContext& 
 std::string render_report_json(const RunResult& run, const Verdict& v, const ReportContext& ctx);
 std::string render_junit(const RunResult& run, const Verdict& v, const ReportContext& ctx);
 std::string render_summary(const RunResult& run, const Verdict& v, const ReportContext& ctx);
+// report.html (report_html.cpp): summary.md's content as a self-contained
+// page, with a picture of each counterexample's final mesh.
+std::string render_report_html(const RunResult& run, const Verdict& v, const ReportContext& ctx);
+// File name, relative to the run directory, of a counterexample's final
+// mesh ("counterexamples/<CLAUSE>.obj"), written when it holds a vertex.
+std::string counterexample_obj_path(const ClauseOutcome& co);
 
 // Writes every file into ctx.run_dir (via a temporary sibling directory and
 // one rename) and points <reports_root>/latest at it. On failure nothing

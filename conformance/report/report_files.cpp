@@ -10,6 +10,8 @@
 
 #include "command_text.h"
 #include "exec_implementation.h"  // shell_quote
+#include "finding_picture.h"
+#include "obj_writer.h"
 #include "program_text.h"
 #include "report.h"
 
@@ -118,12 +120,21 @@ bool write_report(const std::string& reports_root, const RunResult& run, const V
     return false;
   };
   std::string e;
-  for (const ClauseOutcome& co : run.clauses)
-    if (co.finding && !write_file(tmp_dir / counterexample_path(co), render_counterexample(co, ctx), &e))
+  for (const ClauseOutcome& co : run.clauses) {
+    if (!co.finding) continue;
+    if (!write_file(tmp_dir / counterexample_path(co), render_counterexample(co, ctx), &e)) return fail(e);
+    const FindingPicture picture = picture_of_finding(co);
+    if (picture.has_mesh &&
+        !write_file(tmp_dir / counterexample_obj_path(co),
+                    render_obj(picture.mesh, "vgc counterexample " + std::string(co.clause->id) +
+                                                 ": the reference's final state after its commands"),
+                    &e))
       return fail(e);
+  }
   if (!write_file(tmp_dir / "report.json", render_report_json(run, v, ctx), &e)) return fail(e);
   if (!write_file(tmp_dir / "junit.xml", render_junit(run, v, ctx), &e)) return fail(e);
   if (!write_file(tmp_dir / "summary.md", render_summary(run, v, ctx), &e)) return fail(e);
+  if (!write_file(tmp_dir / "report.html", render_report_html(run, v, ctx), &e)) return fail(e);
   fs::remove_all(final_dir, ec);
   fs::rename(tmp_dir, final_dir, ec);
   if (ec) return fail("cannot move the report into " + final_dir.string() + ": " + ec.message());

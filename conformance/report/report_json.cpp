@@ -4,6 +4,7 @@
 #include <filesystem>
 
 #include "command_text.h"
+#include "finding_picture.h"
 #include "report.h"
 
 namespace vgc {
@@ -60,6 +61,8 @@ std::string render_report_json(const RunResult& run, const Verdict& v, const Rep
       c["found_by"] = co.found_by;
       c["seed"] = co.seed;
       c["counterexample"] = file;
+      // The final mesh (report.html draws it), when the final state holds one.
+      if (picture_of_finding(co).has_mesh) c["counterexample_mesh"] = counterexample_obj_path(co);
       json lines = json::array();
       for (const auto& cmd : co.program.commands) lines.push_back(print_command(cmd));
       c["counterexample_commands"] = lines;

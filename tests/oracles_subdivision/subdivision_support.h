@@ -9,9 +9,10 @@
 // Comparison: reference levels (reference/catmull_clark.h, loop_subdivision.h)
 // against OpenSubdiv levels (oracles/osd_subdivision.h), vertex by vertex,
 // matched by parent component: the child of a parent vertex, of a parent
-// edge (found by its two mapped vertices, as Far::TopologyLevel::FindEdge),
-// of a parent face; child faces matched to OpenSubdiv's GetFaceChildFaces up
-// to rotation. Returns the first disagreement as text, empty if none.
+// edge (matched through the faces using it), of a parent face; child faces
+// matched to OpenSubdiv's GetFaceChildFaces up to rotation
+// (oracles/subdivision_comparison.h). Returns the first disagreement as
+// text, empty if none.
 #pragma once
 
 #include <algorithm>

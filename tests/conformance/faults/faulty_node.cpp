@@ -53,6 +53,10 @@ const std::vector<FaultInfo>& fault_catalog() {
       {"normals-flat", "NORMALS-SPLIT-1", "fail", "claims normals; ?normals gives every corner its face normal"},
       {"loop-warren-weights", "LOOP-TRIANGLE-1", "fail", "claims loop; ?subdivide-loop uses Warren's vertex weights"},
       {"edit-holes-ignored", "EDIT-HIERARCHY-1", "fail", "claims edits; ?subdivide-edit keeps the faces of holes"},
+      {"subdivision-non-manifold-smooth", "SUBD-CATMARK-1", "fail",
+       "claims subdivision; ?subdivide leaves non-manifold vertices and same-direction edges smooth"},
+      {"loop-edges-by-vertex-pair", "LOOP-TRIANGLE-1", "fail",
+       "claims loop; ?subdivide-loop merges a level's edges by vertex pair (a pillow loses vertices)"},
   };
   return catalog;
 }
@@ -258,6 +262,8 @@ std::string FaultyNode::request(const std::string& line) const {
   f.flat_normals = is("normals-flat");
   f.loop_warren_weights = is("loop-warren-weights");
   f.edit_holes_ignored = is("edit-holes-ignored");
+  f.non_manifold_smooth = is("subdivision-non-manifold-smooth");
+  f.loop_edges_by_vertex_pair = is("loop-edges-by-vertex-pair");
   auto text = answer_capability_request(node_, line, f);
   return text ? *text : "error unknown request\n";
 }

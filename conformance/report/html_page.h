@@ -1,0 +1,25 @@
+// html_page.h — the frame of vgc's HTML pages (report.html of certify and
+// of fuzz campaigns): doctype, charset, a Content-Security-Policy that
+// forbids loading anything (so the page is self-contained, and any attempt
+// to load something is a console error a test sees), one inline style.
+//
+// Spec: none (reporting).
+//
+// Rationale: the pages are built as pugixml trees (escaping done by the
+// library) and printed raw, with no empty-element tags, so an HTML parser
+// reads every element as written; the few parts an XML writer cannot give
+// (doctype, the void <meta> elements) are written here, fixed.
+#pragma once
+
+#include <string>
+
+namespace pugi {
+class xml_node;
+}
+
+namespace vgc {
+
+// "<!DOCTYPE html><html><head>...<title/>...<style/></head><body/></html>".
+std::string html_page(const pugi::xml_node& title, const pugi::xml_node& body);
+
+}  // namespace vgc
