@@ -10,7 +10,7 @@
 # unset).
 # Outputs in $OUT, per target (every name in the build's
 # fuzz/fuzz_targets.txt: fuzz_stream, fuzz_text, fuzz_differential,
-# fuzz_mesh_manifold, fuzz_mesh_subdivision, fuzz_property_<group>): the
+# fuzz_verse_packet, fuzz_mesh_manifold, fuzz_mesh_subdivision, fuzz_property_<group>): the
 # binary, <target>_seed_corpus.zip (corpora/fuzz/<target>/ and every fixed
 # crash in corpora/fuzz/<target>-crashes/), <target>.dict when the corpus
 # has one, and <target>.options.
@@ -25,7 +25,9 @@
 # how tests/fuzz/clusterfuzzlite_build.sh runs this script on Debian
 # packages. CGAL is used without GMP/MPFR (the oracle uses
 # Simple_cartesian<double> only), so the binaries need no libgmp at run
-# time; OpenSubdiv is linked statically when built here.
+# time; OpenSubdiv is linked statically when built here, and GMP (the
+# Verse login's RSA in fuzz_verse_packet, libgmp-dev in the Dockerfile)
+# statically from libgmp.a.
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 if [ -d "$here/../reference" ]; then
   ROOT="$(cd "$here/.." && pwd)"

@@ -79,7 +79,7 @@ int run_fuzz(const FuzzArgs& a) {
     return write_file(a.output, bytes) ? 0 : 2;
   }
   if (a.campaign.target.empty()) {
-    fmt::print(stderr, "vgc fuzz: name a target (stream, text, differential, mesh_manifold, mesh_subdivision, "
+    fmt::print(stderr, "vgc fuzz: name a target (stream, text, differential, verse_packet, mesh_manifold, mesh_subdivision, "
                        "property_<group>) or use --to-text / --to-binary\n");
     return 2;
   }
@@ -101,7 +101,7 @@ void add_fuzz(CLI::App& app, int* exit_code) {
   auto a = std::make_shared<FuzzArgs>();
   fuzz::CampaignOptions& o = a->campaign;
   CLI::App* sub = app.add_subcommand("fuzz", "Run a libFuzzer campaign on a fuzz target, or convert fuzz inputs");
-  sub->add_option("target", o.target, "stream, text, differential, mesh_manifold, mesh_subdivision or property_<group>");
+  sub->add_option("target", o.target, "stream, text, differential, verse_packet, mesh_manifold, mesh_subdivision or property_<group>");
   sub->add_option("--time", o.time_s, "Campaign length in seconds, a wall-clock limit (default 60)");
   sub->add_option("--jobs", o.jobs, "Parallel fuzzing jobs (libFuzzer -fork=N, default 1)");
   sub->add_option("--impl", o.impl, "differential, property_<group>: the implementation under test, plugin:PATH");

@@ -26,6 +26,7 @@
 #include "clause.h"
 #include "command_binary.h"
 #include "command_text.h"
+#include "program_command.h"
 #include "exec_implementation.h"
 
 namespace vgc::fuzz {
@@ -359,9 +360,10 @@ int run_campaign(const CampaignOptions& o, CampaignSummary* out) {
   bool known_group = false;
   for (const char* g : kGroups) known_group = known_group || name == std::string("property_") + g;
   const bool mesh = name == "mesh_manifold" || name == "mesh_subdivision";
-  if (name != "stream" && name != "text" && name != "differential" && !mesh && !known_group) {
+  if (name != "stream" && name != "text" && name != "differential" && name != "verse_packet" && !mesh &&
+      !known_group) {
     fmt::print(stderr,
-               "vgc fuzz: unknown target '{}': expected stream, text, differential, mesh_manifold, "
+               "vgc fuzz: unknown target '{}': expected stream, text, differential, verse_packet, mesh_manifold, "
                "mesh_subdivision or property_<group> "
                "(layers, polygons, creases, bones, values, ids, commands)\n",
                o.target);
@@ -573,12 +575,26 @@ int run_campaign(const CampaignOptions& o, CampaignSummary* out) {
     ++k;
     const fs::path cex_file =
         cex / fmt::format("crash-{}{}.{}", k, c.clause.empty() ? "" : "-" + c.clause,
-                          name == "text" ? "txt" : mesh ? "mesh.txt" : "vgc");
+                          name == "text" ? "txt" : mesh ? "mesh.txt" : name == "verse_packet" ? "packet.txt" : "vgc");
     c.counterexample = cex_file.string();
     c.replay_fuzzer = env_prefix(target_env) + shell_quote(binary.string()) + " " + shell_quote(rep.string());
     auto printed = g.printed.find(rep);
     if (name == "text") {
       write_file(cex_file, bytes);  // the input is text already
+      c.replay = c.replay_fuzzer;
+    } else if (name == "verse_packet") {  // one datagram: no command file; the input replays
+      std::string text = "# vgc fuzz " + target + " counterexample: " + c.signature + "\n# from " + rep.string() +
+                         "\n# replay: " + c.replay_fuzzer + "\n# the datagram, " + std::to_string(bytes.size()) +
+                         " bytes, in hex:\n";
+      static const char* hex = "0123456789abcdef";
+      for (std::size_t i = 0; i < bytes.size(); ++i) {
+        const auto b = static_cast<unsigned char>(bytes[i]);
+        text += hex[b >> 4];
+        text += hex[b & 15];
+        text += (i % 16 == 15 || i + 1 == bytes.size()) ? '\n' : ' ';
+      }
+      if (printed != g.printed.end()) text += printed->second;
+      write_file(cex_file, text);
       c.replay = c.replay_fuzzer;
     } else if (mesh) {  // no command file: a mesh the node may not hold; the input replays
       std::string text = "# vgc fuzz " + target + " counterexample: " + c.signature + "\n# from " + rep.string() +
@@ -595,10 +611,10 @@ int run_campaign(const CampaignOptions& o, CampaignSummary* out) {
       const bool plugin_crash = c.clause.empty() && name == "differential" && !plugin.empty();
       const bool replayable = !c.clause.empty() || plugin_crash;
       const auto replay_line = [&] {
-        return env_prefix(run_env) + "vgc replay " + shell_quote(cex_file.string()) + " --impl " +
+        return env_prefix(run_env) + program_command() + " replay " + shell_quote(cex_file.string()) + " --impl " +
                shell_quote(impl_spec);
       };
-      c.replay = replayable ? replay_line() : env_prefix(run_env) + "vgc apply " + shell_quote(cex_file.string());
+      c.replay = replayable ? replay_line() : env_prefix(run_env) + program_command() + " apply " + shell_quote(cex_file.string());
       std::string body;
       if (printed != g.printed.end()) body = printed->second;
       else if (property) body = "# the target printed no command file (a sanitizer finding): replay the input\n";
@@ -628,12 +644,12 @@ int run_campaign(const CampaignOptions& o, CampaignSummary* out) {
             if (const Clause* cl = find_clause(c.clause)) c.level = clause_level_name(cl->level);
             c.in_baseline = baseline.reasons.count(c.clause) > 0;
           } else {
-            c.replay = env_prefix(run_env) + "vgc apply " + shell_quote(cex_file.string());
+            c.replay = env_prefix(run_env) + program_command() + " apply " + shell_quote(cex_file.string());
             write_cex();
           }
         }
       } else if (plugin_crash) {
-        c.replay = env_prefix(run_env) + "vgc apply " + shell_quote(cex_file.string());
+        c.replay = env_prefix(run_env) + program_command() + " apply " + shell_quote(cex_file.string());
         write_cex();
       }
     }

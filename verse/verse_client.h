@@ -1,0 +1,105 @@
+// verse_client.h — a Verse r6 client session: what a real client can do and
+// see, which is what vgc certifies a host by.
+//
+// Spec: docs/verse_wire.md (login, commands, acknowledgements, what a host
+// sends to subscribers); docs/spec_facts.md sections 3-4.
+//
+// Rationale: one object per UDP session, single-threaded, every call
+// bounded by a time-out: nothing here blocks longer than the time it is
+// given, and a host that stops answering is Status::Code::Timeout. The
+// session acknowledges what it receives and resends what the host does not
+// acknowledge (docs/verse_wire.md section 5) inside every call, so a caller
+// only sends commands and reads what comes back. Incoming commands are
+// decoded (wire_commands.h) and queued in arrival order; acks and naks are
+// consumed here and never reach the caller.
+//
+// Typical use (the verse: adapter):
+//   ClientSession s; s.connect("127.0.0.1", 4950, {}) ;
+//   std::uint32_t node; s.create_geometry_node(&node, 5.0);
+//   s.subscribe_node(node); s.subscribe_layer(node, 0, vgc::RealFormat::Real64);
+//   s.send_geometry(node, command);
+//   std::vector<WireCommand> seen; s.barrier(node, 5.0, &seen);  // everything the host sent first
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "command.h"
+#include "wire_commands.h"
+#include "wire_status.h"
+
+namespace vgc::verse {
+
+inline constexpr std::uint16_t kDefaultPort = 4950;  // r6 README
+
+struct ClientOptions {
+  std::string name = "vgc";       // login name, at most 31 bytes
+  std::string password = "vgc";   // at most 31 bytes
+  double login_timeout_s = 5.0;   // whole login, all resends included
+  double resend_interval_s = 0.25;  // a login stage or an unacknowledged packet is resent after this
+  // Called with every packet received from the host, clear (decrypted), the
+  // login packets included: captures (the fuzz seeds of
+  // corpora/fuzz/fuzz_verse_packet) and debugging. Null: nothing.
+  std::function<void(const std::string& clear_packet)> on_packet;
+};
+
+class ClientSession {
+ public:
+  ClientSession();
+  ~ClientSession();  // disconnects (connect_terminate) if still connected
+  ClientSession(const ClientSession&) = delete;
+  ClientSession& operator=(const ClientSession&) = delete;
+
+  // Resolves host ("127.0.0.1", "localhost", ...), logs in (RSA stage of
+  // the r6 login). Timeout when the host does not answer a stage within
+  // options.login_timeout_s; ProtocolError when it answers wrongly.
+  Status connect(const std::string& host, std::uint16_t port, const ClientOptions& options);
+  bool connected() const;
+  std::uint32_t avatar() const;  // the avatar node id the host gave at login
+
+  // node_index_subscribe(geometry) then node_create(geometry): waits up to
+  // timeout_s for the host's node_create of a new geometry node owned by
+  // this session and returns its id. Commands received meanwhile stay queued.
+  Status create_geometry_node(std::uint32_t* node_id, double timeout_s);
+
+  // Queue and send at once (no waiting for anything to come back).
+  Status subscribe_node(std::uint32_t node_id);
+  Status unsubscribe_node(std::uint32_t node_id);
+  Status subscribe_layer(std::uint32_t node_id, std::uint16_t layer_id, vgc::RealFormat format);
+  Status send_geometry(std::uint32_t node_id, const vgc::Command& command);
+  Status send(const WireCommand& command);  // any other command (node_name_set, node_destroy, ...)
+
+  // The next decoded incoming command, waiting up to timeout_s (0: only
+  // what has already arrived). Timeout when none came.
+  Status receive(WireCommand* out, double timeout_s);
+
+  // Round trip: sends node_name_set(node_id, "vgc-barrier-<n>") and waits up
+  // to timeout_s for the host to send that name back to this subscriber
+  // (node_id must be subscribed). Every command received before it is
+  // appended to *before in arrival order (the queue is emptied); the echo
+  // itself is not. So once barrier() returns ok, everything the host sent
+  // in answer to commands sent before it has been seen, in the host's order
+  // (docs/verse_wire.md section 6 says what this assumes).
+  Status barrier(std::uint32_t node_id, double timeout_s, std::vector<WireCommand>* before);
+
+  // connect_terminate, then closes the socket. Safe to call twice.
+  void disconnect(const std::string& bye = "vgc done");
+
+  // Counters for reports and tests.
+  struct Counters {
+    std::size_t packets_sent = 0, packets_received = 0, resends = 0, naks_sent = 0;
+    std::size_t protocol_errors = 0;  // packets (or parts) that did not parse; see last_protocol_error()
+  };
+  Counters counters() const;
+  const std::string& last_protocol_error() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace vgc::verse

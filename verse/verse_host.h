@@ -1,0 +1,88 @@
+// verse_host.h — a Verse r6 host serving geometry nodes over UDP: what
+// `vgc serve --verse [ADDR:]PORT` runs.
+//
+// Spec: docs/verse_wire.md (login, commands, acknowledgements and section 7,
+// what the host sends to subscribers); 000 section 2.6 for the node itself.
+//
+// Rationale: the node behind the wire is any HostedNode: the reference, or
+// (from the command line) any vgc Implementation, a faulty plugin included.
+// The host never trusts it to say what changed: after every geometry
+// command it compares the node's snapshot (reference/snapshot.h) before
+// and after and sends each subscriber the commands that carry the change,
+// the way an r6 host sends what it applied. So a client sees exactly the
+// stored state, whatever the node did. A command the node rejects changes
+// nothing and sends nothing, as on r6 (no error on the wire).
+#pragma once
+
+#include <atomic>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <string>
+
+#include "command.h"
+#include "wire_status.h"
+
+namespace vgc::verse {
+
+// One geometry node behind the host.
+class HostedNode {
+ public:
+  virtual ~HostedNode() = default;
+  // Applies (or drops) a command. false with *error when the node itself
+  // failed (crashed plugin...): the host logs it and drops the node's session
+  // traffic for that command.
+  virtual bool apply(const vgc::Command& command, std::string* error) = 0;
+  // The node's whole state as the snapshot document of reference/snapshot.h.
+  virtual bool snapshot(std::string* text, std::string* error) = 0;
+};
+
+// The reference node (reference/node.h) as a HostedNode.
+std::unique_ptr<HostedNode> make_reference_hosted_node();
+
+struct HostOptions {
+  std::string address = "127.0.0.1";  // where to bind; "0.0.0.0" for every interface
+  std::uint16_t port = 4950;           // 0: any free port (see Host::port())
+  // Makes the node of each node_create(geometry); null: the reference.
+  std::function<std::unique_ptr<HostedNode>(std::string* error)> make_node;
+  // One line per event worth a person's eye (login, node created, protocol
+  // error of a peer); null: silent.
+  std::function<void(const std::string&)> log;
+  double session_timeout_s = 30.0;     // a session silent this long is dropped (r6: 30 s)
+  double resend_interval_s = 0.25;
+};
+
+class Host {
+ public:
+  Host();
+  ~Host();
+  Host(const Host&) = delete;
+  Host& operator=(const Host&) = delete;
+
+  // Binds the UDP socket and makes the host key. NetworkError when the
+  // address does not resolve or the port is taken.
+  Status open(const HostOptions& options);
+  std::uint16_t port() const;  // the bound port (the chosen one for port 0)
+
+  // Serves for up to timeout_s: receives, answers, resends. Returns ok
+  // after the time (or earlier when stop becomes true); a peer's bad packet
+  // is logged and counted, never returned.
+  Status run_for(double timeout_s, const std::atomic<bool>* stop = nullptr);
+  // Serves until *stop becomes true (checked at least every 50 ms).
+  Status run(const std::atomic<bool>& stop);
+
+  struct Counters {
+    std::size_t logins = 0, nodes = 0, packets_received = 0, packets_sent = 0, protocol_errors = 0;
+  };
+  Counters counters() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+// Parses "[ADDR:]PORT" ("4950", "127.0.0.1:0", "localhost:4950"). false
+// with *error for anything else.
+bool parse_listen_address(const std::string& text, std::string* address, std::uint16_t* port, std::string* error);
+
+}  // namespace vgc::verse
