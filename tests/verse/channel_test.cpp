@@ -1,0 +1,116 @@
+// channel_test.cpp — verse/wire_endpoint's Channel: the r6 ack, nak and
+// resend rules (docs/verse_wire.md section 5), two channels wired back to
+// back with no network, so every loss is chosen.
+#include <gtest/gtest.h>
+
+#include "wire_endpoint.h"
+#include "wire_login.h"
+
+namespace vgc::verse {
+namespace {
+
+std::string cmd_bytes(std::uint32_t node) {
+  std::string b;
+  EXPECT_TRUE(encode_command(wire::NodeSubscribe{node}, &b).ok());
+  return b;
+}
+
+std::vector<WireCommand> deliver(Channel& to, const std::vector<std::string>& datagrams, Clock::time_point now) {
+  std::vector<WireCommand> got;
+  for (const std::string& d : datagrams)
+    EXPECT_TRUE(to.on_datagram(reinterpret_cast<const std::uint8_t*>(d.data()), d.size(), now, &got).ok());
+  return got;
+}
+
+std::uint32_t node_of(const WireCommand& c) { return std::get<wire::NodeSubscribe>(c).node_id; }
+
+TEST(VerseChannel, AckedPacketsAreForgotten) {
+  const DataKey key = make_data_key();
+  Channel a(key, 0.25), b(key, 0.25);
+  const auto t0 = Clock::now();
+  ASSERT_TRUE(a.queue(cmd_bytes(1)).ok());
+  auto got = deliver(b, a.take_datagrams(t0), t0);
+  ASSERT_EQ(got.size(), 1u);
+  EXPECT_EQ(node_of(got[0]), 1u);
+  EXPECT_FALSE(a.all_acknowledged());
+  deliver(a, b.take_datagrams(t0), t0);  // b's ack
+  EXPECT_TRUE(a.all_acknowledged());
+  EXPECT_TRUE(a.take_datagrams(t0 + std::chrono::seconds(5)).empty()) << "nothing left to resend";
+}
+
+TEST(VerseChannel, ALostPacketIsNakedAndItsCommandsSentAgain) {
+  const DataKey key = make_data_key();
+  Channel a(key, 10.0), b(key, 10.0);
+  const auto t0 = Clock::now();
+  ASSERT_TRUE(a.queue(cmd_bytes(1)).ok());
+  auto lost = a.take_datagrams(t0);  // packet 2: dropped
+  ASSERT_EQ(lost.size(), 1u);
+  ASSERT_TRUE(a.queue(cmd_bytes(2)).ok());
+  auto got = deliver(b, a.take_datagrams(t0), t0);  // packet 3 arrives: b naks 2, acks 3
+  ASSERT_EQ(got.size(), 1u);
+  EXPECT_EQ(node_of(got[0]), 2u);
+  EXPECT_EQ(b.counters().naks_sent, 1u);
+  deliver(a, b.take_datagrams(t0), t0);
+  got = deliver(b, a.take_datagrams(t0), t0);  // command 1 again, in a new packet
+  ASSERT_EQ(got.size(), 1u);
+  EXPECT_EQ(node_of(got[0]), 1u);
+  deliver(a, b.take_datagrams(t0), t0);
+  EXPECT_TRUE(a.all_acknowledged());
+  // The lost packet arriving late is a duplicate: not delivered twice.
+  got.clear();
+  (void)b.on_datagram(reinterpret_cast<const std::uint8_t*>(lost[0].data()), lost[0].size(), t0, &got);
+  EXPECT_TRUE(got.empty());
+}
+
+TEST(VerseChannel, AnUnackedPacketIsResentWithItsIdAndDeliveredOnce) {
+  const DataKey key = make_data_key();
+  Channel a(key, 0.25), b(key, 0.25);
+  const auto t0 = Clock::now();
+  ASSERT_TRUE(a.queue(cmd_bytes(7)).ok());
+  auto first = a.take_datagrams(t0);
+  EXPECT_TRUE(a.take_datagrams(t0 + std::chrono::milliseconds(100)).empty()) << "not yet due";
+  auto again = a.take_datagrams(t0 + std::chrono::milliseconds(300));
+  ASSERT_EQ(again.size(), 1u);
+  EXPECT_EQ(again[0], first[0]);
+  EXPECT_EQ(a.counters().resends, 1u);
+  EXPECT_EQ(deliver(b, first, t0).size(), 1u);
+  EXPECT_EQ(deliver(b, again, t0).size(), 0u);  // duplicate: acked, not delivered
+  deliver(a, b.take_datagrams(t0), t0);
+  EXPECT_TRUE(a.all_acknowledged());
+}
+
+TEST(VerseChannel, AHugeIdJumpIsAProtocolErrorNotAMillionNaks) {
+  const DataKey key = make_data_key();
+  Channel a(key, 0.25), b(key, 0.25);
+  std::string cmds = cmd_bytes(1);
+  std::string d = build_packet(2 + kMaxPacketGap + 1, cmds);
+  xor_packet(&d, key);
+  std::vector<WireCommand> got;
+  const Status st = b.on_datagram(reinterpret_cast<const std::uint8_t*>(d.data()), d.size(), Clock::now(), &got);
+  EXPECT_EQ(st.code, Status::Code::ProtocolError);
+  EXPECT_TRUE(got.empty());
+  EXPECT_EQ(b.counters().naks_sent, 0u);
+}
+
+TEST(VerseChannel, TheWindowHoldsBackCommandsUntilAcks) {
+  const DataKey key = make_data_key();
+  Channel a(key, 10.0), b(key, 10.0);
+  const auto t0 = Clock::now();
+  for (std::uint32_t i = 0; i < 20000; ++i) ASSERT_TRUE(a.queue(cmd_bytes(i)).ok());
+  const auto first = a.take_datagrams(t0);
+  std::size_t bytes = 0;
+  for (const auto& d : first) bytes += d.size();
+  EXPECT_LT(bytes, kWindowBytes + 2 * kMaxSendPacketBytes);
+  auto got = deliver(b, first, t0);
+  std::size_t total = got.size();
+  for (int round = 0; round < 100 && total < 20000; ++round) {
+    deliver(a, b.take_datagrams(t0), t0);
+    got = deliver(b, a.take_datagrams(t0), t0);
+    for (std::size_t i = 0; i < got.size(); ++i) EXPECT_EQ(node_of(got[i]), total + i);
+    total += got.size();
+  }
+  EXPECT_EQ(total, 20000u);
+}
+
+}  // namespace
+}  // namespace vgc::verse

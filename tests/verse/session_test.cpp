@@ -1,0 +1,193 @@
+// session_test.cpp — verse/verse_client against verse/verse_host over
+// loopback UDP: login, node creation, subscriptions, geometry commands and
+// what the host sends back to subscribers (docs/verse_wire.md sections 2, 3,
+// 6, 7), and a seeded fault of the served node seen through the wire.
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <thread>
+
+#include "faulty_node.h"
+#include "verse_client.h"
+#include "verse_host.h"
+
+namespace vgc::verse {
+namespace {
+
+constexpr double kWait = 10.0;  // seconds; loopback answers in milliseconds
+
+class FaultyHostedNode : public HostedNode {
+ public:
+  explicit FaultyHostedNode(std::vector<int> faults) : node_(std::move(faults)) {}
+  bool apply(const Command& c, std::string*) override {
+    node_.apply(c);
+    return true;
+  }
+  bool snapshot(std::string* text, std::string*) override {
+    *text = node_.snapshot();
+    return true;
+  }
+
+ private:
+  faults::FaultyNode node_;
+};
+
+// A host on 127.0.0.1:<any free port>, served by a thread until destroyed.
+struct RunningHost {
+  Host host;
+  std::atomic<bool> stop{false};
+  std::thread thread;
+  explicit RunningHost(HostOptions o = {}) {
+    o.address = "127.0.0.1";
+    o.port = 0;
+    const Status st = host.open(o);
+    EXPECT_TRUE(st.ok()) << st.to_string();
+    thread = std::thread([this] { (void)host.run(stop); });
+  }
+  ~RunningHost() {
+    stop = true;
+    thread.join();
+  }
+};
+
+template <class T>
+std::vector<T> geometry_of(const std::vector<WireCommand>& cs) {
+  std::vector<T> out;
+  for (const WireCommand& c : cs)
+    if (const auto* g = std::get_if<wire::Geometry>(&c))
+      if (const auto* t = std::get_if<T>(&g->command)) out.push_back(*t);
+  return out;
+}
+
+struct Client {
+  ClientSession s;
+  std::uint32_t node = 0;
+  void connect(const RunningHost& h) {
+    const Status st = s.connect("localhost", h.host.port(), {});
+    ASSERT_TRUE(st.ok()) << st.to_string();
+  }
+  std::vector<WireCommand> barrier() {
+    std::vector<WireCommand> seen;
+    const Status st = s.barrier(node, kWait, &seen);
+    EXPECT_TRUE(st.ok()) << st.to_string();
+    return seen;
+  }
+};
+
+TEST(VerseSession, CreateSubscribeSendAndSeeTheHostBroadcast) {
+  RunningHost h;
+  Client a;
+  a.connect(h);
+  Status st = a.s.create_geometry_node(&a.node, kWait);
+  ASSERT_TRUE(st.ok()) << st.to_string();
+  ASSERT_TRUE(a.s.subscribe_node(a.node).ok());
+  ASSERT_TRUE(a.s.subscribe_layer(a.node, 0, RealFormat::Real64).ok());
+  ASSERT_TRUE(a.s.subscribe_layer(a.node, 1, RealFormat::Real64).ok());
+  auto seen = a.barrier();
+  auto layers = geometry_of<cmd::LayerCreate>(seen);
+  ASSERT_EQ(layers.size(), 2u);
+  EXPECT_EQ(layers[0].name, "vertex");
+  EXPECT_EQ(layers[1].name, "polygon");
+  EXPECT_EQ(geometry_of<cmd::CreaseSetVertex>(seen).size(), 1u);
+  EXPECT_EQ(geometry_of<cmd::CreaseSetEdge>(seen).size(), 1u);
+
+  ASSERT_TRUE(a.s.send_geometry(a.node, cmd::VertexSetXyzReal64{0, 0, 0, 0, 0}).ok());  // all zero: still a vertex
+  ASSERT_TRUE(a.s.send_geometry(a.node, cmd::VertexSetXyzReal64{0, 1, 4, 5, 6}).ok());
+  ASSERT_TRUE(a.s.send_geometry(a.node, cmd::VertexSetXyzReal64{0, 2, 7, 8, 9}).ok());
+  ASSERT_TRUE(a.s.send_geometry(a.node, cmd::PolygonSetCornerUint32{1, 0, {0, 1, 2, 0xFFFFFFFFu}}).ok());
+  // Dropped by the node (repeated corner): nothing may come back for it.
+  ASSERT_TRUE(a.s.send_geometry(a.node, cmd::PolygonSetCornerUint32{1, 1, {0, 0, 1, 0xFFFFFFFFu}}).ok());
+  seen = a.barrier();
+  auto verts = geometry_of<cmd::VertexSetXyzReal64>(seen);
+  ASSERT_EQ(verts.size(), 3u);
+  EXPECT_EQ(verts[1].vertex_id, 1u);
+  EXPECT_EQ(verts[1].x, 4.0);
+  EXPECT_EQ(verts[2].z, 9.0);
+  auto polys = geometry_of<cmd::PolygonSetCornerUint32>(seen);
+  ASSERT_EQ(polys.size(), 1u);
+  EXPECT_EQ(polys[0].polygon_id, 0u);
+  EXPECT_EQ(polys[0].v, (std::array<std::uint32_t, 4>{0, 1, 2, 0xFFFFFFFFu}));
+
+  // A second client subscribing later gets the layer's whole content, in the format it asked for.
+  Client b;
+  b.connect(h);
+  b.node = a.node;
+  ASSERT_TRUE(b.s.subscribe_node(b.node).ok());
+  ASSERT_TRUE(b.s.subscribe_layer(b.node, 0, RealFormat::Real32).ok());
+  seen = b.barrier();
+  auto verts32 = geometry_of<cmd::VertexSetXyzReal32>(seen);
+  ASSERT_EQ(verts32.size(), 3u);
+  EXPECT_EQ(verts32[2].y, 8.0f);
+
+  // A layer created by one client reaches every node subscriber; a polygon
+  // delete reaches only layer 1's subscribers.
+  ASSERT_TRUE(a.s.send_geometry(a.node, cmd::LayerCreate{0xFFFF, "weights", 1, 5, 0}).ok());
+  ASSERT_TRUE(a.s.send_geometry(a.node, cmd::PolygonDelete{0}).ok());
+  seen = a.barrier();
+  EXPECT_EQ(geometry_of<cmd::PolygonDelete>(seen).size(), 1u);
+  ASSERT_EQ(geometry_of<cmd::LayerCreate>(seen).size(), 1u);
+  EXPECT_EQ(geometry_of<cmd::LayerCreate>(seen)[0].layer_id, 2u) << "the lowest free id";
+  seen = b.barrier();
+  EXPECT_EQ(geometry_of<cmd::PolygonDelete>(seen).size(), 0u);
+  ASSERT_EQ(geometry_of<cmd::LayerCreate>(seen).size(), 1u);
+  EXPECT_EQ(geometry_of<cmd::LayerCreate>(seen)[0].def_uint, 5u);
+
+  a.s.disconnect();
+  b.s.disconnect();
+}
+
+TEST(VerseSession, ASeededFaultOfTheServedNodeShowsOnTheWire) {
+  std::vector<int> faults;
+  std::string error;
+  ASSERT_TRUE(faults::parse_fault_list("polygon-delete-ignored", &faults, &error)) << error;
+  HostOptions o;
+  o.make_node = [faults](std::string*) -> std::unique_ptr<HostedNode> {
+    return std::make_unique<FaultyHostedNode>(faults);
+  };
+  RunningHost h(o);
+  Client a;
+  a.connect(h);
+  ASSERT_TRUE(a.s.create_geometry_node(&a.node, kWait).ok());
+  ASSERT_TRUE(a.s.subscribe_node(a.node).ok());
+  ASSERT_TRUE(a.s.subscribe_layer(a.node, 1, RealFormat::Real64).ok());
+  for (std::uint32_t v = 0; v < 3; ++v)
+    ASSERT_TRUE(a.s.send_geometry(a.node, cmd::VertexSetXyzReal64{0, v, double(v), 0, 0}).ok());
+  ASSERT_TRUE(a.s.send_geometry(a.node, cmd::PolygonSetCornerUint32{1, 0, {0, 1, 2, 0xFFFFFFFFu}}).ok());
+  auto seen = a.barrier();
+  ASSERT_EQ(geometry_of<cmd::PolygonSetCornerUint32>(seen).size(), 1u);
+  ASSERT_TRUE(a.s.send_geometry(a.node, cmd::PolygonDelete{0}).ok());
+  seen = a.barrier();
+  EXPECT_EQ(geometry_of<cmd::PolygonDelete>(seen).size(), 0u) << "the faulty node keeps the polygon";
+}
+
+TEST(VerseSession, NoHostIsATimeoutNotAHang) {
+  // A bound socket that never answers.
+  Host silent;
+  HostOptions o;
+  o.port = 0;
+  ASSERT_TRUE(silent.open(o).ok());
+  ClientSession s;
+  ClientOptions co;
+  co.login_timeout_s = 0.5;
+  const auto t0 = std::chrono::steady_clock::now();
+  const Status st = s.connect("127.0.0.1", silent.port(), co);
+  EXPECT_EQ(st.code, Status::Code::Timeout) << st.to_string();
+  EXPECT_LT(std::chrono::steady_clock::now() - t0, std::chrono::seconds(5));
+}
+
+TEST(VerseSession, ListenAddresses) {
+  std::string addr, error;
+  std::uint16_t port = 1;
+  ASSERT_TRUE(parse_listen_address("0", &addr, &port, &error));
+  EXPECT_EQ(addr, "127.0.0.1");
+  EXPECT_EQ(port, 0);
+  ASSERT_TRUE(parse_listen_address("0.0.0.0:4950", &addr, &port, &error));
+  EXPECT_EQ(addr, "0.0.0.0");
+  EXPECT_EQ(port, 4950);
+  EXPECT_FALSE(parse_listen_address("65536", &addr, &port, &error));
+  EXPECT_FALSE(parse_listen_address(":5", &addr, &port, &error));
+  EXPECT_FALSE(parse_listen_address("host:x", &addr, &port, &error));
+}
+
+}  // namespace
+}  // namespace vgc::verse

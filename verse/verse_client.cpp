@@ -1,0 +1,278 @@
+// verse_client.cpp — see verse_client.h. Login: docs/verse_wire.md section 2;
+// node creation and subscription: sections 3 and 7; the barrier: section 6.
+#include "verse_client.h"
+
+#include <algorithm>
+#include <deque>
+#include <functional>
+#include <set>
+
+#include "wire_endpoint.h"
+#include "wire_login.h"
+
+namespace vgc::verse {
+
+struct ClientSession::Impl {
+  ClientOptions options;
+  UdpSocket socket;
+  PeerAddress host;
+  bool connected = false;
+  std::uint32_t avatar = 0;
+  std::unique_ptr<Channel> channel;
+  std::deque<WireCommand> inbox;
+  std::set<std::uint32_t> nodes_returned;
+  std::uint64_t barriers = 0;
+  Counters counters;
+  std::string last_protocol_error;
+
+  void note_protocol_error(const Status& st) {
+    ++counters.protocol_errors;
+    last_protocol_error = st.detail;
+  }
+
+  Status flush() {
+    if (!channel) return Status::closed("not connected");
+    for (const std::string& d : channel->take_datagrams(Clock::now())) {
+      Status st = socket.send_to(host, d);
+      if (!st.ok()) return st;
+    }
+    return {};
+  }
+
+  // Sends, receives and resends until done() or the deadline.
+  Status pump(Clock::time_point deadline, const std::function<bool()>& done, const char* waiting_for) {
+    if (!connected) return Status::closed("not connected");
+    for (;;) {
+      Status st = flush();
+      if (!st.ok()) return st;
+      if (done()) return {};
+      const Clock::time_point now = Clock::now();
+      if (now >= deadline) return Status::timeout(std::string("the host did not send ") + waiting_for + " in time");
+      Clock::time_point wake = std::min({deadline, channel->next_resend_due(), now + std::chrono::milliseconds(50)});
+      const double wait = std::chrono::duration<double>(wake - now).count();
+      std::string bytes;
+      PeerAddress from;
+      st = socket.receive(&bytes, &from, wait > 0 ? wait : 0);
+      if (st.code == Status::Code::Timeout) continue;
+      if (st.code == Status::Code::ProtocolError) {
+        note_protocol_error(st);
+        continue;
+      }
+      if (!st.ok()) return st;
+      if (!(from == host)) continue;  // not our host: ignored
+      ++counters.packets_received;
+      std::vector<WireCommand> got;
+      st = channel->on_datagram(reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size(), Clock::now(), &got);
+      if (!st.ok()) note_protocol_error(st);
+      for (WireCommand& c : got) {
+        if (const auto* t = std::get_if<wire::ConnectTerminate>(&c)) {
+          connected = false;
+          return Status::closed("the host ended the session: " + t->bye);
+        }
+        inbox.push_back(std::move(c));
+      }
+    }
+  }
+
+  Status send(const WireCommand& c) {
+    if (!connected) return Status::closed("not connected");
+    std::string bytes;
+    Status st = encode_command(c, &bytes);
+    if (!st.ok()) return st;
+    st = channel->queue(std::move(bytes));
+    if (!st.ok()) return st;
+    return flush();
+  }
+};
+
+ClientSession::ClientSession() : impl_(std::make_unique<Impl>()) {}
+ClientSession::~ClientSession() { disconnect(); }
+
+static Clock::time_point deadline_after(double seconds) {
+  if (!(seconds > 0)) seconds = 0;
+  seconds = std::min(seconds, 24.0 * 3600.0);
+  return Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(seconds));
+}
+
+Status ClientSession::connect(const std::string& host, std::uint16_t port, const ClientOptions& options) {
+  Impl& s = *impl_;
+  disconnect();
+  s.options = options;
+  KeyBytes block{};
+  if (!make_login_block(options.name, options.password, &block))
+    return Status::protocol_error("login name and password must be at most 31 bytes without NUL, the name ASCII");
+  Status st = resolve(host, port, &s.host);
+  if (!st.ok()) return st;
+  st = s.socket.open("0.0.0.0", 0);
+  if (!st.ok()) return st;
+  const RsaKey key = make_rsa_key();
+  const Clock::time_point deadline = deadline_after(options.login_timeout_s);
+  const auto resend = std::chrono::duration_cast<Clock::duration>(
+      std::chrono::duration<double>(std::max(0.01, options.resend_interval_s)));
+  std::string stage_packet = build_login_packet(login::Contact{key.e, key.n});
+  const char* stage_name = "its key (login stage 1)";
+  Clock::time_point sent_at = Clock::now();
+  bool send_now = true;  // a new stage packet, or the resend interval passed
+  for (;;) {
+    Clock::time_point now = Clock::now();
+    if (send_now || now - sent_at >= resend) {
+      send_now = false;
+      st = s.socket.send_to(s.host, stage_packet);
+      if (!st.ok()) return st;
+      sent_at = now;
+    }
+    if (now >= deadline) {
+      s.socket.close();
+      return Status::timeout("no Verse host answered at " + s.host.to_string() + ": it did not send " + stage_name +
+                             " within " + std::to_string(options.login_timeout_s) + " s");
+    }
+    const double wait = std::chrono::duration<double>(std::min(deadline, sent_at + resend) - now).count();
+    std::string bytes;
+    PeerAddress from;
+    st = s.socket.receive(&bytes, &from, std::max(0.0, wait));
+    if (st.code == Status::Code::Timeout) continue;
+    if (!st.ok() && st.code != Status::Code::ProtocolError) return st;
+    if (!st.ok() || !(from == s.host)) continue;
+    LoginMessage m;
+    st = parse_login_packet(reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size(), &m);
+    if (!st.ok()) {
+      s.note_protocol_error(st);
+      continue;
+    }
+    if (const auto* c = std::get_if<login::Challenge>(&m)) {
+      if (c->version != kReleaseNumber) {
+        s.socket.close();
+        return Status::protocol_error("the host speaks Verse release " + std::to_string(c->version) + ", vgc speaks r" +
+                                      std::to_string(kReleaseNumber));
+      }
+      login::Login l;
+      st = rsa_apply(block, c->e, c->n, &l.encrypted);
+      if (!st.ok()) {
+        s.socket.close();
+        return Status::protocol_error("the host's login key is unusable: " + st.detail);
+      }
+      stage_packet = build_login_packet(l);
+      stage_name = "connect_accept (login stage 3)";
+      send_now = true;
+    } else if (const auto* a = std::get_if<login::Accept>(&m)) {
+      if (stage_name[0] == 'i') continue;  // an accept before our login: not ours
+      KeyBytes clear{};
+      st = rsa_apply(a->encrypted_data_key, key.d, key.n, &clear);
+      if (!st.ok()) {
+        s.socket.close();
+        return Status::protocol_error("connect_accept: " + st.detail);
+      }
+      DataKey data_key;
+      std::copy(clear.begin(), clear.end(), data_key.begin());
+      s.avatar = a->avatar;
+      s.channel = std::make_unique<Channel>(data_key, options.resend_interval_s);
+      s.connected = true;
+      s.inbox.clear();
+      s.nodes_returned.clear();
+      return {};
+    } else if (std::holds_alternative<login::Terminate>(m)) {
+      s.socket.close();
+      return Status::closed("the host refused the login");
+    }
+  }
+}
+
+bool ClientSession::connected() const { return impl_->connected; }
+std::uint32_t ClientSession::avatar() const { return impl_->avatar; }
+
+Status ClientSession::create_geometry_node(std::uint32_t* node_id, double timeout_s) {
+  Impl& s = *impl_;
+  const Clock::time_point deadline = deadline_after(timeout_s);
+  std::set<std::uint32_t> before = s.nodes_returned;
+  Status st = s.send(wire::NodeIndexSubscribe{1u << kNodeTypeGeometry});
+  if (!st.ok()) return st;
+  st = s.send(wire::NodeCreate{kAnyNodeId, kNodeTypeGeometry, kOwnerMine});
+  if (!st.ok()) return st;
+  bool found = false;
+  st = s.pump(
+      deadline,
+      [&] {
+        for (const WireCommand& c : s.inbox) {
+          const auto* n = std::get_if<wire::NodeCreate>(&c);
+          if (n && n->type == kNodeTypeGeometry && n->owner == kOwnerMine && !before.count(n->node_id)) {
+            *node_id = n->node_id;
+            found = true;
+            return true;
+          }
+        }
+        return false;
+      },
+      "node_create for the new geometry node");
+  if (found) s.nodes_returned.insert(*node_id);
+  return st;
+}
+
+Status ClientSession::subscribe_node(std::uint32_t node_id) { return impl_->send(wire::NodeSubscribe{node_id}); }
+Status ClientSession::unsubscribe_node(std::uint32_t node_id) { return impl_->send(wire::NodeUnsubscribe{node_id}); }
+Status ClientSession::subscribe_layer(std::uint32_t node_id, std::uint16_t layer_id, vgc::RealFormat format) {
+  return impl_->send(wire::Geometry{node_id, cmd::LayerSubscribe{layer_id, static_cast<std::uint8_t>(format)}});
+}
+Status ClientSession::send_geometry(std::uint32_t node_id, const vgc::Command& command) {
+  return impl_->send(wire::Geometry{node_id, command});
+}
+Status ClientSession::send(const WireCommand& command) { return impl_->send(command); }
+
+Status ClientSession::receive(WireCommand* out, double timeout_s) {
+  Impl& s = *impl_;
+  if (s.inbox.empty()) {
+    Status st = s.pump(deadline_after(timeout_s), [&] { return !s.inbox.empty(); }, "any command");
+    if (!st.ok()) return st;
+  }
+  *out = std::move(s.inbox.front());
+  s.inbox.pop_front();
+  return {};
+}
+
+Status ClientSession::barrier(std::uint32_t node_id, double timeout_s, std::vector<WireCommand>* before) {
+  Impl& s = *impl_;
+  const std::string token = "vgc-barrier-" + std::to_string(s.avatar) + "-" + std::to_string(++s.barriers);
+  Status st = s.send(wire::NodeNameSet{node_id, token});
+  if (!st.ok()) return st;
+  std::size_t echo_at = 0;
+  st = s.pump(
+      deadline_after(timeout_s),
+      [&] {
+        for (std::size_t i = 0; i < s.inbox.size(); ++i) {
+          const auto* n = std::get_if<wire::NodeNameSet>(&s.inbox[i]);
+          if (n && n->node_id == node_id && n->name == token) {
+            echo_at = i;
+            return true;
+          }
+        }
+        return false;
+      },
+      "the barrier's node_name_set back");
+  if (!st.ok()) return st;
+  for (std::size_t i = 0; i < echo_at; ++i) before->push_back(std::move(s.inbox[i]));
+  s.inbox.erase(s.inbox.begin(), s.inbox.begin() + static_cast<std::ptrdiff_t>(echo_at) + 1);
+  return {};
+}
+
+void ClientSession::disconnect(const std::string& bye) {
+  Impl& s = *impl_;
+  if (s.connected) {
+    (void)s.send(wire::ConnectTerminate{bye});
+    s.connected = false;
+  }
+  s.channel.reset();
+  s.socket.close();
+}
+
+ClientSession::Counters ClientSession::counters() const {
+  Counters c = impl_->counters;
+  if (impl_->channel) {
+    const auto& k = impl_->channel->counters();
+    c.packets_sent = k.sent;
+    c.resends = k.resends;
+    c.naks_sent = k.naks_sent;
+  }
+  return c;
+}
+const std::string& ClientSession::last_protocol_error() const { return impl_->last_protocol_error; }
+
+}  // namespace vgc::verse

@@ -1,0 +1,517 @@
+// verse_host.cpp — see verse_host.h. Login: docs/verse_wire.md section 2;
+// node commands: section 3; what goes to subscribers: section 7 (from r6
+// vs_node_storage.c, vs_node_head.c, vs_node_geometry.c).
+#include "verse_host.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cfloat>
+#include <ctime>
+#include <map>
+#include <set>
+#include <thread>
+
+#include "node.h"
+#include "snapshot.h"
+#include "snapshot_state.h"
+#include "wire_endpoint.h"
+#include "wire_login.h"
+
+namespace vgc::verse {
+namespace {
+
+class ReferenceHostedNode : public HostedNode {
+ public:
+  bool apply(const vgc::Command& command, std::string*) override {
+    node_.apply(command);
+    return true;
+  }
+  bool snapshot(std::string* text, std::string*) override {
+    *text = print_snapshot(node_);
+    return true;
+  }
+
+ private:
+  vgc::Node node_;
+};
+
+struct Session {
+  PeerAddress peer;
+  bool connected = false;
+  std::uint32_t avatar = 0;
+  DataKey data_key{};
+  std::string challenge_packet, accept_packet;  // resent on a repeated stage
+  std::unique_ptr<Channel> channel;
+  Clock::time_point last_heard;
+  bool index_geometry = false;
+  std::set<std::uint32_t> node_subs;
+  std::map<std::pair<std::uint32_t, std::uint16_t>, RealFormat> layer_subs;
+};
+
+struct HostedGeometry {
+  std::uint32_t id = 0;
+  std::uint32_t owner = 0;  // avatar of the session that created it
+  std::string name;
+  std::unique_ptr<HostedNode> node;
+  NodeState state;
+};
+
+bool is_real64(RealFormat f) { return f == RealFormat::Real64; }
+
+// The set command that carries slot `s` of layer `lid` (type `type`) in
+// format `f` (docs/verse_wire.md section 7).
+vgc::Command slot_command(std::uint16_t lid, std::uint8_t type, std::uint32_t e, const vgc::Slot& s, RealFormat f) {
+  switch (static_cast<LayerType>(type)) {
+    case LayerType::VertexXyz:
+      if (is_real64(f)) return cmd::VertexSetXyzReal64{lid, e, s.r[0], s.r[1], s.r[2]};
+      return cmd::VertexSetXyzReal32{lid, e, static_cast<float>(s.r[0]), static_cast<float>(s.r[1]),
+                                     static_cast<float>(s.r[2])};
+    case LayerType::VertexUint32: return cmd::VertexSetUint32{lid, e, s.u[0]};
+    case LayerType::VertexReal:
+      if (is_real64(f)) return cmd::VertexSetReal64{lid, e, s.r[0]};
+      return cmd::VertexSetReal32{lid, e, static_cast<float>(s.r[0])};
+    case LayerType::PolygonCornerUint32: return cmd::PolygonSetCornerUint32{lid, e, s.u};
+    case LayerType::PolygonCornerReal:
+      if (is_real64(f)) return cmd::PolygonSetCornerReal64{lid, e, s.r};
+      return cmd::PolygonSetCornerReal32{lid, e,
+                                         {static_cast<float>(s.r[0]), static_cast<float>(s.r[1]),
+                                          static_cast<float>(s.r[2]), static_cast<float>(s.r[3])}};
+    case LayerType::PolygonFaceUint8: return cmd::PolygonSetFaceUint8{lid, e, static_cast<std::uint8_t>(s.u[0])};
+    case LayerType::PolygonFaceUint32: return cmd::PolygonSetFaceUint32{lid, e, s.u[0]};
+    case LayerType::PolygonFaceReal:
+      if (is_real64(f)) return cmd::PolygonSetFaceReal64{lid, e, s.r[0]};
+      return cmd::PolygonSetFaceReal32{lid, e, static_cast<float>(s.r[0])};
+  }
+  return cmd::VertexSetUint32{lid, e, s.u[0]};
+}
+
+cmd::BoneCreate bone_command(const vgc::Bone& b) {
+  return cmd::BoneCreate{b.id, b.weight, b.reference, b.parent, b.pos, b.pos_label, b.rot, b.rot_label};
+}
+
+cmd::LayerCreate layer_command(std::uint16_t id, const LayerInfo& l) {
+  return cmd::LayerCreate{id, l.name, l.type, l.def_uint, l.def_real};
+}
+
+}  // namespace
+
+std::unique_ptr<HostedNode> make_reference_hosted_node() { return std::make_unique<ReferenceHostedNode>(); }
+
+struct Host::Impl {
+  HostOptions options;
+  UdpSocket socket;
+  RsaKey key;
+  std::map<PeerAddress, Session> sessions;
+  std::map<std::uint32_t, HostedGeometry> nodes;
+  std::uint32_t next_node_id = 0;
+  Counters counters;
+
+  void log(const std::string& s) const {
+    if (options.log) options.log(s);
+  }
+
+  void send_to(Session& s, const WireCommand& c) {
+    std::string bytes;
+    Status st = encode_command(c, &bytes);
+    if (st.ok()) st = s.channel->queue(std::move(bytes));
+    if (!st.ok()) log("cannot send " + describe(c) + " to " + s.peer.to_string() + ": " + st.detail);
+  }
+
+  void flush(Session& s, Clock::time_point now) {
+    if (!s.channel) return;
+    for (const std::string& d : s.channel->take_datagrams(now)) {
+      (void)socket.send_to(s.peer, d);
+      ++counters.packets_sent;
+    }
+  }
+
+  std::uint32_t new_node_id() { return next_node_id++; }
+
+  // --- login (docs/verse_wire.md section 2) ---------------------------------
+  void on_login_packet(const PeerAddress& from, const std::uint8_t* data, std::size_t size, Clock::time_point now) {
+    LoginMessage m;
+    Status st = parse_login_packet(data, size, &m);
+    if (!st.ok()) {
+      ++counters.protocol_errors;
+      log("protocol-error from " + from.to_string() + ": " + st.detail);
+      return;
+    }
+    auto it = sessions.find(from);
+    if (const auto* c = std::get_if<login::Contact>(&m)) {
+      if (it != sessions.end() && !it->second.connected) {  // repeated stage 0: same answer again
+        (void)socket.send_to(from, it->second.challenge_packet);
+        return;
+      }
+      if (it != sessions.end()) drop_session(from, "a new login from the same address");
+      Session s;
+      s.peer = from;
+      s.avatar = new_node_id();
+      s.data_key = make_data_key();
+      s.last_heard = now;
+      login::Challenge ch;
+      ch.seconds = static_cast<std::uint32_t>(std::time(nullptr));
+      ch.e = key.e;
+      ch.n = key.n;
+      s.challenge_packet = build_login_packet(ch);
+      // The client's key is needed for the accept: keep it in the accept slot until then.
+      KeyBytes clear_key{};
+      std::copy(s.data_key.begin(), s.data_key.end(), clear_key.begin());
+      login::Accept a;
+      a.avatar = s.avatar;
+      st = rsa_apply(clear_key, c->e, c->n, &a.encrypted_data_key);
+      if (!st.ok()) {
+        ++counters.protocol_errors;
+        log("login from " + from.to_string() + " refused: its key is unusable: " + st.detail);
+        return;
+      }
+      s.accept_packet = build_login_packet(a);
+      (void)socket.send_to(from, s.challenge_packet);
+      sessions[from] = std::move(s);
+      return;
+    }
+    if (std::holds_alternative<login::Login>(m)) {
+      if (it == sessions.end()) return;  // no stage 0 seen: r6 ignores it too
+      Session& s = it->second;
+      if (!s.connected) {
+        KeyBytes block{};
+        st = rsa_apply(std::get<login::Login>(m).encrypted, key.d, key.n, &block);
+        std::string name, password;
+        if (st.ok()) st = read_login_block(block, &name, &password);
+        if (!st.ok()) {
+          ++counters.protocol_errors;
+          log("login from " + from.to_string() + " refused: " + st.detail);
+          sessions.erase(it);
+          return;
+        }
+        s.connected = true;
+        s.channel = std::make_unique<Channel>(s.data_key, options.resend_interval_s);
+        ++counters.logins;
+        log("login: " + from.to_string() + " as '" + name + "', avatar " + std::to_string(s.avatar));
+      }
+      (void)socket.send_to(from, s.accept_packet);  // first time, or the accept was lost
+      return;
+    }
+    // Challenge, Accept, Terminate are a host's or a client's answers: not for a host.
+  }
+
+  void drop_session(const PeerAddress& peer, const std::string& why) {
+    auto it = sessions.find(peer);
+    if (it == sessions.end()) return;
+    if (it->second.connected) log("session " + peer.to_string() + " ended: " + why);
+    sessions.erase(it);
+  }
+
+  // --- node commands (section 3) --------------------------------------------
+  void send_node_create_to_index(const HostedGeometry& g) {
+    for (auto& [peer, s] : sessions)
+      if (s.connected && s.index_geometry)
+        send_to(s, wire::NodeCreate{g.id, kNodeTypeGeometry, s.avatar == g.owner ? kOwnerMine : kOwnerOther});
+  }
+
+  void send_node_content(Session& s, const HostedGeometry& g) {
+    for (const auto& [lid, l] : g.state.layers) send_to(s, wire::Geometry{g.id, layer_command(lid, l)});
+    send_to(s, wire::Geometry{g.id, cmd::CreaseSetVertex{g.state.crease_vertex.layer, g.state.crease_vertex.def_crease}});
+    send_to(s, wire::Geometry{g.id, cmd::CreaseSetEdge{g.state.crease_edge.layer, g.state.crease_edge.def_crease}});
+    for (const auto& [bid, b] : g.state.bones) send_to(s, wire::Geometry{g.id, bone_command(b)});
+    send_to(s, wire::NodeNameSet{g.id, g.name});
+  }
+
+  void send_layer_content(Session& s, const HostedGeometry& g, std::uint16_t lid, RealFormat f) {
+    auto l = g.state.layers.find(lid);
+    if (l == g.state.layers.end()) return;
+    auto slots = g.state.slots.find(lid);
+    if (slots == g.state.slots.end()) return;
+    const vgc::Slot def = layer_default_slot(lid, l->second);
+    for (const auto& [e, slot] : slots->second)
+      if (lid <= 1 || !slot_equal(l->second.type, slot, def))
+        send_to(s, wire::Geometry{g.id, slot_command(lid, l->second.type, e, slot, f)});
+  }
+
+  void on_command(Session& s, WireCommand&& c) {
+    if (auto* x = std::get_if<wire::NodeIndexSubscribe>(&c)) {
+      s.index_geometry = (x->mask >> kNodeTypeGeometry) & 1u;
+      if (s.index_geometry)
+        for (const auto& [id, g] : nodes)
+          send_to(s, wire::NodeCreate{id, kNodeTypeGeometry, g.owner == s.avatar ? kOwnerMine : kOwnerOther});
+    } else if (auto* x = std::get_if<wire::NodeCreate>(&c)) {
+      if (x->type != kNodeTypeGeometry) {
+        log("node_create of type " + std::to_string(x->type) + " ignored: this host serves geometry nodes only");
+        return;
+      }
+      HostedGeometry g;
+      std::string error;
+      g.node = options.make_node ? options.make_node(&error) : make_reference_hosted_node();
+      if (!g.node) {
+        log("node_create failed: " + error);
+        return;
+      }
+      std::string text;
+      Status st = read_state(*g.node, &g.state);
+      if (!st.ok()) {
+        log("node_create failed: the new node's snapshot: " + st.detail);
+        return;
+      }
+      g.id = new_node_id();
+      g.owner = s.avatar;
+      g.name = "Geometry_Node_" + std::to_string(g.id);
+      ++counters.nodes;
+      const std::uint32_t id = g.id;
+      nodes[id] = std::move(g);
+      log("node " + std::to_string(id) + " created by avatar " + std::to_string(s.avatar));
+      send_node_create_to_index(nodes[id]);
+    } else if (auto* x = std::get_if<wire::NodeDestroy>(&c)) {
+      if (!nodes.erase(x->node_id)) return;
+      for (auto& [peer, other] : sessions) {
+        other.node_subs.erase(x->node_id);
+        for (auto it = other.layer_subs.begin(); it != other.layer_subs.end();)
+          it = it->first.first == x->node_id ? other.layer_subs.erase(it) : std::next(it);
+        if (other.connected && other.index_geometry) send_to(other, wire::NodeDestroy{x->node_id});
+      }
+    } else if (auto* x = std::get_if<wire::NodeSubscribe>(&c)) {
+      auto g = nodes.find(x->node_id);
+      if (g == nodes.end()) return;
+      s.node_subs.insert(x->node_id);
+      send_node_content(s, g->second);
+    } else if (auto* x = std::get_if<wire::NodeUnsubscribe>(&c)) {
+      s.node_subs.erase(x->node_id);
+      for (auto it = s.layer_subs.begin(); it != s.layer_subs.end();)
+        it = it->first.first == x->node_id ? s.layer_subs.erase(it) : std::next(it);
+    } else if (auto* x = std::get_if<wire::NodeNameSet>(&c)) {
+      auto g = nodes.find(x->node_id);
+      if (g == nodes.end() || x->name.empty()) return;
+      g->second.name = x->name;
+      for (auto& [peer, other] : sessions)
+        if (other.connected && other.node_subs.count(x->node_id)) send_to(other, *x);
+    } else if (auto* x = std::get_if<wire::Geometry>(&c)) {
+      on_geometry(s, *x);
+    } else if (std::holds_alternative<wire::ConnectTerminate>(c)) {
+      terminated = true;
+    }
+    // tag_group_create: no tags here; acks and naks never reach this point.
+  }
+
+  bool terminated = false;
+
+  Status read_state(HostedNode& node, NodeState* state) {
+    std::string text, error;
+    if (!node.snapshot(&text, &error)) return Status::protocol_error("the node gave no snapshot: " + error);
+    return parse_snapshot_state(text, state);
+  }
+
+  void on_geometry(Session& s, const wire::Geometry& x) {
+    auto it = nodes.find(x.node_id);
+    if (it == nodes.end()) return;  // r6: a command for no node is dropped
+    HostedGeometry& g = it->second;
+    std::string error;
+    if (!g.node->apply(x.command, &error)) {
+      log("node " + std::to_string(g.id) + " failed on " + std::string(command_verb(x.command)) + ": " + error);
+      return;
+    }
+    NodeState after;
+    Status st = read_state(*g.node, &after);
+    if (!st.ok()) {
+      log("node " + std::to_string(g.id) + ": " + st.detail);
+      return;
+    }
+    broadcast_changes(g, after);
+    g.state = std::move(after);
+    if (const auto* sub = std::get_if<cmd::LayerSubscribe>(&x.command)) {
+      if (sub->real_format <= 1 && g.state.layers.count(sub->layer_id)) {
+        const RealFormat f = static_cast<RealFormat>(sub->real_format);
+        s.layer_subs[{g.id, sub->layer_id}] = f;
+        send_layer_content(s, g, sub->layer_id, f);
+      }
+    } else if (const auto* un = std::get_if<cmd::LayerUnsubscribe>(&x.command)) {
+      s.layer_subs.erase({g.id, un->layer_id});
+    }
+  }
+
+  // Section 7: each difference between g.state and `after`, to the sessions
+  // that subscribed to the node (layers, creases, bones) or to the layer (data).
+  void broadcast_changes(HostedGeometry& g, const NodeState& after) {
+    const NodeState& before = g.state;
+    std::vector<vgc::Command> node_level;
+    std::set<std::uint16_t> reset_layers;  // created anew, re-typed or destroyed: their subscriptions end (r6)
+    for (const auto& [lid, l] : after.layers) {
+      auto b = before.layers.find(lid);
+      if (b == before.layers.end() || !(b->second == l)) node_level.push_back(layer_command(lid, l));
+      if (b == before.layers.end() || b->second.type != l.type) reset_layers.insert(lid);
+    }
+    for (const auto& [lid, l] : before.layers)
+      if (!after.layers.count(lid)) {
+        node_level.push_back(cmd::LayerDestroy{lid});
+        reset_layers.insert(lid);
+      }
+    if (!(before.crease_vertex.layer == after.crease_vertex.layer &&
+          before.crease_vertex.def_crease == after.crease_vertex.def_crease))
+      node_level.push_back(cmd::CreaseSetVertex{after.crease_vertex.layer, after.crease_vertex.def_crease});
+    if (!(before.crease_edge.layer == after.crease_edge.layer &&
+          before.crease_edge.def_crease == after.crease_edge.def_crease))
+      node_level.push_back(cmd::CreaseSetEdge{after.crease_edge.layer, after.crease_edge.def_crease});
+    for (const auto& [bid, b] : after.bones) {
+      auto old = before.bones.find(bid);
+      const cmd::BoneCreate now = bone_command(b);
+      if (old == before.bones.end() || !bit_equal(vgc::Command(bone_command(old->second)), vgc::Command(now)))
+        node_level.push_back(now);
+    }
+    for (const auto& [bid, b] : before.bones)
+      if (!after.bones.count(bid)) node_level.push_back(cmd::BoneDestroy{bid});
+
+    for (auto& [peer, s] : sessions) {
+      if (!s.connected) continue;
+      if (s.node_subs.count(g.id))
+        for (const vgc::Command& c : node_level) send_to(s, wire::Geometry{g.id, c});
+      for (std::uint16_t lid : reset_layers) s.layer_subs.erase({g.id, lid});
+    }
+
+    static const std::map<std::uint32_t, vgc::Slot> kEmpty;
+    for (const auto& [lid, l] : after.layers) {
+      std::vector<std::pair<Session*, RealFormat>> subs;
+      for (auto& [peer, s] : sessions) {
+        auto f = s.layer_subs.find({g.id, lid});
+        if (s.connected && f != s.layer_subs.end()) subs.emplace_back(&s, f->second);
+      }
+      if (subs.empty()) continue;
+      auto a_it = after.slots.find(lid);
+      auto b_it = before.slots.find(lid);
+      const auto& a_slots = a_it == after.slots.end() ? kEmpty : a_it->second;
+      const auto& b_slots = b_it == before.slots.end() ? kEmpty : b_it->second;
+      const vgc::Slot def = layer_default_slot(lid, l);
+      for (const auto& [e, slot] : a_slots) {
+        auto old = b_slots.find(e);
+        const bool changed = old == b_slots.end() ? (lid <= 1 || !slot_equal(l.type, slot, def))
+                                                  : !slot_equal(l.type, slot, old->second);
+        if (!changed) continue;
+        for (auto& [s, f] : subs) send_to(*s, wire::Geometry{g.id, slot_command(lid, l.type, e, slot, f)});
+      }
+      if (lid > 1) continue;  // an element's other slots go with it: the base delete says so
+      for (const auto& [e, slot] : b_slots) {
+        if (a_slots.count(e)) continue;
+        for (auto& [s, f] : subs) {
+          if (lid == 1) send_to(*s, wire::Geometry{g.id, cmd::PolygonDelete{e}});
+          else if (is_real64(f)) send_to(*s, wire::Geometry{g.id, cmd::VertexSetXyzReal64{0, e, DBL_MAX, DBL_MAX, DBL_MAX}});
+          else send_to(*s, wire::Geometry{g.id, cmd::VertexDelete{e}});
+        }
+      }
+    }
+  }
+
+  // --- the loop -------------------------------------------------------------
+  void on_datagram(const PeerAddress& from, const std::string& bytes, Clock::time_point now) {
+    ++counters.packets_received;
+    const auto* data = reinterpret_cast<const std::uint8_t*>(bytes.data());
+    const bool login_id = bytes.size() >= 4 && data[0] == 0 && data[1] == 0 && data[2] == 0 && data[3] <= 1;
+    auto it = sessions.find(from);
+    if (login_id || it == sessions.end() || !it->second.connected) {
+      on_login_packet(from, data, bytes.size(), now);
+      return;
+    }
+    Session& s = it->second;
+    s.last_heard = now;
+    std::vector<WireCommand> got;
+    Status st = s.channel->on_datagram(data, bytes.size(), now, &got);
+    if (!st.ok()) {
+      ++counters.protocol_errors;
+      log("protocol-error from " + from.to_string() + ": " + st.detail);
+    }
+    terminated = false;
+    for (WireCommand& c : got) {
+      on_command(s, std::move(c));
+      if (terminated) break;
+    }
+    if (terminated) drop_session(from, "connect_terminate");
+  }
+
+  void service(Clock::time_point now) {
+    const auto limit = std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(options.session_timeout_s));
+    for (auto it = sessions.begin(); it != sessions.end();) {
+      Session& s = it->second;
+      flush(s, now);
+      const bool stuck = !s.connected || (s.channel && !s.channel->all_acknowledged());
+      if (stuck && now - s.last_heard > limit) {
+        log("session " + s.peer.to_string() + " dropped: silent for " + std::to_string(options.session_timeout_s) + " s");
+        it = sessions.erase(it);
+      } else {
+        ++it;
+      }
+    }
+  }
+
+  Clock::time_point next_due() const {
+    Clock::time_point due = Clock::time_point::max();
+    for (const auto& [peer, s] : sessions)
+      if (s.channel) due = std::min(due, s.channel->next_resend_due());
+    return due;
+  }
+};
+
+Host::Host() : impl_(std::make_unique<Impl>()) {}
+Host::~Host() = default;
+
+Status Host::open(const HostOptions& options) {
+  impl_->options = options;
+  Status st = impl_->socket.open(options.address, options.port);
+  if (!st.ok()) return st;
+  impl_->key = make_rsa_key();
+  return {};
+}
+
+std::uint16_t Host::port() const { return impl_->socket.port(); }
+
+Status Host::run_for(double timeout_s, const std::atomic<bool>* stop) {
+  Impl& h = *impl_;
+  if (!h.socket.is_open()) return Status::network_error("host is not open");
+  if (!(timeout_s > 0)) timeout_s = 0;
+  const Clock::time_point deadline =
+      Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(std::min(timeout_s, 1e6)));
+  for (;;) {
+    Clock::time_point now = Clock::now();
+    h.service(now);
+    if (now >= deadline || (stop && stop->load())) return {};
+    const Clock::time_point wake = std::min({deadline, h.next_due(), now + std::chrono::milliseconds(50)});
+    std::string bytes;
+    PeerAddress from;
+    Status st = h.socket.receive(&bytes, &from, std::max(0.0, std::chrono::duration<double>(wake - now).count()));
+    if (st.code == Status::Code::Timeout) continue;
+    if (st.code == Status::Code::ProtocolError) {
+      ++h.counters.protocol_errors;
+      h.log(st.detail);
+      continue;
+    }
+    if (!st.ok()) return st;
+    h.on_datagram(from, bytes, Clock::now());
+  }
+}
+
+Status Host::run(const std::atomic<bool>& stop) {
+  while (!stop.load()) {
+    Status st = run_for(0.2, &stop);
+    if (!st.ok()) return st;
+  }
+  return {};
+}
+
+Host::Counters Host::counters() const { return impl_->counters; }
+
+bool parse_listen_address(const std::string& text, std::string* address, std::uint16_t* port, std::string* error) {
+  std::string addr = "127.0.0.1";
+  std::string p = text;
+  const std::size_t colon = text.rfind(':');
+  if (colon != std::string::npos) {
+    addr = text.substr(0, colon);
+    p = text.substr(colon + 1);
+    if (addr.empty()) {
+      *error = "'" + text + "': empty address before ':' (write PORT or ADDR:PORT)";
+      return false;
+    }
+  }
+  if (p.empty() || p.size() > 5 || p.find_first_not_of("0123456789") != std::string::npos || std::stoul(p) > 65535) {
+    *error = "'" + text + "': expected [ADDR:]PORT with PORT 0..65535 (0: any free port)";
+    return false;
+  }
+  *address = addr;
+  *port = static_cast<std::uint16_t>(std::stoul(p));
+  return true;
+}
+
+}  // namespace vgc::verse

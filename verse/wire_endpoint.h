@@ -1,0 +1,120 @@
+// wire_endpoint.h — UDP with bounded waits, and the r6 acknowledgement and
+// resend rules for one logged-in peer.
+//
+// Spec: docs/verse_wire.md sections 1 (packets), 2 (encryption) and 5
+// (acks, naks, resends, the window), from r6 v_network.c,
+// v_network_in_que.c, v_network_out_que.c, v_connection.c.
+//
+// Rationale: UdpSocket is a non-blocking socket whose only wait is poll()
+// with the caller's time-out, so no call can hang. Channel is the
+// reliability state of one peer, with no socket and no clock of its own
+// (the caller passes "now"), shared by the client and the host so both
+// sides follow the same rules, and testable without a network.
+#pragma once
+
+#include <netinet/in.h>
+
+#include <chrono>
+#include <cstddef>
+#include <cstdint>
+#include <deque>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "wire_commands.h"
+#include "wire_packet.h"
+#include "wire_status.h"
+
+namespace vgc::verse {
+
+using Clock = std::chrono::steady_clock;
+
+struct PeerAddress {
+  sockaddr_in addr{};
+  std::string to_string() const;  // "127.0.0.1:4950"
+  bool operator<(const PeerAddress& o) const;
+  bool operator==(const PeerAddress& o) const;
+};
+// IPv4 only (r6 is IPv4 only). "localhost" and dotted quads; other names via getaddrinfo.
+Status resolve(const std::string& host, std::uint16_t port, PeerAddress* out);
+
+class UdpSocket {
+ public:
+  UdpSocket() = default;
+  ~UdpSocket();
+  UdpSocket(const UdpSocket&) = delete;
+  UdpSocket& operator=(const UdpSocket&) = delete;
+
+  Status open(const std::string& address, std::uint16_t port);  // bind; port 0: any free one
+  bool is_open() const { return fd_ >= 0; }
+  std::uint16_t port() const;
+  Status send_to(const PeerAddress& to, const std::string& bytes);
+  // Waits at most timeout_s for one datagram: Timeout when none came. A
+  // datagram longer than kMaxPacketBytes is a ProtocolError (and dropped).
+  Status receive(std::string* bytes, PeerAddress* from, double timeout_s);
+  void close();
+
+ private:
+  int fd_ = -1;
+};
+
+// Our packets carry at most this many bytes (id included), below r6's
+// 1500-byte receive buffer.
+inline constexpr std::size_t kMaxSendPacketBytes = 1400;
+// Bytes of sent, unacknowledged commands after which nothing new is sent
+// until acks come (r6 V_NOQ_WINDOW_SIZE is 100000; ours is smaller so a
+// burst cannot overflow a peer's socket buffer).
+inline constexpr std::size_t kWindowBytes = 48 * 1024;
+// A packet id more than this past the expected one is a protocol error
+// (r6 would nak every id in between).
+inline constexpr std::uint32_t kMaxPacketGap = 1024;
+
+class Channel {
+ public:
+  Channel(const DataKey& key, double resend_interval_s);
+
+  // Queues one encoded command (encode_command output). ProtocolError when
+  // it cannot fit in one packet.
+  Status queue(std::string encoded_command);
+  // The datagrams to send now, encrypted: pending acks and naks, queued
+  // commands (within the window) and resends of packets unacknowledged for
+  // the resend interval (same id, same bytes).
+  std::vector<std::string> take_datagrams(Clock::time_point now);
+  // One encrypted datagram from the peer: acts on its acks and naks, plans
+  // our ack (and naks for skipped ids), and appends its other commands to
+  // *delivered unless it is a duplicate. A packet that does not parse is a
+  // ProtocolError; the commands before the bad one are still delivered.
+  Status on_datagram(const std::uint8_t* data, std::size_t size, Clock::time_point now,
+                     std::vector<WireCommand>* delivered);
+
+  bool all_acknowledged() const { return history_.empty() && queue_.empty(); }
+  Clock::time_point next_resend_due() const;  // max() when nothing is unacknowledged
+  Clock::time_point last_heard() const { return last_heard_; }
+
+  struct Counters {
+    std::size_t sent = 0, received = 0, resends = 0, naks_sent = 0, duplicates = 0;
+  };
+  const Counters& counters() const { return counters_; }
+
+ private:
+  struct Sent {
+    std::string commands;  // encoded commands, clear
+    std::string datagram;  // as sent, encrypted
+    Clock::time_point sent_at;
+  };
+  std::uint32_t take_id();
+
+  DataKey key_;
+  Clock::duration resend_interval_;
+  std::uint32_t next_out_id_ = kFirstDataPacketId;
+  std::uint32_t expected_in_id_ = kFirstDataPacketId;
+  std::deque<std::string> queue_;
+  std::map<std::uint32_t, Sent> history_;
+  std::size_t history_bytes_ = 0;
+  std::vector<WireCommand> ack_nak_;  // to send
+  Clock::time_point last_heard_;
+  Counters counters_;
+};
+
+}  // namespace vgc::verse

@@ -1,0 +1,22 @@
+// wire_status.cpp — see wire_status.h.
+#include "wire_status.h"
+
+namespace vgc::verse {
+
+const char* Status::code_name() const {
+  switch (code) {
+    case Code::Ok: return "ok";
+    case Code::ProtocolError: return "protocol-error";
+    case Code::Timeout: return "timeout";
+    case Code::NetworkError: return "network-error";
+    case Code::Closed: return "closed";
+  }
+  return "unknown";
+}
+
+std::string Status::to_string() const {
+  if (detail.empty()) return code_name();
+  return std::string(code_name()) + ": " + detail;
+}
+
+}  // namespace vgc::verse
