@@ -5,7 +5,7 @@
 //   vgc fuzz --to-text STREAM          binary stream -> command file (stdout)
 //   vgc fuzz --to-binary FILE -o OUT   command file -> binary stream
 //
-// Spec: docs/fuzzing.md. TARGET is stream, text, differential,
+// Spec: docs/fuzzing.md. TARGET is stream, text, differential, verse_packet,
 // mesh_manifold, mesh_subdivision or property_<group> (fuzz_ prefix
 // optional). The libFuzzer binaries come from the clang fuzz build
 // (default: build-fuzz next to this program's build directory, or
@@ -287,9 +287,10 @@ int run_campaign(const FuzzOptions& o) {
   for (const char* g : kGroups) known_group = known_group || name == std::string("property_") + g;
   // mesh_*: a mesh (fuzz/mesh_bytes.h) into the derived-geometry oracles.
   const bool mesh = name == "mesh_manifold" || name == "mesh_subdivision";
-  if (name != "stream" && name != "text" && name != "differential" && !mesh && !known_group) {
+  if (name != "stream" && name != "text" && name != "differential" && name != "verse_packet" && !mesh &&
+      !known_group) {
     fmt::print(stderr,
-               "vgc fuzz: unknown target '{}': expected stream, text, differential, mesh_manifold, "
+               "vgc fuzz: unknown target '{}': expected stream, text, differential, verse_packet, mesh_manifold, "
                "mesh_subdivision or property_<group> "
                "(layers, polygons, creases, bones, values, ids, commands)\n",
                o.target);
@@ -561,7 +562,7 @@ int run_fuzz(const FuzzOptions& o) {
     return write_file(o.output, bytes) ? 0 : 2;
   }
   if (o.target.empty()) {
-    fmt::print(stderr, "vgc fuzz: name a target (stream, text, differential, mesh_manifold, mesh_subdivision, property_<group>) or use --to-text / --to-binary\n");
+    fmt::print(stderr, "vgc fuzz: name a target (stream, text, differential, verse_packet, mesh_manifold, mesh_subdivision, property_<group>) or use --to-text / --to-binary\n");
     return 2;
   }
   return run_campaign(o);
@@ -570,7 +571,7 @@ int run_fuzz(const FuzzOptions& o) {
 void add_fuzz(CLI::App& app, int* exit_code) {
   auto opts = std::make_shared<FuzzOptions>();
   CLI::App* sub = app.add_subcommand("fuzz", "Run a libFuzzer campaign on a fuzz target, or convert fuzz inputs");
-  sub->add_option("target", opts->target, "stream, text, differential, mesh_manifold, mesh_subdivision or property_<group>");
+  sub->add_option("target", opts->target, "stream, text, differential, verse_packet, mesh_manifold, mesh_subdivision or property_<group>");
   sub->add_option("--time", opts->time_s, "Campaign length in seconds (default 60)");
   sub->add_option("--jobs", opts->jobs, "Parallel fuzzing jobs (libFuzzer -fork=N, default 1)");
   sub->add_option("--impl", opts->impl, "differential: the implementation under test, plugin:PATH");

@@ -1,5 +1,11 @@
 // cmd_serve.cpp — `vgc serve [--impl reference|plugin:PATH] [--done]`: serve a node
-// over the exec protocol (docs/adapters.md) on standard input and output.
+// over the exec protocol (docs/adapters.md) on standard input and output;
+// `vgc serve --verse [ADDR:]PORT [--impl ...]`: serve geometry nodes as a
+// Verse r6 host over UDP (docs/verse_wire.md), one node of the --impl kind
+// per node_create. It prints "vgc-verse listening ADDR:PORT" on stdout
+// once bound (PORT 0 picks a free port and prints it), logs to stderr, and
+// serves until SIGINT or SIGTERM (exit 0); 2 when it cannot bind or open
+// the implementation.
 //
 // Spec: docs/adapters.md "The exec protocol"; command lines are the text
 // language of docs/commands.md, documents those of snapshot.h.
@@ -20,6 +26,8 @@
 // implementation cannot be opened; 3 when writing the answer fails.
 #include <fmt/core.h>
 
+#include <atomic>
+#include <csignal>
 #include <cstdio>
 #include <iostream>
 #include <memory>
@@ -29,6 +37,7 @@
 #include "command_text.h"
 #include "implementation.h"
 #include "subcommand.h"
+#include "verse_host.h"
 
 namespace vgc::cli {
 namespace {
@@ -36,7 +45,74 @@ namespace {
 struct ServeOptions {
   std::string impl = "reference";
   bool done = false;  // answer every command "done" (verdict not reported)
+  std::string verse;  // [ADDR:]PORT: serve as a Verse host instead
 };
+
+// The implementation behind one served Verse node: every answer is
+// dropped (the wire has none); the host reads the snapshot to see changes.
+class ImplementationNode : public verse::HostedNode {
+ public:
+  explicit ImplementationNode(std::unique_ptr<Implementation> impl) : impl_(std::move(impl)) {}
+  bool apply(const Command& command, std::string* error) override {
+    const Answer a = impl_->apply(command);
+    if (a.status == CallStatus::Ok) return true;
+    *error = std::string(call_status_name(a.status)) + ": " + a.detail;
+    return false;
+  }
+  bool snapshot(std::string* text, std::string* error) override {
+    Document d = impl_->snapshot();
+    if (d.status != CallStatus::Ok) {
+      *error = std::string(call_status_name(d.status)) + ": " + d.detail;
+      return false;
+    }
+    *text = std::move(d.text);
+    return true;
+  }
+
+ private:
+  std::unique_ptr<Implementation> impl_;
+};
+
+std::atomic<bool> g_stop{false};
+extern "C" void on_stop_signal(int) { g_stop = true; }
+
+int run_verse(const ServeOptions& o) {
+  verse::HostOptions h;
+  std::string error;
+  if (!verse::parse_listen_address(o.verse, &h.address, &h.port, &error)) {
+    fmt::print(stderr, "vgc serve --verse: {}\n", error);
+    return 2;
+  }
+  OpenOptions options;
+  options.isolate_plugin = false;
+  if (!open_implementation(o.impl, options, &error)) {  // fail now, not at the first node_create
+    fmt::print(stderr, "vgc serve: {}\n", error);
+    return 2;
+  }
+  const std::string spec = o.impl;
+  h.make_node = [spec, options](std::string* err) -> std::unique_ptr<verse::HostedNode> {
+    std::unique_ptr<Implementation> impl = open_implementation(spec, options, err);
+    if (!impl) return nullptr;
+    return std::make_unique<ImplementationNode>(std::move(impl));
+  };
+  h.log = [](const std::string& line) { fmt::print(stderr, "vgc serve --verse: {}\n", line); };
+  verse::Host host;
+  const verse::Status st = host.open(h);
+  if (!st.ok()) {
+    fmt::print(stderr, "vgc serve --verse: {}\n", st.to_string());
+    return 2;
+  }
+  std::signal(SIGINT, on_stop_signal);
+  std::signal(SIGTERM, on_stop_signal);
+  fmt::print(stdout, "vgc-verse listening {}:{}\n", h.address, host.port());
+  std::fflush(stdout);
+  const verse::Status end = host.run(g_stop);
+  if (!end.ok()) {
+    fmt::print(stderr, "vgc serve --verse: {}\n", end.to_string());
+    return 2;
+  }
+  return 0;
+}
 
 bool put(const std::string& s) {
   return std::fwrite(s.data(), 1, s.size(), stdout) == s.size() && std::fflush(stdout) == 0;
@@ -92,6 +168,7 @@ std::string answer_line(Implementation& impl, const std::string& line, bool done
 }
 
 int run_serve(const ServeOptions& o) {
+  if (!o.verse.empty()) return run_verse(o);
   OpenOptions options;
   options.isolate_plugin = false;  // we are the isolation
   std::string error;
@@ -117,6 +194,9 @@ void add_serve(CLI::App& app, int* exit_code) {
   sub->add_flag("--done", opts->done,
                 "Answer every command \"done\" (processed, verdict not reported), as a host on the Verse wire "
                 "reports nothing (docs/adapters.md)");
+  sub->add_option("--verse", opts->verse,
+                  "Serve as a Verse r6 host on UDP [ADDR:]PORT (default address 127.0.0.1; PORT 0: any free "
+                  "port); prints 'vgc-verse listening ADDR:PORT' (docs/verse_wire.md)");
   sub->callback([opts, exit_code] { *exit_code = run_serve(*opts); });
 }
 

@@ -133,6 +133,7 @@ Status ClientSession::connect(const std::string& host, std::uint16_t port, const
     if (st.code == Status::Code::Timeout) continue;
     if (!st.ok() && st.code != Status::Code::ProtocolError) return st;
     if (!st.ok() || !(from == s.host)) continue;
+    if (options.on_packet) options.on_packet(bytes);
     LoginMessage m;
     st = parse_login_packet(reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size(), &m);
     if (!st.ok()) {
@@ -166,6 +167,10 @@ Status ClientSession::connect(const std::string& host, std::uint16_t port, const
       std::copy(clear.begin(), clear.end(), data_key.begin());
       s.avatar = a->avatar;
       s.channel = std::make_unique<Channel>(data_key, options.resend_interval_s);
+      if (options.on_packet)
+        s.channel->set_tap([f = options.on_packet](const std::uint8_t* d, std::size_t n) {
+          f(std::string(reinterpret_cast<const char*>(d), n));
+        });
       s.connected = true;
       s.inbox.clear();
       s.nodes_returned.clear();

@@ -23,6 +23,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -40,6 +41,10 @@ struct ClientOptions {
   std::string password = "vgc";   // at most 31 bytes
   double login_timeout_s = 5.0;   // whole login, all resends included
   double resend_interval_s = 0.25;  // a login stage or an unacknowledged packet is resent after this
+  // Called with every packet received from the host, clear (decrypted), the
+  // login packets included: captures (the fuzz seeds of
+  // corpora/fuzz/fuzz_verse_packet) and debugging. Null: nothing.
+  std::function<void(const std::string& clear_packet)> on_packet;
 };
 
 class ClientSession {

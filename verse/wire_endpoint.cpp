@@ -189,6 +189,7 @@ Status Channel::on_datagram(const std::uint8_t* data, std::size_t size, Clock::t
   std::uint8_t clear[kMaxPacketBytes];
   std::memcpy(clear, data, size);
   xor_packet(clear, size, key_);
+  if (tap_) tap_(clear, size);
   Packet p;
   Status st = parse_packet(clear, size, &p);
   last_heard_ = now;

@@ -18,6 +18,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <deque>
+#include <functional>
 #include <map>
 #include <string>
 #include <vector>
@@ -88,6 +89,9 @@ class Channel {
   Status on_datagram(const std::uint8_t* data, std::size_t size, Clock::time_point now,
                      std::vector<WireCommand>* delivered);
 
+  // Called with every datagram's clear bytes before it is parsed.
+  void set_tap(std::function<void(const std::uint8_t*, std::size_t)> tap) { tap_ = std::move(tap); }
+
   bool all_acknowledged() const { return history_.empty() && queue_.empty(); }
   Clock::time_point next_resend_due() const;  // max() when nothing is unacknowledged
   Clock::time_point last_heard() const { return last_heard_; }
@@ -115,6 +119,7 @@ class Channel {
   std::vector<WireCommand> ack_nak_;  // to send
   Clock::time_point last_heard_;
   Counters counters_;
+  std::function<void(const std::uint8_t*, std::size_t)> tap_;
 };
 
 }  // namespace vgc::verse

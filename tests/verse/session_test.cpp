@@ -5,11 +5,16 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <cstdlib>
+#include <fstream>
+#include <set>
 #include <thread>
 
 #include "faulty_node.h"
 #include "verse_client.h"
 #include "verse_host.h"
+#include "wire_login.h"
+#include "wire_packet.h"
 
 namespace vgc::verse {
 namespace {
@@ -158,6 +163,93 @@ TEST(VerseSession, ASeededFaultOfTheServedNodeShowsOnTheWire) {
   ASSERT_TRUE(a.s.send_geometry(a.node, cmd::PolygonDelete{0}).ok());
   seen = a.barrier();
   EXPECT_EQ(geometry_of<cmd::PolygonDelete>(seen).size(), 0u) << "the faulty node keeps the polygon";
+}
+
+// Every packet the served reference sends in a session touching every
+// command parses; with VGC_CAPTURE_DIR set they are written there, one file
+// each: that is how corpora/fuzz/fuzz_verse_packet/ was made
+// (VGC_CAPTURE_DIR=corpora/fuzz/fuzz_verse_packet build/tests/verse/verse_tests
+//  --gtest_filter=VerseSession.CapturedTrafficParses).
+TEST(VerseSession, CapturedTrafficParses) {
+  RunningHost h;
+  std::vector<std::string> packets;
+  ClientOptions co;
+  co.on_packet = [&](const std::string& p) { packets.push_back(p); };
+  Client a, b;
+  ASSERT_TRUE(a.s.connect("127.0.0.1", h.host.port(), co).ok());
+  ASSERT_TRUE(b.s.connect("127.0.0.1", h.host.port(), co).ok());
+  ASSERT_TRUE(a.s.create_geometry_node(&a.node, kWait).ok());
+  b.node = a.node;
+  ASSERT_TRUE(a.s.subscribe_node(a.node).ok());
+  ASSERT_TRUE(b.s.subscribe_node(b.node).ok());
+  const std::uint8_t types[] = {0, 1, 2, 128, 129, 130, 131, 132};
+  for (std::uint16_t i = 0; i < 8; ++i)
+    ASSERT_TRUE(a.s.send_geometry(a.node, cmd::LayerCreate{std::uint16_t(2 + i), "l" + std::to_string(i), types[i], 3, 0.5}).ok());
+  a.barrier();
+  for (std::uint16_t l = 0; l < 10; ++l) {
+    ASSERT_TRUE(a.s.subscribe_layer(a.node, l, RealFormat::Real64).ok());
+    ASSERT_TRUE(b.s.subscribe_layer(b.node, l, RealFormat::Real32).ok());
+  }
+  const std::vector<Command> cs = {
+      cmd::VertexSetXyzReal64{0, 0, 1, 2, 3}, cmd::VertexSetXyzReal32{0, 1, 4, 5, 6},
+      cmd::VertexSetXyzReal64{0, 2, 7, 8, 9}, cmd::VertexSetXyzReal64{0, 3, 1, 1, 1},
+      cmd::VertexSetXyzReal64{2, 1, 0.5, 0.5, 0.5}, cmd::VertexSetUint32{3, 0, 42}, cmd::VertexSetReal64{4, 1, 0.25},
+      cmd::VertexSetReal32{4, 2, 0.75f}, cmd::PolygonSetCornerUint32{1, 0, {0, 1, 2, 0xFFFFFFFFu}},
+      cmd::PolygonSetCornerUint32{1, 1, {0, 1, 2, 3}}, cmd::PolygonSetCornerUint32{5, 0, {9, 9, 9, 9}},
+      cmd::PolygonSetCornerReal64{6, 0, {1, 2, 3, 4}}, cmd::PolygonSetCornerReal32{6, 1, {5, 6, 7, 8}},
+      cmd::PolygonSetFaceUint8{7, 0, 200}, cmd::PolygonSetFaceUint32{8, 1, 77}, cmd::PolygonSetFaceReal64{9, 0, -1},
+      cmd::PolygonSetFaceReal32{9, 1, 2.5f}, cmd::CreaseSetVertex{"l1", 5}, cmd::CreaseSetEdge{"", 0xFFFFFFFFu},
+      cmd::BoneCreate{0, "l1", "", 0xFFFF, {1, 2, 3}, "", {0, 0, 0, 1}, ""},
+      cmd::BoneCreate{1, "l2", "l1", 0, {0, 1, 0}, "p", {0, 0.6, 0, 0.8}, "r"}, cmd::PolygonDelete{1},
+      cmd::VertexDelete{3}, cmd::BoneDestroy{1}, cmd::LayerDestroy{9}, cmd::LayerUnsubscribe{8}};
+  for (const Command& c : cs) ASSERT_TRUE(a.s.send_geometry(a.node, c).ok());
+  a.barrier();
+  b.barrier();
+  a.s.disconnect();
+  b.s.disconnect();
+
+  std::size_t login = 0, data = 0;
+  std::set<std::uint8_t> numbers;
+  for (const std::string& p : packets) {
+    const auto* d = reinterpret_cast<const std::uint8_t*>(p.data());
+    if (p.size() >= 4 && d[0] == 0 && d[1] == 0 && d[2] == 0 && d[3] <= 1) {
+      LoginMessage m;
+      EXPECT_TRUE(parse_login_packet(d, p.size(), &m).ok());
+      ++login;
+      continue;
+    }
+    Packet parsed;
+    const Status st = parse_packet(d, p.size(), &parsed);
+    EXPECT_TRUE(st.ok()) << st.to_string();
+    for (const WireCommand& c : parsed.commands) numbers.insert(command_number(c));
+    ++data;
+  }
+  EXPECT_EQ(login, 4u) << "two challenges and two accepts";
+  EXPECT_GT(data, 4u);
+  for (std::uint8_t n = 48; n <= 64; ++n)  // 49, layer_subscribe, goes only from clients to hosts
+    if (n != 49) {
+      EXPECT_TRUE(numbers.count(n)) << "no command " << int(n) << " was broadcast";
+    }
+  EXPECT_TRUE(numbers.count(kCmdNodeCreate) && numbers.count(kCmdNodeNameSet) && numbers.count(kCmdPacketAck));
+  if (const char* dir = std::getenv("VGC_CAPTURE_DIR")) {
+    // One packet per shape (its first byte after the id and its length
+    // class), so the seeds stay few and different.
+    std::set<std::string> shapes;
+    std::vector<std::string> unique;
+    for (const std::string& p : packets) {
+      const bool login_packet = p.size() >= 6 && p[0] == 0 && p[1] == 0 && p[2] == 0 && (p[3] == 0 || p[3] == 1);
+      const std::string shape = (login_packet ? p.substr(0, 6) : std::string()) + "|" +
+                                (p.size() > 4 ? std::to_string(static_cast<unsigned char>(p[4])) : "") + "|" +
+                                std::to_string(p.size() / 64);
+      if (shapes.insert(shape).second) unique.push_back(p);
+    }
+    std::size_t i = 0;
+    for (const std::string& p : unique) {
+      char name[64];
+      std::snprintf(name, sizeof name, "/seed-%03zu.bin", i++);
+      std::ofstream(std::string(dir) + name, std::ios::binary) << p;
+    }
+  }
 }
 
 TEST(VerseSession, NoHostIsATimeoutNotAHang) {
