@@ -240,7 +240,7 @@ int run(const Options& o) {
 void add(CLI::App& app, int* exit_code) {
   auto o = std::make_shared<Options>();
   auto* sub = app.add_subcommand("certify", "Certify an implementation of the geometry node against the spec");
-  sub->add_option("--impl", o->impl, "reference | exec:CMD | plugin:PATH")->capture_default_str();
+  sub->add_option("--impl", o->impl, "reference | exec:CMD | plugin:PATH | verse:HOST[:PORT]")->capture_default_str();
   sub->add_option("--seed", o->seed, "Seed; the same seed gives the same cases and verdicts")
       ->capture_default_str()
       ->check(CLI::Validator(

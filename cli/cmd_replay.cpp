@@ -85,7 +85,7 @@ void add(CLI::App& app, int* exit_code) {
   auto o = std::make_shared<Options>();
   auto* sub = app.add_subcommand("replay", "Replay a counterexample command file against an implementation");
   sub->add_option("file", o->file, "Command file (a counterexample from reports/, or any command file)")->required();
-  sub->add_option("--impl", o->impl, "reference | exec:CMD | plugin:PATH")->capture_default_str();
+  sub->add_option("--impl", o->impl, "reference | exec:CMD | plugin:PATH | verse:HOST[:PORT]")->capture_default_str();
   sub->add_option("--timeout", o->timeout, "Seconds an out-of-process implementation has per answer")
       ->capture_default_str();
   sub->callback([o, exit_code] { *exit_code = run(*o); });

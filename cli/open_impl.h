@@ -16,7 +16,7 @@
 
 namespace vgc::cli {
 
-// Opens `spec` ("reference", "exec:CMD", "plugin:PATH") with
+// Opens `spec` ("reference", "exec:CMD", "plugin:PATH", "verse:HOST[:PORT]") with
 // `timeout_seconds` per call. On failure prints "vgc <subcommand>: <why>"
 // to stderr and returns nullptr (the caller exits 2).
 std::unique_ptr<Implementation> open_impl_or_report(const char* subcommand, const std::string& spec,

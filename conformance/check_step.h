@@ -66,6 +66,13 @@ struct StepResult {
   // could not be judged on this step: the runner reports it "not-applicable"
   // when no step of a run judged it.
   bool verdict_reported = true;
+  // false when the route carries no derived document (RouteLimits::derived):
+  // the step was judged on its verdict and snapshot only.
+  bool derived_judged = true;
+  // Set when the route could not carry the command (Answer::not_sent):
+  // nothing was judged, *after is `before` (neither side changed), and the
+  // runner counts nothing for the step. Says why.
+  std::string not_judged;
 };
 
 // The finding for a call that did not answer (crash, timeout) or answered
@@ -82,6 +89,11 @@ Finding call_failure(std::string_view clause, CallStatus s, const std::string& w
 // command the reference applies without changing its own snapshot is
 // consistent with an unchanged state, and no reason is compared. Same calls
 // as an ok/rejected answer: apply, snapshot, derived.
+//
+// The route's limits (Implementation::limits) apply: with no derived
+// document, derived() is not called and the derived comparison is skipped
+// (StepResult::derived_judged false); with no observable subscriptions, the
+// snapshots are compared with their subscription column as "-".
 //
 // follow_choices: where the spec leaves the implementation a visible choice
 // (which free id a pick takes; implementation_choice.h) and the

@@ -105,6 +105,28 @@ std::vector<std::string> split_lines(const std::string& text) {
   return lines;
 }
 
+std::string without_subscriptions(const std::string& snapshot) {
+  std::string out;
+  out.reserve(snapshot.size());
+  std::size_t start = 0;
+  while (start < snapshot.size()) {
+    std::size_t nl = snapshot.find('\n', start);
+    const bool has_nl = nl != std::string::npos;
+    if (!has_nl) nl = snapshot.size();
+    std::string_view line(snapshot.data() + start, nl - start);
+    const std::size_t last = line.rfind(' ');
+    if (line.rfind("layer ", 0) == 0 && last != std::string_view::npos) {
+      out.append(line.substr(0, last + 1));
+      out += '-';
+    } else {
+      out.append(line);
+    }
+    if (has_nl) out += '\n';
+    start = nl + 1;
+  }
+  return out;
+}
+
 std::string DocumentDifference::describe() const {
   if (observed_line.empty()) return "missing line: expected \"" + expected_line + "\"";
   if (expected_line.empty()) return "unexpected line: \"" + observed_line + "\"";

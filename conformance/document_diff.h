@@ -35,6 +35,11 @@ inline constexpr double kPoseTolerance = 1e-9;
 // Precondition: none; malformed text just differs.
 std::optional<DocumentDifference> diff_documents(const std::string& expected, const std::string& observed);
 
+// `snapshot` with the subscription column of every layer line (its last
+// word) printed as "-": for a route that cannot observe subscriptions
+// (RouteLimits::subscriptions), both sides are compared so.
+std::string without_subscriptions(const std::string& snapshot);
+
 // Splits on '\n' (a trailing "\r" is dropped from each line).
 std::vector<std::string> split_lines(const std::string& text);
 

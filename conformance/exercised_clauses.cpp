@@ -52,7 +52,8 @@ std::vector<LineChange> changed_lines(const std::string& before, const std::stri
 }  // namespace
 
 void exercised_clauses(const Node& before, const Command& c, Reason expected, const Node& after,
-                       bool verdict_reported, std::vector<std::string_view>* out) {
+                       bool verdict_reported, std::vector<std::string_view>* out,
+                       std::vector<std::string_view>* derived_only) {
   const std::size_t first = out->size();
   out->push_back("ACCEPT-1");
   out->push_back("STABLE-1");
@@ -68,8 +69,18 @@ void exercised_clauses(const Node& before, const Command& c, Reason expected, co
       if (!ch.removed) out->push_back(clause_for_snapshot(c, before, after, ch.kind, false));
       if (ch.added || ch.removed) out->push_back(clause_for_snapshot(c, before, after, ch.kind, true));
     }
+    std::vector<std::string_view> from_derived;
     for (const auto& ch : changed_lines(print_derived(before), print_derived(after)))
-      out->push_back(clause_for_derived(after, ch.kind, bone_id_of(ch.line)));
+      from_derived.push_back(clause_for_derived(after, ch.kind, bone_id_of(ch.line)));
+    if (!derived_only) {
+      out->insert(out->end(), from_derived.begin(), from_derived.end());
+    } else {
+      std::sort(from_derived.begin(), from_derived.end());
+      from_derived.erase(std::unique(from_derived.begin(), from_derived.end()), from_derived.end());
+      for (auto clause : from_derived)
+        if (std::find(out->begin() + static_cast<std::ptrdiff_t>(first), out->end(), clause) == out->end())
+          derived_only->push_back(clause);
+    }
   }
   std::sort(out->begin() + static_cast<std::ptrdiff_t>(first), out->end());
   out->erase(std::unique(out->begin() + static_cast<std::ptrdiff_t>(first), out->end()), out->end());

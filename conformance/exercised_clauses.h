@@ -30,8 +30,16 @@ namespace vgc {
 // `verdict_reported` is false when the implementation answered `done`
 // (REASON-1 is then not exercised). Precondition: `after` is `before` with
 // `c` applied by the reference.
+//
+// derived_only: when not null, the route carries no derived document
+// (RouteLimits::derived false), so the derived document decided nothing:
+// the clauses that only its changed lines would have decided go to
+// *derived_only instead of *out (a clause the step also decided otherwise
+// stays in *out only). The runner reports a clause that only such steps
+// reached as not judgeable on that route.
 void exercised_clauses(const Node& before, const Command& c, Reason expected, const Node& after,
-                       bool verdict_reported, std::vector<std::string_view>* out);
+                       bool verdict_reported, std::vector<std::string_view>* out,
+                       std::vector<std::string_view>* derived_only = nullptr);
 
 // The clauses a fresh-node check decides (LAYER-BASE-1, CREASE-INITIAL-1,
 // STABLE-1).

@@ -64,6 +64,7 @@ struct CaseContext {
   // Tallies (outside shrinking): the property's exercised counts, the run's
   // command kinds and unreported verdicts.
   std::map<std::string, long>* exercised = nullptr;
+  std::map<std::string, long>* derived_only = nullptr;  // route without a derived document
   std::map<std::string, CommandKindCount>* kinds = nullptr;
   long* unreported = nullptr;
 };
@@ -142,10 +143,12 @@ struct Step final : rc::state::Command<Node, Implementation> {
       if (it == c.notes.end() || it->second.second.commands.size() > c.trace.size())
         c.notes[note.clause] = {note, Program{c.trace, std::nullopt}};
     }
-    if (!r.failure && !c.shrinking) {
-      std::vector<std::string_view> decided;
-      exercised_clauses(before, command, r.expected, after, r.verdict_reported, &decided);
+    if (!r.failure && !c.shrinking && r.not_judged.empty()) {
+      std::vector<std::string_view> decided, derived_only;
+      exercised_clauses(before, command, r.expected, after, r.verdict_reported, &decided,
+                        r.derived_judged ? nullptr : &derived_only);
       count_exercised(decided);
+      for (auto clause : derived_only) ++(*c.derived_only)[std::string(clause)];
       CommandKindCount& k = (*c.kinds)[command_kind(command)];
       ++k.sent;
       if (r.expected == Reason::Ok) ++k.applied;
@@ -300,6 +303,7 @@ PropertyOutcome run_property(const PropertySpec& spec, Implementation& sut, cons
   ctx.baseline = o.tolerated;
   ctx.target = spec.capability.empty() ? o.cases : std::max(1, o.cases / 4);
   ctx.exercised = &out.exercised;
+  ctx.derived_only = &out.derived_only;
   ctx.kinds = &run->command_kinds;
   ctx.unreported = &run->unreported_verdicts;
   out.cases_target = ctx.target;
@@ -524,7 +528,8 @@ RunResult run_certification(Implementation& sut, const RunOptions& o) {
     if (a.status != CallStatus::Ok) {
       f = call_failure("STABLE-1", a.status, "resetting to a fresh node", a.detail);
     } else {
-      for (int doc = 0; doc < 2 && !f; ++doc) {
+      const int documents = sut.limits().derived ? 2 : 1;  // a route may carry no derived document
+      for (int doc = 0; doc < documents && !f; ++doc) {
         const Document d = doc == 0 ? sut.snapshot() : sut.derived();
         if (d.status != CallStatus::Ok)
           f = call_failure("STABLE-1", d.status,
@@ -599,12 +604,17 @@ RunResult run_certification(Implementation& sut, const RunOptions& o) {
   }
 
   // Per clause: the findings of every property that ran, whoever declared it.
+  const RouteLimits limits = sut.limits();
+  run.route = limits.route;
   for (const Clause& clause : clause_catalog()) {
     ClauseOutcome co;
     co.clause = &clause;
     const std::string id(clause.id);
-    for (const PropertyOutcome& po : run.properties)
+    long derived_only = 0;  // steps only the derived document, which the route lacks, would have judged it on
+    for (const PropertyOutcome& po : run.properties) {
       if (auto it = po.exercised.find(id); it != po.exercised.end()) co.exercised += it->second;
+      if (auto it = po.derived_only.find(id); it != po.derived_only.end()) derived_only += it->second;
+    }
     bool declared_and_ran = false;
     std::string stopped_note, skip_note;
     for (std::size_t i = 0; i < props.size(); ++i) {
@@ -646,6 +656,9 @@ RunResult run_certification(Implementation& sut, const RunOptions& o) {
       co.status = "unchecked";
       co.note = "not judged: the implementation could not show a fresh node (" + run.preflight->clause + ": " +
                 run.preflight->message + ")";
+    } else if (auto why = limits.clauses.find(id); why != limits.clauses.end()) {
+      co.status = "not-applicable";  // the route cannot show it, whatever the implementation does
+      co.note = "not judgeable over " + limits.route + ": " + why->second;
     } else if (!declared_and_ran && skip_note == "not claimed") {
       co.status = "not-claimed";  // an optional capability the implementation does not offer
       co.note = skip_note;
@@ -662,12 +675,20 @@ RunResult run_certification(Implementation& sut, const RunOptions& o) {
       co.status = "not-applicable";
       co.note = "the implementation reports no verdicts (it answered `done` to " +
                 std::to_string(run.unreported_verdicts) + " commands), so reason codes cannot be judged";
+    } else if (co.exercised == 0 && derived_only > 0) {
+      co.status = "not-applicable";
+      co.note = "not judgeable over " + limits.route + ": only the derived document (effective creases, bone world "
+                "poses) decides it, and " + limits.why_no_derived + " (" + std::to_string(derived_only) +
+                " commands reached it)";
     } else if (co.exercised == 0) {
       co.status = "unchecked";
       co.note = declared_and_ran ? "0 judged commands exercised it"
                                  : "no property declares it and no judged command exercised it";
     } else {
       co.status = "pass";
+      if (derived_only > 0)
+        co.note = "judged on the snapshot; its derived part (" + std::to_string(derived_only) +
+                  " commands) is not judgeable over " + limits.route;
     }
     run.clauses.push_back(co);
   }

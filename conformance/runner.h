@@ -114,6 +114,9 @@ struct PropertyOutcome {
   double seconds = 0;
   std::vector<PropertyFinding> findings;  // in the order found
   std::map<std::string, long> exercised;  // clause id -> judged steps of this property that decided it
+  // clause id -> judged steps that only the derived document would have
+  // decided it on, for a route that carries none (RouteLimits::derived)
+  std::map<std::string, long> derived_only;
   std::vector<std::pair<Finding, Program>> notes;  // SHOULD-level findings, one per clause
 };
 
@@ -128,7 +131,11 @@ struct ClauseOutcome {
   //                  a declaring property stopped, or nothing exercised it);
   // "not-claimed"    an optional capability the implementation does not claim;
   // "not-applicable" nothing in the run could judge it for this
-  //                  implementation (REASON-1 when it reports no verdicts);
+  //                  implementation (REASON-1 when it reports no verdicts),
+  //                  or the route cannot show it (Implementation::limits:
+  //                  a clause the route names, or one only the derived
+  //                  document decides on a route that carries none); the
+  //                  note names the route and says why;
   // "skipped"        in another shard.
   std::string status;
   std::string note;
@@ -157,6 +164,7 @@ struct RunResult {
   std::vector<ClauseOutcome> clauses;  // catalog order; selected clauses and any clause with a finding
   std::map<std::string, CommandKindCount> command_kinds;
   long unreported_verdicts = 0;  // steps the implementation answered `done` to
+  std::string route;  // RouteLimits::route of the implementation: empty, or the route whose limits apply
   // Set when the implementation could not even show a fresh node (it
   // crashed, hung, or answered what the contract does not allow): no
   // property ran, every other clause is unchecked.

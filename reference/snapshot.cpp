@@ -53,8 +53,17 @@ UsedDefaults used_defaults(std::uint16_t layer_id, LayerType type) {
 }
 
 std::string print_snapshot(const Node& node) {
+  return print_snapshot(SnapshotParts{node.layers(), node.vertex_crease(), node.edge_crease(), node.bones()});
+}
+
+std::string print_snapshot(const SnapshotParts& node) {
+  static const std::map<std::uint32_t, Slot> kNone;
+  const auto slots_of = [&node](std::uint16_t id) -> const std::map<std::uint32_t, Slot>& {
+    const auto it = node.layers.find(id);
+    return it == node.layers.end() ? kNone : it->second.slots;
+  };
   std::string out = "vgc-snapshot 1\n";
-  for (const auto& [id, layer] : node.layers()) {
+  for (const auto& [id, layer] : node.layers) {
     const UsedDefaults used = used_defaults(id, layer.type);
     out += "layer " + u16(id) + " " + format_quoted(layer.name) + " " +
            std::string(layer_type_name(static_cast<std::uint8_t>(layer.type))) + " " +
@@ -63,20 +72,19 @@ std::string print_snapshot(const Node& node) {
            (!layer.subscription ? "-" : *layer.subscription == RealFormat::Real32 ? "REAL32" : "REAL64") +
            "\n";
   }
-  out += "crease_vertex " + format_quoted(node.vertex_crease().layer) + " " +
-         u32(node.vertex_crease().def_crease) + "\n";
-  out += "crease_edge " + format_quoted(node.edge_crease().layer) + " " +
-         u32(node.edge_crease().def_crease) + "\n";
-  for (const auto& [id, slot] : node.vertices())
+  out += "crease_vertex " + format_quoted(node.vertex_crease.layer) + " " + u32(node.vertex_crease.def_crease) +
+         "\n";
+  out += "crease_edge " + format_quoted(node.edge_crease.layer) + " " + u32(node.edge_crease.def_crease) + "\n";
+  for (const auto& [id, slot] : slots_of(Node::kVertexLayer))
     out += "vertex " + u32(id) + slot_values(LayerType::VertexXyz, slot) + "\n";
-  for (const auto& [id, slot] : node.polygons())
+  for (const auto& [id, slot] : slots_of(Node::kPolygonLayer))
     out += "polygon " + u32(id) + slot_values(LayerType::PolygonCornerUint32, slot) + "\n";
-  for (const auto& [lid, layer] : node.layers()) {
+  for (const auto& [lid, layer] : node.layers) {
     if (lid == Node::kVertexLayer || lid == Node::kPolygonLayer) continue;
     for (const auto& [element, slot] : layer.slots)
       out += "slot " + u16(lid) + " " + u32(element) + slot_values(layer.type, slot) + "\n";
   }
-  for (const auto& [id, b] : node.bones()) {
+  for (const auto& [id, b] : node.bones) {
     out += "bone " + u16(id) + " " + format_quoted(b.weight) + " " + format_quoted(b.reference) + " " +
            u16(b.parent);
     for (double v : b.pos) out += " " + format_f64(v);

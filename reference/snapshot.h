@@ -23,6 +23,19 @@ namespace vgc {
 std::string print_snapshot(const Node& node);
 std::string print_derived(const Node& node);
 
+// The parts of a node's state the snapshot prints, held anywhere: a client
+// that rebuilds a node from what a host sends (conformance/adapter/
+// verse_implementation.h) prints its own copy with the same printer. The
+// live vertices are the slots of layer 0, the live polygons those of
+// layer 1 (none when the layer is absent).
+struct SnapshotParts {
+  const std::map<std::uint16_t, Layer>& layers;
+  const CreaseSetting& vertex_crease;
+  const CreaseSetting& edge_crease;
+  const std::map<std::uint16_t, Bone>& bones;
+};
+std::string print_snapshot(const SnapshotParts& state);
+
 // Which of a layer's two defaults the spec gives meaning to (000 2.6.1: a new
 // slot "is typically initialized with a default value"; Table 2-1 gives each
 // type one value type): an integer type's new slots take def_uint, a real or

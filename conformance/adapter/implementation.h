@@ -14,6 +14,7 @@
 #pragma once
 
 #include <cstddef>
+#include <map>
 #include <memory>
 #include <string>
 
@@ -45,6 +46,11 @@ struct Answer {
   // acknowledgement and no error (README). applied is then false and reason
   // empty; check_step decides applied or not from the state.
   bool verdict_reported = true;
+  // true when status == Ok and the route cannot carry the command at all
+  // (the Verse wire cannot send a name with a NUL inside): nothing was sent,
+  // the implementation's state is unchanged, and the step is not judged
+  // (check_step.h); detail says why.
+  bool not_sent = false;
 };
 
 // The text documents of snapshot.h, as the implementation printed them.
@@ -52,6 +58,27 @@ struct Document {
   CallStatus status = CallStatus::Ok;
   std::string text;      // whole document including the final "end\n"
   std::string detail;
+};
+
+// What a route to an implementation cannot show, so that what it cannot
+// show is reported as not judgeable (status `not-applicable`, with why)
+// rather than passed or left unchecked. The exec, plugin and reference
+// routes show everything (the default); the Verse wire route
+// (verse_implementation.h) sees only what a host broadcasts to subscribers.
+struct RouteLimits {
+  std::string route;  // names the route in every note ("the Verse wire"); empty: no limits
+  // false: the route carries no derived document (effective creases, bone
+  // world poses); derived() is not called and what only it would show is
+  // not judged. `why_no_derived` says why, for the notes.
+  bool derived = true;
+  std::string why_no_derived;
+  // false: the snapshot's subscription column (a layer's real format, the
+  // state of the connection that sent layer_subscribe) is not observable;
+  // it is compared as "-" on both sides.
+  bool subscriptions = true;
+  // Clauses the route cannot judge at all -> why. Reported `not-applicable`
+  // with the route and the why, unless a finding was made in them.
+  std::map<std::string, std::string> clauses;
 };
 
 class Implementation {
@@ -67,6 +94,8 @@ class Implementation {
   // What the implementation says it is: the free text of its ?hello answer
   // (exec), the table's name (plugin), or name(). For reports only.
   virtual std::string identity() const { return name(); }
+  // What this route cannot show (RouteLimits). Default: nothing hidden.
+  virtual RouteLimits limits() const { return {}; }
   // One optional capability request (docs/adapters.md "Optional
   // capabilities"): "?capabilities", "?classify", "?subdivide <level>",
   // "?normals", ... (reference/capability_documents.h).

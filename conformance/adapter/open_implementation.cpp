@@ -1,4 +1,5 @@
-// open_implementation.cpp — "reference", "exec:CMD", "plugin:PATH" to an Implementation.
+// open_implementation.cpp — "reference", "exec:CMD", "plugin:PATH",
+// "verse:HOST[:PORT]" to an Implementation.
 //
 // Spec: docs/adapters.md. An isolated plugin is `<vgc> serve --impl
 // plugin:PATH` behind the exec adapter, so a plugin that crashes or hangs
@@ -11,12 +12,14 @@
 #include "implementation.h"
 #include "plugin_implementation.h"
 #include "reference_implementation.h"
+#include "verse_implementation.h"
 
 namespace vgc {
 namespace {
 
-const char kForms[] = "expected reference, exec:CMD (a program speaking the exec protocol, run with /bin/sh -c) "
-                      "or plugin:PATH (a shared library exporting vgc_plugin_v1)";
+const char kForms[] = "expected reference, exec:CMD (a program speaking the exec protocol, run with /bin/sh -c), "
+                      "plugin:PATH (a shared library exporting vgc_plugin_v1) or verse:[NAME@]HOST[:PORT] (a "
+                      "Verse host, port 4950 by default)";
 
 std::string self_executable() {
   char buf[PATH_MAX + 1];
@@ -65,6 +68,23 @@ std::unique_ptr<Implementation> open_implementation(const std::string& spec, con
       return nullptr;
     }
     return open_exec(shell_quote(vgc) + " serve --impl " + shell_quote(spec), spec, options, error);
+  }
+  if (spec.rfind("verse:", 0) == 0) {
+    std::string login, host, why;
+    std::uint16_t port = 0;
+    if (!parse_verse_address(spec.substr(6), &login, &host, &port, &why)) {
+      *error = "'" + spec + "': " + why + "; " + kForms;
+      return nullptr;
+    }
+    auto impl = std::make_unique<VerseImplementation>(spec, login, host, port, options);
+    const Answer a = impl->start();
+    if (a.status != CallStatus::Ok) {
+      *error = spec + ": cannot certify this host (" + call_status_name(a.status) + "): " + a.detail +
+               ". Is a Verse host listening there (UDP), and does it accept the login? (docs/adapters.md, "
+               "\"The Verse wire route\")";
+      return nullptr;
+    }
+    return impl;
   }
   *error = "unknown implementation '" + spec + "': " + kForms;
   return nullptr;

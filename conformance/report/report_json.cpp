@@ -34,6 +34,9 @@ std::string render_report_json(const RunResult& run, const Verdict& v, const Rep
   j["unchecked"] = v.unchecked;
   j["strict"] = v.strict;
   j["unreported_verdicts"] = run.unreported_verdicts;
+  // A route that cannot show every clause (RouteLimits): its clauses are
+  // `not-applicable` with notes naming it.
+  if (!run.route.empty()) j["route_limits"] = run.route;
   if (run.preflight)
     j["preflight"] = {{"clause", run.preflight->clause},
                       {"status", finding_status_name(run.preflight->status)},

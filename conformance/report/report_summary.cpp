@@ -30,6 +30,14 @@ std::string render_summary(const RunResult& run, const Verdict& v, const ReportC
                      v.new_failures.size(), v.known_failures.size(), v.profile_differences.size(),
                      v.should_failures.size(), v.unchecked.size());
   out += "Re-run exactly: `" + ctx.command_line + "`\n\n";
+  if (!run.route.empty()) {
+    std::string ids;
+    for (const auto& co : run.clauses)
+      if (co.status == "not-applicable") ids += (ids.empty() ? "" : ", ") + std::string(co.clause->id);
+    if (!ids.empty())
+      out += fmt::format("Not judgeable over {} (not-applicable; the clause table says why for each): {}.\n\n",
+                         run.route, ids);
+  }
   if (run.preflight)
     out += fmt::format("**The implementation could not show a fresh node** ({}: {}); nothing else was judged.\n\n",
                        run.preflight->clause, run.preflight->message);

@@ -1,0 +1,285 @@
+// verse_implementation.cpp — see verse_implementation.h.
+#include "verse_implementation.h"
+
+#include <chrono>
+#include <cstdlib>
+#include <set>
+#include <type_traits>
+#include <vector>
+
+#include "command_text.h"
+#include "verse_client.h"
+#include "wire_commands.h"
+
+namespace vgc {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_left(Clock::time_point deadline) {
+  return std::max(0.0, std::chrono::duration<double>(deadline - Clock::now()).count());
+}
+
+CallStatus call_status_of(const verse::Status& s) {
+  switch (s.code) {
+    case verse::Status::Code::Ok: return CallStatus::Ok;
+    case verse::Status::Code::Timeout: return CallStatus::Timeout;
+    case verse::Status::Code::ProtocolError: return CallStatus::ProtocolError;
+    case verse::Status::Code::Closed:
+    case verse::Status::Code::NetworkError: return CallStatus::Crash;  // the session is gone
+  }
+  return CallStatus::Crash;
+}
+
+}  // namespace
+
+bool parse_verse_address(const std::string& text, std::string* name, std::string* host, std::uint16_t* port,
+                         std::string* error) {
+  std::string rest = text;
+  *name = "vgc";
+  if (const auto at = rest.find('@'); at != std::string::npos) {
+    *name = rest.substr(0, at);
+    rest = rest.substr(at + 1);
+    if (name->empty() || name->size() > 31) {
+      *error = "the login name before '@' must be 1 to 31 bytes";
+      return false;
+    }
+  }
+  *port = verse::kDefaultPort;
+  if (const auto colon = rest.rfind(':'); colon != std::string::npos) {
+    const std::string digits = rest.substr(colon + 1);
+    rest = rest.substr(0, colon);
+    char* end = nullptr;
+    const unsigned long v = digits.empty() ? 0 : std::strtoul(digits.c_str(), &end, 10);
+    if (digits.empty() || *end != '\0' || digits.find_first_not_of("0123456789") != std::string::npos || v == 0 ||
+        v > 65535) {
+      *error = "'" + digits + "' is not a port (1 to 65535; the Verse default is 4950)";
+      return false;
+    }
+    *port = static_cast<std::uint16_t>(v);
+  }
+  if (rest.empty()) {
+    *error = "no host named (verse:HOST[:PORT], e.g. verse:localhost or verse:127.0.0.1:4950)";
+    return false;
+  }
+  *host = rest;
+  return true;
+}
+
+RouteLimits verse_route_limits() {
+  RouteLimits l;
+  l.route = "the Verse wire";
+  l.derived = false;
+  l.why_no_derived = "the Verse wire carries only stored state (no effective creases, no bone world poses)";
+  l.subscriptions = false;
+  l.clauses["REASON-1"] =
+      "a Verse host acknowledges nothing and reports no error, so it gives no reason codes (docs/spec_facts.md "
+      "section 8)";
+  l.clauses["LAYER-SUBSCRIBE-1"] =
+      "a subscription is the subscriber's own state; a host broadcasts none, and what it sends the subscriber "
+      "is not compared";
+  const char* capability =
+      "an optional capability asked with a request (docs/adapters.md section 5); the Verse wire has no such "
+      "request (no subdivision, classification or normals)";
+  for (const char* id : {"MESH-CLASSIFY-1", "SUBD-CATMARK-1", "NORMALS-SPLIT-1", "LOOP-TRIANGLE-1",
+                         "EDIT-HIERARCHY-1"})
+    l.clauses[id] = capability;
+  return l;
+}
+
+VerseImplementation::VerseImplementation(const std::string& spec, const std::string& login_name,
+                                         const std::string& host, std::uint16_t port, const OpenOptions& options)
+    : spec_(spec), login_(login_name), host_(host), port_(port), options_(options) {}
+
+VerseImplementation::~VerseImplementation() {
+  if (driver_ && have_node_ && !broken_) {
+    verse::wire::NodeDestroy destroy;
+    destroy.node_id = node_;
+    (void)driver_->send(destroy);
+  }
+  if (observer_) observer_->disconnect();
+  if (driver_) driver_->disconnect();
+}
+
+std::string VerseImplementation::identity() const { return identity_.empty() ? spec_ : identity_; }
+
+Answer VerseImplementation::failed(CallStatus s, const std::string& detail) {
+  broken_ = true;
+  Answer a;
+  a.status = s;
+  a.detail = detail;
+  return a;
+}
+
+Answer VerseImplementation::connect() {
+  if (!silent_since_.empty())
+    return failed(CallStatus::Timeout, "the Verse host stopped answering (" + silent_since_ +
+                                           "); vgc does not wait for it again in this run");
+  if (observer_) observer_->disconnect();
+  if (driver_) driver_->disconnect();
+  driver_ = std::make_unique<verse::ClientSession>();
+  observer_ = std::make_unique<verse::ClientSession>();
+  have_node_ = false;
+  verse::ClientOptions o;
+  o.name = login_;
+  if (const char* pw = std::getenv("VERSE_PASSWORD")) o.password = pw;
+  o.login_timeout_s = options_.timeout_seconds;
+  const std::string where = host_ + ":" + std::to_string(port_);
+  for (auto* session : {driver_.get(), observer_.get()}) {
+    const verse::Status st = session->connect(host_, port_, o);
+    // A host that answered before and no longer answers a login has gone
+    // silent: waiting for it again at every test case would only turn a
+    // dead host into a run as long as cases x --timeout.
+    if (st.code == verse::Status::Code::Timeout && ever_connected_)
+      silent_since_ = "no answer to a login within " + std::to_string(options_.timeout_seconds) + " s";
+    if (!st.ok())
+      return failed(call_status_of(st), "logging in to the Verse host at " + where + " as \"" + login_ +
+                                            "\": " + st.to_string());
+  }
+  identity_ = "Verse host at " + where;
+  broken_ = false;
+  ever_connected_ = true;
+  return {};
+}
+
+Answer VerseImplementation::make_node() {
+  if (have_node_) {
+    verse::wire::NodeDestroy destroy;
+    destroy.node_id = node_;
+    if (const verse::Status st = driver_->send(destroy); !st.ok())
+      return failed(call_status_of(st), "destroying geometry node " + std::to_string(node_) + ": " + st.to_string());
+    have_node_ = false;
+  }
+  std::uint32_t id = 0;
+  if (const verse::Status st = driver_->create_geometry_node(&id, options_.timeout_seconds); !st.ok())
+    return failed(call_status_of(st), "creating a geometry node (node_create): " + st.to_string());
+  node_ = id;
+  have_node_ = true;
+  mirror_.clear();
+  if (const verse::Status st = observer_->subscribe_node(node_); !st.ok())
+    return failed(call_status_of(st), "subscribing to geometry node " + std::to_string(node_) + ": " + st.to_string());
+  return settle("creating geometry node " + std::to_string(node_) + " and subscribing to it");
+}
+
+Answer VerseImplementation::start() {
+  Answer a = connect();
+  if (a.status != CallStatus::Ok) return a;
+  return make_node();
+}
+
+Answer VerseImplementation::reset() {
+  if (broken_ || !driver_ || !driver_->connected() || !observer_->connected()) return start();
+  return make_node();
+}
+
+void VerseImplementation::drain_driver() {
+  // The driver subscribes to nothing of its own, but the suite's
+  // layer_subscribe makes the host send it layer data, and it hears about
+  // nodes: read and drop it, so that its queue stays small (receive() also
+  // acknowledges and resends).
+  verse::WireCommand w;
+  for (int i = 0; i < 100000 && driver_->receive(&w, 0).ok(); ++i) {
+  }
+}
+
+Answer VerseImplementation::settle(const std::string& what) {
+  const auto deadline = Clock::now() + std::chrono::duration_cast<Clock::duration>(
+                                           std::chrono::duration<double>(options_.timeout_seconds));
+  std::set<std::uint16_t> to_subscribe;
+  // One command from the host: geometry for our node goes to the mirror.
+  auto take = [&](const verse::WireCommand& w, std::string* error) {
+    const auto* g = std::get_if<verse::wire::Geometry>(&w);
+    if (!g || g->node_id != node_) return true;  // another node, or not geometry
+    if (const auto* lc = std::get_if<cmd::LayerCreate>(&g->command); lc && !lc->name.empty()) {
+      const auto it = mirror_.layers().find(lc->layer_id);
+      if (it == mirror_.layers().end() || static_cast<std::uint8_t>(it->second.type) != lc->type)
+        to_subscribe.insert(lc->layer_id);  // new, or re-typed (an r6 host then drops its subscribers)
+    }
+    return mirror_.apply(g->command, error);
+  };
+
+  // The round trip: the driver's name change after its command(s).
+  const std::string name = "vgc-barrier-" + std::to_string(++barrier_count_);
+  verse::wire::NodeNameSet mark;
+  mark.node_id = node_;
+  mark.name = name;
+  if (const verse::Status st = driver_->send(mark); !st.ok())
+    return failed(call_status_of(st), what + ": sending the round-trip node_name_set: " + st.to_string());
+  for (;;) {
+    verse::WireCommand w;
+    const verse::Status st = observer_->receive(&w, seconds_left(deadline));
+    if (!st.ok()) {
+      if (st.code == verse::Status::Code::Timeout)
+        return failed(CallStatus::Timeout,
+                      what + ": the host did not echo the round-trip node_name_set \"" + name + "\" to a subscriber "
+                      "within " + std::to_string(options_.timeout_seconds) + " s");
+      return failed(call_status_of(st), what + ": " + st.to_string());
+    }
+    if (const auto* n = std::get_if<verse::wire::NodeNameSet>(&w); n && n->node_id == node_ && n->name == name) break;
+    std::string error;
+    if (!take(w, &error)) return failed(CallStatus::ProtocolError, what + ": " + error);
+  }
+  // Layers announced: the observer subscribes and waits for their contents.
+  for (int round = 0; !to_subscribe.empty(); ++round) {
+    if (round == 8)
+      return failed(CallStatus::ProtocolError, what + ": the host kept announcing new layers after 8 rounds");
+    for (std::uint16_t id : to_subscribe)
+      if (const verse::Status st = observer_->subscribe_layer(node_, id, RealFormat::Real64); !st.ok())
+        return failed(call_status_of(st), what + ": subscribing to layer " + std::to_string(id) + ": " +
+                                              st.to_string());
+    to_subscribe.clear();
+    std::vector<verse::WireCommand> seen;
+    const verse::Status st = observer_->barrier(node_, seconds_left(deadline), &seen);
+    for (const auto& w : seen) {
+      std::string error;
+      if (!take(w, &error)) return failed(CallStatus::ProtocolError, what + ": " + error);
+    }
+    if (!st.ok()) {
+      if (st.code == verse::Status::Code::Timeout)
+        return failed(CallStatus::Timeout, what + ": the host did not echo the observer's round-trip node_name_set "
+                                                  "after its layer subscriptions within " +
+                                               std::to_string(options_.timeout_seconds) + " s");
+      return failed(call_status_of(st), what + ": " + st.to_string());
+    }
+  }
+  drain_driver();
+  return {};
+}
+
+Answer VerseImplementation::apply(const Command& c) {
+  if (broken_ || !have_node_)
+    return failed(CallStatus::Crash, "the session with the Verse host was lost earlier; reset() logs in again");
+  const std::string what = "after `" + print_command(c) + "`";
+  {
+    // What the wire cannot carry (a name with a NUL inside: Verse strings
+    // end at their first NUL) is not sent, and the step is not judged.
+    verse::wire::Geometry g;
+    g.node_id = node_;
+    g.command = c;
+    std::string bytes;
+    if (const verse::Status st = verse::encode_command(g, &bytes); !st.ok()) {
+      Answer a;
+      a.not_sent = true;
+      a.verdict_reported = false;
+      a.detail = "the Verse wire cannot carry it (" + st.detail + ")";
+      return a;
+    }
+  }
+  if (const verse::Status st = driver_->send_geometry(node_, c); !st.ok())
+    return failed(call_status_of(st), "sending `" + print_command(c) + "`: " + st.to_string());
+  Answer a = settle(what);
+  if (a.status != CallStatus::Ok) return a;
+  a.verdict_reported = false;  // `done`: a host acknowledges nothing
+  return a;
+}
+
+Document VerseImplementation::snapshot() {
+  if (broken_) return {CallStatus::Crash, {}, "the session with the Verse host was lost"};
+  return {CallStatus::Ok, mirror_.snapshot(), {}};
+}
+
+Document VerseImplementation::derived() {
+  return {CallStatus::ProtocolError, {}, verse_route_limits().why_no_derived};
+}
+
+}  // namespace vgc

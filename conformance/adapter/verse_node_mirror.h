@@ -1,0 +1,66 @@
+// verse_node_mirror.h — a geometry node rebuilt only from what a Verse host
+// sends to a subscriber: the state the verse: route certifies.
+//
+// Spec: 000 section 2.6.1 (layers; a new slot takes the layer's default),
+// 2.6.2 (crease settings), 2.6.3 (bones); docs/spec_facts.md sections 3-4
+// (the commands a host sends, in their alias forms), section 5 (ids). What
+// a host sends to subscribers: docs/adapters.md "The Verse wire route".
+//
+// Rationale: a client of a Verse host knows the node only through the
+// commands the host sends it: layer_create for each layer (on subscribing
+// and whenever one is created or changed), the values of each subscribed
+// layer, crease settings and bones. The mirror applies each of them as a
+// statement of fact, never judging it (that is the suite's job, on the
+// snapshot it prints): a vertex written on layer 0 is a live vertex, and
+// every vertex-stack layer gets a slot for it holding the layer's default
+// until the host sends its value (a host sends only values that differ
+// from the default, as r6 does on subscribing); a delete removes the
+// element from its stack and nothing else (a host that also removes the
+// polygons of a deleted vertex says so with polygon deletes). It keeps no
+// subscription state: a host broadcasts none (RouteLimits::subscriptions).
+// Its size is bounded (max_cells) so a hostile host cannot make vgc
+// allocate without bound; past it apply() fails and the adapter reports a
+// protocol error.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <map>
+#include <string>
+
+#include "command.h"
+#include "node.h"
+
+namespace vgc {
+
+class VerseNodeMirror {
+ public:
+  explicit VerseNodeMirror(std::size_t max_cells = std::size_t{1} << 22) : max_cells_(max_cells) {}
+
+  // Forgets everything: no layers (not even the base layers: a host
+  // announces them like any other), smooth creases, no bones.
+  void clear();
+  // Applies one command the host sent. false with *error when it would
+  // pass max_cells (the host sent more state than vgc keeps).
+  bool apply(const Command& sent, std::string* error);
+  // The snapshot document (reference/snapshot.h) of what the host sent,
+  // with no subscription column ("-": a host broadcasts none).
+  std::string snapshot() const;
+
+  const std::map<std::uint16_t, Layer>& layers() const { return layers_; }
+
+ private:
+  bool new_element(bool vertex_stack, std::uint32_t id, std::string* error);
+  Slot* slot(std::uint16_t layer_id, std::uint32_t element, std::string* error, bool* ok);
+  void erase_element(bool vertex_stack, std::uint32_t id);
+  bool set_xyz(std::uint16_t layer_id, std::uint32_t id, double x, double y, double z, std::string* error);
+  std::size_t cells() const;
+
+  std::size_t max_cells_;
+  std::map<std::uint16_t, Layer> layers_;
+  CreaseSetting vertex_crease_;
+  CreaseSetting edge_crease_;
+  std::map<std::uint16_t, Bone> bones_;
+};
+
+}  // namespace vgc

@@ -1,0 +1,282 @@
+// verse_route_test.cpp — `--impl verse:HOST[:PORT]` against `vgc serve
+// --verse`: the reference node served as a Verse host on loopback, certified
+// over the wire (conformance/adapter/verse_implementation.h).
+//
+// Spec: docs/adapters.md section 7 (the Verse wire route: what it judges,
+// what it cannot); docs/certify.md "Clause statuses" (not-applicable).
+//
+// Each test starts its own host on a free port (`vgc serve --verse
+// 127.0.0.1:0` prints the port it bound) and kills it at the end; every
+// wait is bounded.
+#include <fcntl.h>
+#include <poll.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <gtest/gtest.h>
+#include <rapidcheck.h>
+#include <rapidcheck/gtest.h>
+
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "adapter_test_util.h"
+#include "command_gen.h"
+#include "snapshot.h"
+#include "wire_commands.h"
+#include "implementation.h"
+#include "report.h"
+#include "runner.h"
+#include "verdict.h"
+#include "verse_implementation.h"
+
+namespace vgc {
+namespace {
+
+// `vgc serve --verse 127.0.0.1:0 [extra]` as a child process, with `env`
+// added to its environment.
+class ServedHost {
+ public:
+  ServedHost(const std::vector<std::string>& extra, const std::vector<std::string>& env) {
+    int out[2];
+    if (pipe(out) != 0) return;
+    pid_ = fork();
+    if (pid_ == 0) {
+      dup2(out[1], STDOUT_FILENO);
+      close(out[0]);
+      close(out[1]);
+      for (const auto& e : env) putenv(const_cast<char*>(e.c_str()));
+      std::vector<std::string> args = {VGC_BINARY, "serve", "--verse", "127.0.0.1:0"};
+      args.insert(args.end(), extra.begin(), extra.end());
+      std::vector<char*> argv;
+      for (auto& a : args) argv.push_back(a.data());
+      argv.push_back(nullptr);
+      execv(VGC_BINARY, argv.data());
+      _exit(127);
+    }
+    close(out[1]);
+    out_ = out[0];
+    // "vgc-verse listening ADDR:PORT", within 30 s.
+    std::string line;
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(30);
+    while (line.find('\n') == std::string::npos && std::chrono::steady_clock::now() < deadline) {
+      pollfd p{out_, POLLIN, 0};
+      if (poll(&p, 1, 200) <= 0) continue;
+      char buf[256];
+      const ssize_t n = read(out_, buf, sizeof buf);
+      if (n <= 0) break;
+      line.append(buf, static_cast<std::size_t>(n));
+    }
+    line_ = line.substr(0, line.find('\n'));
+    const auto colon = line_.rfind(':');
+    if (line_.rfind("vgc-verse listening ", 0) == 0 && colon != std::string::npos)
+      port_ = static_cast<std::uint16_t>(std::atoi(line_.c_str() + colon + 1));
+  }
+  ~ServedHost() {
+    if (pid_ > 0) {
+      kill(pid_, SIGKILL);
+      waitpid(pid_, nullptr, 0);
+    }
+    if (out_ >= 0) close(out_);
+  }
+  std::uint16_t port() const { return port_; }
+  const std::string& line() const { return line_; }
+  std::string spec() const { return "verse:127.0.0.1:" + std::to_string(port_); }
+  void signal(int sig) { kill(pid_, sig); }
+
+ private:
+  pid_t pid_ = -1;
+  int out_ = -1;
+  std::uint16_t port_ = 0;
+  std::string line_;
+};
+
+std::unique_ptr<Implementation> open_verse(const ServedHost& host, double timeout_seconds = 5.0) {
+  std::string error;
+  auto sut = open_implementation(host.spec(), test::test_options(timeout_seconds), &error);
+  EXPECT_NE(sut, nullptr) << error;
+  return sut;
+}
+
+RunOptions options(int cases) {
+  RunOptions o;
+  o.seed = 1;
+  o.cases = cases;
+  o.max_size = 50;
+  o.budget_seconds = 120;
+  return o;
+}
+
+// The wire cannot tell a command from its alias (docs/spec_facts.md
+// section 4): what the host receives for `c` decodes as wire_canonical(c).
+// So no property may expect different outcomes for the two forms over this
+// route: on every state the properties reach, the reference gives both the
+// same verdict and the same state.
+RC_GTEST_PROP(VerseRoute, ACommandAndItsWireFormHaveTheSameOutcome, ()) {
+  Node model;
+  const auto focus = *rc::gen::element(Focus::Layers, Focus::Polygons, Focus::Creases, Focus::Bones, Focus::Values,
+                                       Focus::Ids, Focus::Anything);
+  const auto n = *rc::gen::inRange(1, 40);
+  for (int i = 0; i < n; ++i) {
+    const Command c = *gen_command(model, focus);
+    const Command wire = verse::wire_canonical(c);
+    Node as_sent = model, as_received = model;
+    const Reason a = as_sent.apply(c), b = as_received.apply(wire);
+    RC_ASSERT((a == Reason::Ok) == (b == Reason::Ok));
+    RC_ASSERT(print_snapshot(as_sent) == print_snapshot(as_received));
+    model = std::move(as_sent);
+  }
+}
+
+TEST(VerseRoute, AddressesParseAndBadOnesSayWhatToDo) {
+  std::string name, host, error;
+  std::uint16_t port = 0;
+  ASSERT_TRUE(parse_verse_address("localhost", &name, &host, &port, &error)) << error;
+  EXPECT_EQ(host, "localhost");
+  EXPECT_EQ(port, 4950);
+  EXPECT_EQ(name, "vgc");
+  ASSERT_TRUE(parse_verse_address("alice@10.0.0.7:4951", &name, &host, &port, &error)) << error;
+  EXPECT_EQ(name, "alice");
+  EXPECT_EQ(host, "10.0.0.7");
+  EXPECT_EQ(port, 4951);
+  EXPECT_FALSE(parse_verse_address("", &name, &host, &port, &error));
+  EXPECT_NE(error.find("verse:HOST[:PORT]"), std::string::npos) << error;
+  EXPECT_FALSE(parse_verse_address("localhost:99999", &name, &host, &port, &error));
+  EXPECT_NE(error.find("not a port"), std::string::npos) << error;
+  EXPECT_FALSE(parse_verse_address("localhost:", &name, &host, &port, &error));
+}
+
+TEST(VerseRoute, NoHostListeningIsAClearErrorWithinTheTimeout) {
+  // A port of a socket we hold and never read: nothing answers there.
+  ServedHost host({}, {});
+  ASSERT_NE(host.port(), 0) << "no port in \"" << host.line() << "\"";
+  host.signal(SIGSTOP);
+  std::string error;
+  const auto start = std::chrono::steady_clock::now();
+  auto sut = open_implementation(host.spec(), test::test_options(0.5), &error);
+  EXPECT_EQ(sut, nullptr);
+  EXPECT_NE(error.find("cannot certify this host (timeout)"), std::string::npos) << error;
+  EXPECT_NE(error.find("Is a Verse host listening there"), std::string::npos) << error;
+  EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(20));  // bounded, not a hang
+  host.signal(SIGCONT);
+}
+
+TEST(VerseRoute, TheServedReferenceIsConformantOverTheWire) {
+  ServedHost host({}, {});
+  ASSERT_NE(host.port(), 0) << "no port in \"" << host.line() << "\"";
+  auto sut = open_verse(host);
+  ASSERT_NE(sut, nullptr);
+  const RunResult run = run_certification(*sut, options(60));
+  int not_applicable = 0;
+  for (const ClauseOutcome& co : run.clauses) {
+    EXPECT_TRUE(co.status == "pass" || co.status == "not-applicable")
+        << co.clause->id << " " << co.status << ": " << co.note << (co.finding ? " " + co.finding->message : "");
+    if (co.status == "not-applicable") {
+      ++not_applicable;
+      EXPECT_EQ(co.note.rfind("not judgeable over the Verse wire: ", 0), 0u) << co.clause->id << ": " << co.note;
+    }
+  }
+  EXPECT_GT(not_applicable, 0);
+  EXPECT_EQ(run.route, "the Verse wire");
+  EXPECT_GT(run.unreported_verdicts, 0);  // every answer is `done`
+  EXPECT_TRUE(run.conformant);
+  EXPECT_TRUE(run.complete);
+  EXPECT_EQ(judge(run, nullptr).name, "conformant");
+}
+
+TEST(VerseRoute, ASeededFaultInTheServedNodeIsNamedWithItsClause) {
+  ServedHost host({"--impl", std::string("plugin:") + VGC_FAULT_PLUGIN}, {"VGC_FAULT=polygon-delete-ignored"});
+  ASSERT_NE(host.port(), 0) << "no port in \"" << host.line() << "\"";
+  auto sut = open_verse(host);
+  ASSERT_NE(sut, nullptr);
+  RunOptions o = options(40);
+  o.clause_glob = "POLY-*";
+  const RunResult run = run_certification(*sut, o);
+  bool named = false;
+  for (const ClauseOutcome& co : run.clauses)
+    if (co.clause->id == "POLY-DELETE-1") {
+      named = co.status == "fail" && co.finding;
+      EXPECT_TRUE(named) << co.status << ": " << co.note;
+      if (co.finding) {
+        EXPECT_NE(co.finding->message.find("observed done, and the state is unchanged"), std::string::npos)
+            << co.finding->message;
+      }
+    }
+  EXPECT_TRUE(named);
+  EXPECT_FALSE(run.conformant);
+}
+
+// The host stops answering after the first property (SIGSTOP): the rest of
+// the run is timeouts, bounded by --timeout, and the report is written.
+TEST(VerseRoute, AHostThatGoesSilentGivesTimeoutsAndAFinishedReport) {
+  ServedHost host({}, {});
+  ASSERT_NE(host.port(), 0) << "no port in \"" << host.line() << "\"";
+  auto sut = open_verse(host, 1.0);
+  ASSERT_NE(sut, nullptr);
+  RunOptions o = options(10);
+  o.clause_glob = "LAYER-*,POLY-*";
+  bool silenced = false;
+  o.property_done = [&](const PropertyOutcome&, const RunProgress&) {
+    if (!silenced) host.signal(SIGSTOP), silenced = true;
+  };
+  const RunResult run = run_certification(*sut, o);
+  host.signal(SIGCONT);
+  ASSERT_TRUE(silenced);
+  bool timeout = false;
+  for (const ClauseOutcome& co : run.clauses) timeout = timeout || co.status == "timeout";
+  EXPECT_TRUE(timeout) << "no clause timed out";
+  EXPECT_FALSE(run.conformant);
+  const std::string root = ::testing::TempDir() + "vgc-verse-silent";
+  std::filesystem::remove_all(root);
+  ReportContext ctx;
+  ctx.implementation_spec = host.spec();
+  ctx.command_line = "vgc certify --impl " + host.spec();
+  ctx.started = "2026-11-23T00:00:00Z";
+  ctx.run_dir = default_run_dir(root, run, ctx);
+  std::string error;
+  ASSERT_TRUE(write_report(root, run, judge(run, nullptr), ctx, &error)) << error;
+  EXPECT_TRUE(std::filesystem::exists(ctx.run_dir + "/report.json"));
+  std::filesystem::remove_all(root);
+}
+
+// `vgc certify` through the CLI against a faulty served node, then the
+// replay line its report prints, run as printed: it names the clause.
+TEST(VerseRoute, TheReplayLinePrintedForAWireFindingWorksAsPrinted) {
+  ServedHost host({"--impl", std::string("plugin:") + VGC_FAULT_PLUGIN}, {"VGC_FAULT=polygon-delete-ignored"});
+  ASSERT_NE(host.port(), 0) << "no port in \"" << host.line() << "\"";
+  const std::string dir = ::testing::TempDir() + "vgc-verse-replay";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  const std::string certify = "cd " + shell_quote(dir) + " && " + shell_quote(VGC_BINARY) +
+                              " certify --quiet --cases 30 --clauses 'POLY-*' --impl " + host.spec() +
+                              " > certify.out 2>&1";
+  const int rc = std::system(certify.c_str());
+  ASSERT_TRUE(WIFEXITED(rc));
+  EXPECT_EQ(WEXITSTATUS(rc), 1) << test::read_text(dir + "/certify.out");
+  const auto report = nlohmann::json::parse(test::read_text(dir + "/reports/latest/report.json"), nullptr, false);
+  ASSERT_FALSE(report.is_discarded());
+  std::string replay;
+  for (const auto& c : report["clauses"])
+    if (c["id"] == "POLY-DELETE-1" && c.contains("replay")) replay = c["replay"];
+  ASSERT_FALSE(replay.empty()) << report.dump(1);
+  EXPECT_NE(replay.find(host.spec()), std::string::npos) << replay;
+  // As printed ("./vgc replay ..."), from a directory where ./vgc is the
+  // vgc binary (in a checkout it is the wrapper script that runs it).
+  std::filesystem::create_symlink(VGC_BINARY, dir + "/vgc");
+  const std::string line = replay;
+  const int replayed = std::system(("cd " + shell_quote(dir) + " && " + line + " > replay.out 2>&1").c_str());
+  ASSERT_TRUE(WIFEXITED(replayed));
+  EXPECT_EQ(WEXITSTATUS(replayed), 1) << line << "\n" << test::read_text(dir + "/replay.out");
+  EXPECT_NE(test::read_text(dir + "/replay.out").find("POLY-DELETE-1"), std::string::npos)
+      << test::read_text(dir + "/replay.out");
+  std::filesystem::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace vgc
