@@ -482,7 +482,7 @@ TEST_F(Cli, EveryUsageErrorSaysWhatToDo) {
       {"replay " + shell_quote(std::string(VGC_SOURCE_DIR) + "/corpora/examples/cube.vgc") + " --impl plugin:no_such.so",
        {"vgc replay: plugin:no_such.so", "give the path of your plugin"}},
       {"certify --baseline no_such.txt", {"no_such.txt: cannot read the baseline file", "give the path of a file of known deviations"}},
-      {"certify --baseline bad_baseline.txt", {"bad_baseline.txt:3:3: unknown clause id 'BONE-FORREST-1'", "use an id that `vgc clauses` lists"}},
+      {"certify --baseline bad_baseline.txt", {"bad_baseline.txt:3:3: unknown clause id 'BONE-FORREST-1'", "clauses` lists (one clause id, then the reason, per line)"}},
       {"certify --baseline no_reason.txt", {"no_reason.txt:1:13: clause LAYER-BASE-2 needs a reason", "write why"}},
       {"certify --baseline twice.txt", {"twice.txt:2:1: clause ATOMIC-1 is listed twice (first on line 1)", "keep one"}},
       {"certify --clauses 'LAYER-*,BONEE-*'", {"--clauses pattern 'BONEE-*' matches no clause id", "`vgc clauses` lists them"}},
