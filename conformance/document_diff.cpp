@@ -11,9 +11,8 @@
 #include "snapshot.h"
 
 namespace vgc {
-namespace {
 
-std::vector<std::string> words(const std::string& line) {
+std::vector<std::string> split_words(const std::string& line) {
   std::vector<std::string> out;
   std::istringstream in(line);
   std::string w;
@@ -21,8 +20,10 @@ std::vector<std::string> words(const std::string& line) {
   return out;
 }
 
+namespace {
+
 std::string first_word(const std::string& line) {
-  const auto w = words(line);
+  const auto w = split_words(line);
   return w.empty() ? std::string() : w[0];
 }
 
@@ -35,7 +36,7 @@ bool close(double a, double b) {
 // "bone_pose <id> px py pz qx qy qz qw": same id, positions close, and the
 // rotations close up to sign.
 bool poses_match(const std::string& a, const std::string& b) {
-  const auto wa = words(a), wb = words(b);
+  const auto wa = split_words(a), wb = split_words(b);
   if (wa.size() != 9 || wb.size() != 9 || wa[0] != "bone_pose" || wb[0] != "bone_pose" || wa[1] != wb[1])
     return false;
   double va[7], vb[7];
@@ -68,7 +69,7 @@ std::string comparable_line(const std::string& line) {
   std::size_t used = 0, error_at = 0;
   if (!parse_quoted(std::string_view(line).substr(id_end + 1), &name, &used, &error_at)) return line;
   const std::size_t name_end = id_end + 1 + used;
-  auto w = words(line.substr(name_end));
+  auto w = split_words(line.substr(name_end));
   if (w.size() != 4 || name_end >= line.size() || line[name_end] != ' ') return line;
   std::uint8_t raw = 0;
   if (!parse_layer_type_name(w[0], &raw)) return line;
@@ -152,7 +153,7 @@ std::optional<DocumentDifference> diff_documents(const std::string& expected, co
     }
     DocumentDifference d;
     const auto key = [](const std::string& l) {
-      const auto w = words(l);
+      const auto w = split_words(l);
       return w.size() >= 2 ? w[0] + " " + w[1] : l;
     };
     if (i < e.size() && j < o.size() && key(e[i]) == key(o[j])) {

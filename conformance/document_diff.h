@@ -42,5 +42,7 @@ std::string without_subscriptions(const std::string& snapshot);
 
 // Splits on '\n' (a trailing "\r" is dropped from each line).
 std::vector<std::string> split_lines(const std::string& text);
+// The whitespace-separated words of one line.
+std::vector<std::string> split_words(const std::string& line);
 
 }  // namespace vgc

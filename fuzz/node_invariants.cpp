@@ -37,6 +37,10 @@ std::string check_base_layer(const std::map<std::uint16_t, Layer>& layers, std::
 
 }  // namespace
 
+namespace {
+std::string check_bone(const std::map<std::uint16_t, Bone>& bones, std::uint16_t id);  // below
+}  // namespace
+
 std::string check_state(const std::map<std::uint16_t, Layer>& layers,
                         const std::map<std::uint16_t, Bone>& bones) {
   // 2.6.1: the two base layers, rigidly defined.
@@ -75,21 +79,8 @@ std::string check_state(const std::map<std::uint16_t, Layer>& layers,
     }
   }
   // 2.6.3: bones form a forest (no bone is its own ancestor); names valid.
-  for (const auto& [id, bone] : bones) {
-    auto where = [&, id = id] { return "bone " + id_text(id); };
-    if (bone.id != id) return where() + " is stored under id " + id_text(bone.id);
-    if (bone.weight.empty()) return where() + " has an empty weight layer name";
-    for (const std::string* s : {&bone.weight, &bone.reference, &bone.pos_label, &bone.rot_label})
-      if (!valid_name(*s)) return where() + " has a name over 15 bytes or with a NUL";
-    // A walk longer than the number of bones has met a cycle.
-    std::size_t steps = 0;
-    for (std::uint16_t p = bone.parent;;) {
-      auto it = bones.find(p);
-      if (it == bones.end()) break;
-      if (p == id || ++steps > bones.size()) return where() + " is in a parent cycle";
-      p = it->second.parent;
-    }
-  }
+  for (const auto& entry : bones)
+    if (std::string e = check_bone(bones, entry.first); !e.empty()) return e;
   return {};
 }
 

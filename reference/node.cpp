@@ -448,6 +448,11 @@ Reason Node::apply_one(const cmd::BoneCreate& c) {
     seen.insert(p);
     p = it->second.parent;
   }
+  bones_[id] = bone_from_command(c, id);
+  return Reason::Ok;
+}
+
+Bone bone_from_command(const cmd::BoneCreate& c, std::uint16_t id) {
   Bone b;
   b.id = id;
   b.weight = c.weight;
@@ -457,8 +462,7 @@ Reason Node::apply_one(const cmd::BoneCreate& c) {
   b.pos_label = c.pos_label;
   b.rot = c.rot;
   b.rot_label = c.rot_label;
-  bones_[id] = std::move(b);
-  return Reason::Ok;
+  return b;
 }
 
 Reason Node::apply_one(const cmd::BoneDestroy& c) {

@@ -58,6 +58,10 @@ struct Bone {  // 2.6.3
   std::string rot_label;
 };
 
+// The bone a bone_create stores under `id` (the command's id, or the one
+// picked for it): every field as sent, nothing checked.
+Bone bone_from_command(const cmd::BoneCreate& c, std::uint16_t id);
+
 // Storage bounds, so that no command sequence makes the node allocate
 // without bound. A command that would pass one is rejected with LIMIT.
 struct NodeLimits {

@@ -209,16 +209,7 @@ bool VerseNodeMirror::apply(const Command& sent, std::string* error) {
             bones_.erase(c.bone_id);
             return true;
           }
-          Bone b;
-          b.id = c.bone_id;
-          b.weight = c.weight;
-          b.reference = c.reference;
-          b.parent = c.parent;
-          b.pos = c.pos;
-          b.pos_label = c.pos_label;
-          b.rot = c.rot;
-          b.rot_label = c.rot_label;
-          bones_[c.bone_id] = std::move(b);
+          bones_[c.bone_id] = bone_from_command(c, c.bone_id);
           return true;
         } else if constexpr (std::is_same_v<T, cmd::BoneDestroy>) {
           bones_.erase(c.bone_id);

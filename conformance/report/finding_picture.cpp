@@ -16,13 +16,6 @@
 namespace vgc {
 namespace {
 
-std::vector<std::string> words(const std::string& line) {
-  std::vector<std::string> out;
-  std::istringstream in(line);
-  std::string w;
-  while (in >> w) out.push_back(w);
-  return out;
-}
 
 bool read_u32(const std::vector<std::string>& w, std::size_t i, std::uint32_t* out) {
   return i < w.size() && parse_uint(w[i], 32, out);
@@ -99,7 +92,7 @@ std::string highlight_command(const Command& c, const Indexed& ix, MeshPicture* 
 // version of it marked. Returns the description.
 std::string highlight_line(const Finding& f, const Node& model, const MeshArrays& mesh, const Indexed& ix,
                            MeshPicture* pic) {
-  const std::vector<std::string> e = words(f.expected_line), o = words(f.observed_line);
+  const std::vector<std::string> e = split_words(f.expected_line), o = split_words(f.observed_line);
   const std::vector<std::string>& w = e.empty() ? o : e;
   if (w.empty()) return "";
   const std::string& kind = w[0];
@@ -190,7 +183,7 @@ std::string highlight_line(const Finding& f, const Node& model, const MeshArrays
 std::vector<Point3> refined_points(const std::string& text) {
   std::vector<Point3> out;
   for (const auto& l : split_lines(text)) {
-    const auto w = words(l);
+    const auto w = split_words(l);
     Point3 p{};
     if (w.size() == 4 && w[0] == "vertex" && read_point(w, 1, &p)) out.push_back(p);
   }
@@ -285,7 +278,7 @@ std::string highlight_normals(const Finding& f, const Node& model, const MeshArr
   auto read = [](const std::string& text) {
     std::map<std::pair<std::uint32_t, std::uint32_t>, Point3> out;
     for (const auto& l : split_lines(text)) {
-      const auto w = words(l);
+      const auto w = split_words(l);
       std::uint32_t p = 0, k = 0;
       Point3 n{};
       if (w.size() == 6 && w[0] == "corner" && read_u32(w, 1, &p) && read_u32(w, 2, &k) && read_point(w, 3, &n))
