@@ -114,6 +114,16 @@ struct Digest {
     add(s.size());
     bytes(s.data(), s.size());
   }
+  // Every field a bone_create sets (its id is the map key, added by the caller).
+  void add(const Bone& b) {
+    add(b.weight);
+    add(b.reference);
+    add(b.parent);
+    bytes(b.pos.data(), sizeof b.pos);
+    add(b.pos_label);
+    bytes(b.rot.data(), sizeof b.rot);
+    add(b.rot_label);
+  }
 };
 
 }  // namespace
@@ -142,13 +152,7 @@ std::uint64_t state_digest(const Node& node) {
   d.add(node.bones().size());
   for (const auto& [id, b] : node.bones()) {
     d.add(id);
-    d.add(b.weight);
-    d.add(b.reference);
-    d.add(b.parent);
-    d.bytes(b.pos.data(), sizeof b.pos);
-    d.add(b.pos_label);
-    d.bytes(b.rot.data(), sizeof b.rot);
-    d.add(b.rot_label);
+    d.add(b);
   }
   return d.h;
 }
@@ -342,14 +346,7 @@ std::uint64_t touched_digest(const Node& node, const Touched& t) {
     auto it = node.bones().find(b);
     d.word(it == node.bones().end() ? 0 : 1);
     if (it == node.bones().end()) continue;
-    const Bone& bone = it->second;
-    d.add(bone.weight);
-    d.add(bone.reference);
-    d.add(bone.parent);
-    d.bytes(bone.pos.data(), sizeof bone.pos);
-    d.add(bone.pos_label);
-    d.bytes(bone.rot.data(), sizeof bone.rot);
-    d.add(bone.rot_label);
+    d.add(it->second);
   }
   return d.h;
 }
