@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <memory>
 
 #include "crease.h"                 // corner_count
 #include "gen/arbitrary_command.h"  // gen_quaternion_extreme
@@ -40,6 +41,10 @@ struct View {
 
 View view_of(const Node& m) {
   View v;
+  v.vertices.reserve(m.vertices().size());
+  v.polygons.reserve(m.polygons().size());
+  v.polygon_corners.reserve(m.polygons().size());
+  v.names.reserve(m.layers().size());
   for (const auto& [id, s] : m.vertices()) v.vertices.push_back(id);
   for (const auto& [id, s] : m.polygons()) {
     v.polygons.push_back(id);
@@ -186,7 +191,8 @@ Gen<std::uint32_t> crease_value() {
 }
 
 Gen<Command> create_layer(const View& v) {
-  return gen::exec([v] {
+  return gen::exec([pv = std::make_shared<const View>(v)] {
+    const View& v = *pv;  // one copy, shared by the copies RapidCheck makes of this lambda
     cmd::LayerCreate c;
     c.layer_id = *layer_id(v);
     c.name = *layer_name(v);
@@ -199,21 +205,24 @@ Gen<Command> create_layer(const View& v) {
 }
 
 Gen<Command> destroy_layer(const View& v) {
-  return gen::exec([v] {
+  return gen::exec([pv = std::make_shared<const View>(v)] {
+    const View& v = *pv;  // one copy, shared by the copies RapidCheck makes of this lambda
     if (*uniform(0, 4) == 0) return Command{cmd::LayerCreate{*layer_id(v), "", 0, 0, 0.0}};  // wire alias
     return Command{cmd::LayerDestroy{*layer_id(v)}};
   });
 }
 
 Gen<Command> subscribe(const View& v) {
-  return gen::exec([v] {
+  return gen::exec([pv = std::make_shared<const View>(v)] {
+    const View& v = *pv;  // one copy, shared by the copies RapidCheck makes of this lambda
     if (*uniform(0, 2) == 0) return Command{cmd::LayerUnsubscribe{*layer_id(v)}};
     return Command{cmd::LayerSubscribe{*layer_id(v), *gen::weightedElement<std::uint8_t>({{5, 0}, {5, 1}, {1, 2}})}};
   });
 }
 
 Gen<Command> set_vertex(const View& v) {
-  return gen::exec([v] {
+  return gen::exec([pv = std::make_shared<const View>(v)] {
+    const View& v = *pv;  // one copy, shared by the copies RapidCheck makes of this lambda
     const std::uint32_t id = *element_id(v.vertices);
     if (*uniform(0, 3) == 0)
       return Command{cmd::VertexSetXyzReal32{0, id, static_cast<float>(*coordinate()),
@@ -223,7 +232,8 @@ Gen<Command> set_vertex(const View& v) {
 }
 
 Gen<Command> delete_vertex(const View& v) {
-  return gen::exec([v] {
+  return gen::exec([pv = std::make_shared<const View>(v)] {
+    const View& v = *pv;  // one copy, shared by the copies RapidCheck makes of this lambda
     const std::uint32_t id = *live_id(v.vertices);
     switch (*uniform(0, 3)) {
       case 0: return Command{cmd::VertexDelete{id}};
@@ -240,7 +250,8 @@ Gen<Command> delete_vertex(const View& v) {
 // 0xFFFFFFFF among the first three (POLY-CORNERS-1). A fourth corner is often
 // vertex 0 (a quad, not the unused 0xFFFFFFFF: POLY-TRIANGLE-1).
 Gen<Command> set_polygon(const View& v) {
-  return gen::exec([v] {
+  return gen::exec([pv = std::make_shared<const View>(v)] {
+    const View& v = *pv;  // one copy, shared by the copies RapidCheck makes of this lambda
     cmd::PolygonSetCornerUint32 c;
     c.layer_id = Node::kPolygonLayer;
     c.polygon_id = *element_id(v.polygons);
@@ -308,7 +319,8 @@ Gen<Command> set_polygon(const View& v) {
 // vertices for the shape, an ordinary polygon.
 Gen<Command> non_manifold_polygon(const View& v) {
   if (v.polygons.empty()) return set_polygon(v);
-  return gen::exec([v]() -> Command {
+  return gen::exec([pv = std::make_shared<const View>(v)]() -> Command {
+    const View& v = *pv;  // one copy, shared by the copies RapidCheck makes of this lambda
     std::uint32_t next = 0;
     for (std::uint32_t id : v.polygons)
       if (id == next) ++next;
@@ -357,7 +369,8 @@ Gen<Command> non_manifold_polygon(const View& v) {
 }
 
 Gen<Command> delete_polygon(const View& v) {
-  return gen::exec([v] {
+  return gen::exec([pv = std::make_shared<const View>(v)] {
+    const View& v = *pv;  // one copy, shared by the copies RapidCheck makes of this lambda
     const std::uint32_t id = *live_id(v.polygons);
     if (*uniform(0, 2) == 0) return Command{cmd::PolygonDelete{id}};
     return Command{cmd::PolygonSetCornerUint32{Node::kPolygonLayer, id, {kNone32, 0, 0, 0}}};
@@ -369,7 +382,8 @@ Gen<Command> delete_polygon(const View& v) {
 // xyz; corner uint32, real64, real32; face uint8, uint32, real64, real32) to
 // a layer of its type mostly.
 Gen<Command> write_value_of(const View& v, Gen<int> kind) {
-  return gen::exec([v, kind]() -> Command {
+  return gen::exec([pv = std::make_shared<const View>(v), kind]() -> Command {
+    const View& v = *pv;  // one copy, shared by the copies RapidCheck makes of this lambda
     switch (*kind) {
       case 0:
         return cmd::VertexSetUint32{*typed_layer(v.vertex_uint_layers, v), *live_id(v.vertices),
@@ -470,7 +484,8 @@ Gen<Command> value_step(const View& v) {
     if (!layers_of_kind(v, k).first->empty()) ready.push_back(k);
   const Gen<int> kind =
       ready.empty() ? uniform(0, 11) : gen::weightedOneOf<int>({{3, gen::elementOf(ready)}, {1, uniform(0, 11)}});
-  return gen::exec([v, kind]() -> Command {
+  return gen::exec([pv = std::make_shared<const View>(v), kind]() -> Command {
+    const View& v = *pv;  // one copy, shared by the copies RapidCheck makes of this lambda
     const int k = *kind;
     const auto [layers, type] = layers_of_kind(v, k);
     if (layers->empty() && *uniform(0, 4) != 0) return *value_layer(v, {static_cast<std::uint8_t>(type)});
@@ -503,7 +518,8 @@ Gen<Command> build_polygon(const View& v) {
 }
 
 Gen<Command> set_crease(const View& v) {
-  return gen::exec([v]() -> Command {
+  return gen::exec([pv = std::make_shared<const View>(v)]() -> Command {
+    const View& v = *pv;  // one copy, shared by the copies RapidCheck makes of this lambda
     const bool vertex = *gen::arbitrary<bool>();
     // The names of existing layers a crease could read (of the right type
     // or not), so that settings and layers meet.
@@ -543,7 +559,8 @@ Gen<Command> create_crease_layer(const View&) {
 
 // Values in whatever layers creases might name.
 Gen<Command> write_crease_values(const View& v) {
-  return gen::exec([v]() -> Command {
+  return gen::exec([pv = std::make_shared<const View>(v)]() -> Command {
+    const View& v = *pv;  // one copy, shared by the copies RapidCheck makes of this lambda
     const int kind = *uniform(0, 4);
     if (kind == 0 && !v.vertex_uint_layers.empty())
       return cmd::VertexSetUint32{*gen::elementOf(v.vertex_uint_layers), *live_id(v.vertices), *crease_value()};
@@ -572,7 +589,8 @@ Gen<double> unit_component() {
 }
 
 Gen<Command> create_bone(const View& v) {
-  return gen::exec([v]() -> Command {
+  return gen::exec([pv = std::make_shared<const View>(v)]() -> Command {
+    const View& v = *pv;  // one copy, shared by the copies RapidCheck makes of this lambda
     cmd::BoneCreate c;
     c.bone_id = *pick<std::uint16_t>(v.bones, gen::weightedOneOf<std::uint16_t>(
                                                   {{8, uniform<std::uint16_t>(0, 6)},
@@ -614,7 +632,8 @@ Gen<Command> create_bone(const View& v) {
 }
 
 Gen<Command> destroy_bone(const View& v) {
-  return gen::exec([v]() -> Command {
+  return gen::exec([pv = std::make_shared<const View>(v)]() -> Command {
+    const View& v = *pv;  // one copy, shared by the copies RapidCheck makes of this lambda
     return cmd::BoneDestroy{*pick<std::uint16_t>(v.bones, uniform<std::uint16_t>(0, 6))};
   });
 }
@@ -623,7 +642,8 @@ Gen<Command> destroy_bone(const View& v) {
 // a weight layer that exists when there is one, no reference layer, a live
 // parent or none, plain values; so that the pick itself is what is judged.
 Gen<Command> pick_bone(const View& v) {
-  return gen::exec([v]() -> Command {
+  return gen::exec([pv = std::make_shared<const View>(v)]() -> Command {
+    const View& v = *pv;  // one copy, shared by the copies RapidCheck makes of this lambda
     cmd::BoneCreate c;
     c.bone_id = kNone16;
     std::vector<std::string> weights = v.vertex_uint_names;
@@ -649,18 +669,27 @@ Gen<Command> bone_layer(const View&) {
 }  // namespace
 
 Gen<Command> gen_command(const Node& model, Focus focus) {
-  const View v = view_of(model);
+  // One View, shared by the alternatives; each alternative is built only
+  // if drawn (gen::lazy). The draws are the same as building all of them
+  // first: weightedOneOf picks by weight, then runs the picked one with
+  // the same random source. Building all, each copying what it needs of
+  // the View, was most of a fuzz_property_* run (docs/fuzzing.md).
+  const auto shared = std::make_shared<const View>(view_of(model));
+  const View& v = *shared;
+  const auto L = [&shared](Gen<Command> (*make)(const View&)) -> Gen<Command> {
+    return rc::gen::lazy([shared, make] { return make(*shared); });
+  };
   using W = std::pair<std::size_t, Gen<Command>>;
   switch (focus) {
     case Focus::Layers:
-      return rc::gen::weightedOneOf<Command>({W{6, create_layer(v)}, W{3, destroy_layer(v)}, W{2, subscribe(v)},
-                                          W{4, set_vertex(v)}, W{2, delete_vertex(v)}, W{3, build_polygon(v)},
-                                          W{1, delete_polygon(v)}, W{2, value_step(v)}});
+      return rc::gen::weightedOneOf<Command>({W{6, L(create_layer)}, W{3, L(destroy_layer)}, W{2, L(subscribe)},
+                                          W{4, L(set_vertex)}, W{2, L(delete_vertex)}, W{3, L(build_polygon)},
+                                          W{1, L(delete_polygon)}, W{2, L(value_step)}});
     case Focus::Polygons:
-      return rc::gen::weightedOneOf<Command>({W{6, set_vertex(v)}, W{2, delete_vertex(v)}, W{7, build_polygon(v)},
-                                          W{v.polygons.empty() ? 1u : 4u, delete_polygon(v)}, W{1, create_layer(v)},
-                                          W{v.polygons.empty() ? 0u : 3u, value_step(v)},
-                                          W{v.polygons.empty() ? 0u : 2u, non_manifold_polygon(v)}});
+      return rc::gen::weightedOneOf<Command>({W{6, L(set_vertex)}, W{2, L(delete_vertex)}, W{7, L(build_polygon)},
+                                          W{v.polygons.empty() ? 1u : 4u, L(delete_polygon)}, W{1, L(create_layer)},
+                                          W{v.polygons.empty() ? 0u : 3u, L(value_step)},
+                                          W{v.polygons.empty() ? 0u : 2u, L(non_manifold_polygon)}});
     case Focus::Creases: {
       // A crease rule is seen only in a state with all of: polygons, a
       // crease layer, a setting naming it, and unequal values in it (equal
@@ -672,14 +701,14 @@ Gen<Command> gen_command(const Node& model, Focus focus) {
                  crease_layers = !v.corner_uint_layers.empty() && !v.vertex_uint_layers.empty();
       const std::size_t write = mesh && (named_edge || named_vertex) ? 10 : 3;
       return rc::gen::weightedOneOf<Command>(
-          {W{v.vertices.size() >= 4 ? 3u : 6u, set_vertex(v)}, W{mesh ? 3u : 6u, build_polygon(v)},
-           W{named_edge && named_vertex ? 2u : 4u, set_crease(v)}, W{crease_layers ? 1u : 3u, create_crease_layer(v)},
-           W{write, write_crease_values(v)}, W{1, destroy_layer(v)}, W{1, delete_vertex(v)},
-           W{mesh ? 1u : 0u, value_step(v)}, W{mesh ? 2u : 0u, non_manifold_polygon(v)}});
+          {W{v.vertices.size() >= 4 ? 3u : 6u, L(set_vertex)}, W{mesh ? 3u : 6u, L(build_polygon)},
+           W{named_edge && named_vertex ? 2u : 4u, L(set_crease)}, W{crease_layers ? 1u : 3u, L(create_crease_layer)},
+           W{write, L(write_crease_values)}, W{1, L(destroy_layer)}, W{1, L(delete_vertex)},
+           W{mesh ? 1u : 0u, L(value_step)}, W{mesh ? 2u : 0u, L(non_manifold_polygon)}});
     }
     case Focus::Bones:
-      return rc::gen::weightedOneOf<Command>({W{2, bone_layer(v)}, W{6, create_bone(v)}, W{2, destroy_bone(v)},
-                                          W{1, destroy_layer(v)}, W{1, set_vertex(v)}});
+      return rc::gen::weightedOneOf<Command>({W{2, L(bone_layer)}, W{6, L(create_bone)}, W{2, L(destroy_bone)},
+                                          W{1, L(destroy_layer)}, W{1, L(set_vertex)}});
     case Focus::Values: {
       // Cases are short (certify draws 1..size+1 commands, size up to 50):
       // weigh toward the missing piece of a landing write (vertices, a
@@ -690,21 +719,21 @@ Gen<Command> gen_command(const Node& model, Focus focus) {
                                 !v.face_u32_layers.empty() + !v.face_real_layers.empty();
       const bool mesh = !v.polygons.empty();
       return rc::gen::weightedOneOf<Command>(
-          {W{1, create_layer(v)}, W{types == 0 ? 2u : 1u, create_value_layer(v)}, W{1, set_vertex(v)},
-           W{mesh ? 1u : 8u, build_polygon(v)}, W{16, value_step(v)}});
+          {W{1, L(create_layer)}, W{types == 0 ? 2u : 1u, L(create_value_layer)}, W{1, L(set_vertex)},
+           W{mesh ? 1u : 8u, L(build_polygon)}, W{16, L(value_step)}});
     }
     case Focus::Ids:
-      return rc::gen::weightedOneOf<Command>({W{3, create_layer(v)}, W{4, set_vertex(v)}, W{3, build_polygon(v)},
-                                          W{2, create_bone(v)}, W{2, pick_bone(v)}, W{1, bone_layer(v)},
-                                          W{2, delete_vertex(v)}});
+      return rc::gen::weightedOneOf<Command>({W{3, L(create_layer)}, W{4, L(set_vertex)}, W{3, L(build_polygon)},
+                                          W{2, L(create_bone)}, W{2, L(pick_bone)}, W{1, L(bone_layer)},
+                                          W{2, L(delete_vertex)}});
     case Focus::Anything:
       break;
   }
   return rc::gen::weightedOneOf<Command>(
-      {W{2, create_layer(v)}, W{1, create_value_layer(v)}, W{2, destroy_layer(v)}, W{1, subscribe(v)}, W{4, set_vertex(v)},
-       W{2, delete_vertex(v)}, W{4, build_polygon(v)}, W{2, delete_polygon(v)}, W{4, value_step(v)},
-       W{2, set_crease(v)}, W{1, create_crease_layer(v)}, W{2, create_bone(v)}, W{1, destroy_bone(v)},
-       W{1, bone_layer(v)}});
+      {W{2, L(create_layer)}, W{1, L(create_value_layer)}, W{2, L(destroy_layer)}, W{1, L(subscribe)}, W{4, L(set_vertex)},
+       W{2, L(delete_vertex)}, W{4, L(build_polygon)}, W{2, L(delete_polygon)}, W{4, L(value_step)},
+       W{2, L(set_crease)}, W{1, L(create_crease_layer)}, W{2, L(create_bone)}, W{1, L(destroy_bone)},
+       W{1, L(bone_layer)}});
 }
 
 }  // namespace vgc

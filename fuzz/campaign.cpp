@@ -462,7 +462,11 @@ int run_campaign(const CampaignOptions& o, CampaignSummary* out) {
                                    "-seed=" + std::to_string(o.seed),
                                    "-artifact_prefix=" + crashes.string() + "/",
                                    "-print_final_stats=1",
-                                   "-max_len=" + std::to_string(o.max_len)};
+                                   "-max_len=" + std::to_string(o.max_len),
+                                   // An input still running after 10 s is a hang, saved as
+                                   // a timeout-* finding (libFuzzer's default waits 20 min,
+                                   // longer than most campaigns).
+                                   "-timeout=10"};
   if (!o.stop_at_first) argv.insert(argv.begin() + 2, "-ignore_crashes=1");
   // --stop-at-first in fork mode: the campaign stops the jobs itself as
   // soon as a crash input is saved.

@@ -1,15 +1,18 @@
 // command_mutator.cpp — see command_mutator.h.
 #include "command_mutator.h"
 
+#include <algorithm>
 #include <cfloat>
 #include <cstring>
 #include <limits>
 #include <random>
 #include <string>
+#include <string_view>
 #include <type_traits>
 
 #include "command_binary.h"
 #include "command_fields.h"
+#include "node.h"
 
 namespace vgc::fuzz {
 namespace {
@@ -160,13 +163,141 @@ void mutate_field(Rng& rng, Command& c) {
       c);
 }
 
+// The ids the stream itself creates, by kind. A rule shows only on a state
+// whose ids match (a polygon on live vertices, a slot write to a live layer,
+// a bone under a live bone); edits that pick ids from the value pools
+// above make such a state rarely, and from an empty corpus the faults that
+// need a polygon were not found within 60 s (docs/fuzzing.md "Time to
+// find"). link_ids and insert_polygon build it directly.
+struct StreamIds {
+  std::vector<std::uint32_t> layers{Node::kVertexLayer, Node::kPolygonLayer}, vertices, polygons, bones;
+};
+
+StreamIds ids_of(const std::vector<Command>& cs) {
+  StreamIds ids;
+  for (const Command& c : cs) {
+    if (const auto* l = std::get_if<cmd::LayerCreate>(&c)) ids.layers.push_back(l->layer_id);
+    if (const auto* v = std::get_if<cmd::VertexSetXyzReal64>(&c)) ids.vertices.push_back(v->vertex_id);
+    if (const auto* v = std::get_if<cmd::VertexSetXyzReal32>(&c)) ids.vertices.push_back(v->vertex_id);
+    if (const auto* p = std::get_if<cmd::PolygonSetCornerUint32>(&c); p && p->layer_id == Node::kPolygonLayer)
+      ids.polygons.push_back(p->polygon_id);
+    if (const auto* b = std::get_if<cmd::BoneCreate>(&c)) ids.bones.push_back(b->bone_id);
+  }
+  return ids;
+}
+
+// Points one id field of `c` at an id the stream creates: layer_id at a
+// layer, vertex_id at a vertex, polygon_id at a polygon, bone_id and parent
+// at a bone, a polygon's corners at distinct vertices. Nothing to point at:
+// no change.
+struct IdLinker {
+  Rng& rng;
+  const StreamIds& ids;
+  std::size_t target;
+  std::size_t index = 0;
+  template <class T> void operator()(const char* name, T& v, FieldHint) {
+    if (!linkable(name)) return;
+    if (index++ != target) return;
+    const std::string_view n(name);
+    if constexpr (std::is_integral_v<T>) {
+      const auto& pool = n == "layer_id" ? ids.layers
+                         : n == "vertex_id" ? ids.vertices
+                         : n == "polygon_id" ? ids.polygons
+                                             : ids.bones;
+      if (!pool.empty()) v = static_cast<T>(pool[below(rng, pool.size())]);
+    } else if constexpr (std::is_same_v<T, std::array<std::uint32_t, 4>>) {
+      std::vector<std::uint32_t> pool = ids.vertices;
+      std::sort(pool.begin(), pool.end());
+      pool.erase(std::unique(pool.begin(), pool.end()), pool.end());
+      if (pool.size() < 3) return;
+      const std::size_t n_corners = pool.size() >= 4 && below(rng, 2) ? 4 : 3;
+      v = {kNone32, kNone32, kNone32, kNone32};
+      for (std::size_t i = 0; i < n_corners; ++i) {
+        const std::size_t k = below(rng, pool.size());
+        v[i] = pool[k];
+        pool.erase(pool.begin() + static_cast<std::ptrdiff_t>(k));
+      }
+    }
+  }
+  static bool linkable(std::string_view n) {
+    return n == "layer_id" || n == "vertex_id" || n == "polygon_id" || n == "bone_id" || n == "parent" || n == "v";
+  }
+};
+
+struct LinkableCounter {
+  std::size_t n = 0;
+  template <class T> void operator()(const char* name, T&, FieldHint) {
+    if (!IdLinker::linkable(name)) return;
+    if constexpr (std::is_integral_v<T> || std::is_same_v<T, std::array<std::uint32_t, 4>>) ++n;
+  }
+};
+
+void link_ids(Rng& rng, std::vector<Command>* cs) {
+  if (cs->empty()) return;
+  const StreamIds ids = ids_of(*cs);
+  Command& c = (*cs)[below(rng, cs->size())];
+  std::visit(
+      [&](auto& x) {
+        LinkableCounter count;
+        visit_fields(x, count);
+        if (count.n > 0) visit_fields(x, IdLinker{rng, ids, below(rng, count.n)});
+      },
+      c);
+}
+
+// Three or four vertices at small ids and, right after them, a polygon on
+// them: the smallest state where polygon, corner-layer and crease rules show.
+void insert_polygon(Rng& rng, std::vector<Command>* cs) {
+  const std::size_t n = below(rng, 2) ? 3 : 4;
+  const std::uint32_t base = static_cast<std::uint32_t>(below(rng, 6));
+  std::vector<Command> piece;
+  cmd::PolygonSetCornerUint32 p;
+  p.layer_id = Node::kPolygonLayer;
+  p.polygon_id = static_cast<std::uint32_t>(below(rng, 4));
+  p.v = {kNone32, kNone32, kNone32, kNone32};
+  for (std::size_t i = 0; i < n; ++i) {
+    cmd::VertexSetXyzReal64 v;
+    v.layer_id = Node::kVertexLayer;
+    v.vertex_id = base + static_cast<std::uint32_t>(i);
+    v.x = static_cast<double>(i == 1 || i == 2);
+    v.y = static_cast<double>(i >= 2);
+    v.z = static_cast<double>(below(rng, 3));
+    piece.emplace_back(v);
+    p.v[i] = v.vertex_id;
+  }
+  piece.emplace_back(p);
+  cs->insert(cs->begin() + static_cast<std::ptrdiff_t>(below(rng, cs->size() + 1)), piece.begin(), piece.end());
+}
+
+// A vertex weight layer and a bone on it whose parent is a bone the stream
+// creates (or, with none yet, a small id): bone hierarchies, cycles and
+// poses need a bone the node accepts, which needs a weight layer by name.
+void insert_bone(Rng& rng, std::vector<Command>* cs) {
+  const StreamIds ids = ids_of(*cs);
+  cmd::LayerCreate layer;
+  layer.layer_id = static_cast<std::uint16_t>(2 + below(rng, 4));
+  layer.name = below(rng, 2) ? "weight" : "w";
+  layer.type = static_cast<std::uint8_t>(below(rng, 2) ? LayerType::VertexReal : LayerType::VertexUint32);
+  cmd::BoneCreate bone;
+  bone.bone_id = static_cast<std::uint16_t>(below(rng, 4));
+  bone.weight = layer.name;
+  bone.parent = ids.bones.empty() || below(rng, 4) == 0 ? static_cast<std::uint16_t>(below(rng, 4))
+                                                        : static_cast<std::uint16_t>(ids.bones[below(rng, ids.bones.size())]);
+  bone.pos = {static_cast<double>(below(rng, 3)), 0, 0};
+  const std::size_t at = below(rng, cs->size() + 1);
+  cs->insert(cs->begin() + static_cast<std::ptrdiff_t>(at), Command{bone});
+  cs->insert(cs->begin() + static_cast<std::ptrdiff_t>(at), Command{layer});
+}
+
 std::size_t encode_into(const std::vector<Command>& cs, std::uint8_t* out, std::size_t max_out) {
   std::string bytes;
   for (const Command& c : cs) {
-    std::string one;
-    if (!encode_command(c, &one)) continue;
-    if (bytes.size() + one.size() > max_out) break;
-    bytes += one;
+    const std::size_t before = bytes.size();
+    if (!encode_command(c, &bytes)) continue;
+    if (bytes.size() > max_out) {
+      bytes.resize(before);
+      break;
+    }
   }
   if (!bytes.empty()) std::memcpy(out, bytes.data(), bytes.size());
   return bytes.size();
@@ -179,9 +310,19 @@ void mutate_commands(std::vector<Command>* cs, unsigned seed) {
   const std::size_t edits = 1 + below(rng, 3);
   for (std::size_t e = 0; e < edits; ++e) {
     const std::size_t n = cs->size();
-    switch (n == 0 ? 0 : below(rng, 6)) {
+    static const std::size_t kFromNothing[] = {0, 7, 8};  // an empty stream: only what adds
+    switch (n == 0 ? kFromNothing[below(rng, 3)] : below(rng, 9)) {
       case 0:  // insert a new command
         cs->insert(cs->begin() + static_cast<std::ptrdiff_t>(below(rng, n + 1)), random_command(rng));
+        break;
+      case 6:  // point an id field at an id the stream creates
+        link_ids(rng, cs);
+        break;
+      case 7:  // insert vertices and a polygon on them
+        insert_polygon(rng, cs);
+        break;
+      case 8:  // insert a weight layer and a bone on it
+        insert_bone(rng, cs);
         break;
       case 1:  // delete one
         cs->erase(cs->begin() + static_cast<std::ptrdiff_t>(below(rng, n)));

@@ -7,9 +7,11 @@
 // Rationale: byte-level mutation of a stream mostly breaks its framing (a
 // length byte, a tag), so most mutants decode to a short prefix. These
 // functions decode the stream into commands, change it at the command level
-// (insert, delete, duplicate, swap, or change one field through the
-// visit_fields schema) and re-encode it, so every mutant is a well-formed
-// stream. Values are biased towards what finds bugs in this node: small ids
+// (insert, delete, duplicate, swap, change one field through the
+// visit_fields schema, point an id field at an id the stream creates,
+// insert vertices with a polygon on them, or a weight layer with a bone on
+// it) and re-encode it, so every mutant
+// is a well-formed stream. Values are biased towards what finds bugs in this node: small ids
 // (they hit live elements), the all-ones sentinels, FLT_MAX / DBL_MAX (the
 // delete forms), NaN, infinities, -0.0, and a small pool of layer names that
 // creases and bones can refer to. Deterministic: same input and seed, same

@@ -23,6 +23,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "command_binary.h"
@@ -69,14 +70,15 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   std::vector<bool> applied;
   bool suspect = false;  // a cheap check failed: localize
   std::size_t pos = 0;
+  std::string encoded;  // one buffer for the whole input
   for (;;) {
     const std::size_t start = pos;
     Command c;
     if (decode_command(data, size, &pos, &c) != DecodeStatus::Ok) break;
     done.push_back(c);
-    std::string encoded;
+    encoded.clear();
     if (!encode_command(c, &encoded) ||
-        encoded != std::string(reinterpret_cast<const char*>(data + start), pos - start))
+        std::string_view(encoded) != std::string_view(reinterpret_cast<const char*>(data + start), pos - start))
       fuzz::report_finding(kTarget, "re-encoding a decoded command changed its bytes", done);
     const fuzz::Touched t = fuzz::touched_by(c);
     const std::uint64_t before = fuzz::touched_digest(node, t);

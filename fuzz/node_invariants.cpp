@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
-#include <set>
 #include <string_view>
 #include <type_traits>
 
@@ -39,6 +38,21 @@ std::string check_base_layer(const std::map<std::uint16_t, Layer>& layers, std::
 
 namespace {
 std::string check_bone(const std::map<std::uint16_t, Bone>& bones, std::uint16_t id);  // below
+
+// The layer names seen so far in one check, in id order: a linear scan of
+// a vector kept between calls (a node holds tens of layers; a std::set
+// here was a seventh of a fuzz_stream run, an allocation per layer per
+// command). Cleared on each call.
+std::vector<std::string_view>& names_seen() {
+  thread_local std::vector<std::string_view> names;
+  names.clear();
+  return names;
+}
+bool seen_before(std::vector<std::string_view>& seen, std::string_view name) {
+  if (std::find(seen.begin(), seen.end(), name) != seen.end()) return true;
+  seen.push_back(name);
+  return false;
+}
 }  // namespace
 
 std::string check_state(const std::map<std::uint16_t, Layer>& layers,
@@ -50,7 +64,7 @@ std::string check_state(const std::map<std::uint16_t, Layer>& layers,
   const auto& vertices = layers.at(Node::kVertexLayer).slots;
   const auto& polygons = layers.at(Node::kPolygonLayer).slots;
 
-  std::set<std::string_view> names;
+  std::vector<std::string_view>& names = names_seen();
   for (const auto& [id, layer] : layers) {
     auto where = [&, id = id] { return "layer " + id_text(id); };
     if (layer.id != id) return where() + " is stored under id " + id_text(layer.id);
@@ -58,7 +72,7 @@ std::string check_state(const std::map<std::uint16_t, Layer>& layers,
     // README: names of at most 15 visible bytes; decision: unique, non-empty.
     if (layer.name.empty()) return where() + " has an empty name";
     if (!valid_name(layer.name)) return where() + " has a name over 15 bytes or with a NUL";
-    if (!names.insert(layer.name).second) return where() + " repeats the name \"" + layer.name + "\"";
+    if (seen_before(names, layer.name)) return where() + " repeats the name \"" + layer.name + "\"";
     // 2.6.1: a layer's size "is controlled by the size of the base layer".
     const auto& base = is_vertex_layer_type(layer.type) ? vertices : polygons;
     if (!same_ids(layer.slots, base)) return where() + " does not hold exactly the live ids of its base layer";
@@ -182,14 +196,14 @@ std::string check_layer_headers(const std::map<std::uint16_t, Layer>& layers) {
     return e;
   const std::size_t nv = layers.at(Node::kVertexLayer).slots.size();
   const std::size_t np = layers.at(Node::kPolygonLayer).slots.size();
-  std::set<std::string_view> names;
+  std::vector<std::string_view>& names = names_seen();
   for (const auto& [id, layer] : layers) {
     auto where = [&, id = id] { return "layer " + id_text(id); };
     if (layer.id != id) return where() + " is stored under id " + id_text(layer.id);
     if (!is_layer_type(static_cast<std::uint8_t>(layer.type))) return where() + " has no valid type";
     if (layer.name.empty()) return where() + " has an empty name";
     if (!valid_name(layer.name)) return where() + " has a name over 15 bytes or with a NUL";
-    if (!names.insert(layer.name).second) return where() + " repeats the name \"" + layer.name + "\"";
+    if (seen_before(names, layer.name)) return where() + " repeats the name \"" + layer.name + "\"";
     if (layer.slots.size() != (is_vertex_layer_type(layer.type) ? nv : np))
       return where() + " does not hold exactly the live ids of its base layer";
   }

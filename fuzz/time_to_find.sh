@@ -5,9 +5,15 @@
 # corpus and from an empty corpus: the median over the seeds, each run
 # capped. Prints a Markdown table (docs/fuzzing.md "Time to find").
 #
-#   fuzz/time_to_find.sh [--cap S] [--seeds "1 2 3"] [--faults "a b ..."]
+#   fuzz/time_to_find.sh [--target differential|mesh_subdivision] [--cap S]
+#                        [--seeds "1 2 3"] [--faults "a b ..."]
 #                        [--corpora "committed empty"] [--vgc VGC] [--plugin SO]
 #                        [--fuzz-build DIR]
+#
+# --target mesh_subdivision times the mesh subdivision target instead, on
+# the seeded faults of the reference's subdivision (VGC_FUZZ_MESH_FAULT,
+# fuzz/fuzz_mesh_subdivision.cpp: every one by default); its findings are
+# disagreements with OpenSubdiv, named by scheme, not by clause.
 #
 # Defaults: cap 120 s, seeds 1 2 3, both corpora, every fault the
 # differential target can reach (see below), build/cli/vgc,
@@ -22,18 +28,21 @@
 #
 # Faults left out unless named with --faults, and why: the capability
 # faults (subdivision-ignores-creases, classify-misses-boundary,
-# normals-flat, loop-warren-weights, edit-holes-ignored): the differential
-# target sends commands only, no capability request; wrong-reason-codes: a
+# normals-flat, loop-warren-weights, edit-holes-ignored,
+# subdivision-non-manifold-smooth, loop-edges-by-vertex-pair): the
+# differential target sends commands only, no capability request (the mesh
+# targets and certify judge them); wrong-reason-codes: a
 # SHOULD-level difference, a note and never a finding; pick-highest-layer-id:
 # an implementation choice the check follows (implementation_choice.h).
 set -u
 root="$(cd "$(dirname "$0")/.." && pwd)"
-cap=120 seeds="1 2 3" faults="" corpora="committed empty"
+cap=120 seeds="1 2 3" faults="" corpora="committed empty" target=differential
 vgc="$root/build/cli/vgc" plugin="$root/build/tests/conformance/libvgc_fault_plugin.so"
 fuzz_build="${VGC_FUZZ_BUILD_DIR:-$root/build-fuzz}"
 while [ $# -gt 0 ]; do
   case "$1" in
     --cap) cap=$2; shift 2 ;;
+    --target) target=$2; shift 2 ;;
     --seeds) seeds=$2; shift 2 ;;
     --faults) faults=$2; shift 2 ;;
     --corpora) corpora=$2; shift 2 ;;
@@ -46,10 +55,19 @@ done
 table="$root/tests/conformance/faults/faulty_node.cpp"
 [ -x "$vgc" ] || { echo "time_to_find: no vgc at $vgc (build it, or --vgc)" >&2; exit 2; }
 [ -f "$plugin" ] || { echo "time_to_find: no fault plugin at $plugin (build vgc_fault_plugin, or --plugin)" >&2; exit 2; }
-[ -x "$fuzz_build/fuzz/fuzz_differential" ] || { echo "time_to_find: no $fuzz_build/fuzz/fuzz_differential" >&2; exit 2; }
+[ -x "$fuzz_build/fuzz/fuzz_$target" ] || { echo "time_to_find: no $fuzz_build/fuzz/fuzz_$target" >&2; exit 2; }
 expected_clause() { sed -nE "s/^ *\\{\"$1\", \"([^\"]*)\".*/\\1/p" "$table" | head -1; }
+case "$target" in
+  differential) fault_var=VGC_FAULT impl=(--impl "plugin:$plugin") ;;
+  mesh_subdivision)
+    fault_var=VGC_FUZZ_MESH_FAULT impl=()
+    expected_clause() { :; }
+    [ -n "$faults" ] || faults=$(sed -nE 's/.*fault == "([a-z-]+)".*/\1/p' "$root/fuzz/fuzz_mesh_subdivision.cpp" | tr '\n' ' ')
+    ;;
+  *) echo "time_to_find: --target is differential or mesh_subdivision, not $target" >&2; exit 2 ;;
+esac
 if [ -z "$faults" ]; then
-  skip=" none subdivision-ignores-creases classify-misses-boundary normals-flat loop-warren-weights edit-holes-ignored wrong-reason-codes pick-highest-layer-id "
+  skip=" none subdivision-ignores-creases classify-misses-boundary normals-flat loop-warren-weights edit-holes-ignored subdivision-non-manifold-smooth loop-edges-by-vertex-pair wrong-reason-codes pick-highest-layer-id "
   for f in $(sed -nE 's/^ *\{"([a-z0-9-]+)", "[^"]*", "[a-z]+".*/\1/p' "$table"); do
     case "$skip" in *" $f "*) ;; *) faults="$faults $f" ;; esac
   done
@@ -57,7 +75,7 @@ fi
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 median() { sort -n | awk '{ v[NR] = $1 } END { if (NR == 0) print "?"; else if (NR % 2) print v[(NR + 1) / 2]; else print (v[NR / 2] + v[NR / 2 + 1]) / 2 }'; }
-echo "time_to_find: cap $cap s, seeds $seeds, corpora $corpora; $(uptime)" >&2
+echo "time_to_find: fuzz_$target, cap $cap s, seeds $seeds, corpora $corpora; $(uptime)" >&2
 header="| fault | clause found |"
 rule="|---|---|"
 for c in $corpora; do header="$header $c corpus: median s (runs) |"; rule="$rule---|"; done
@@ -73,7 +91,7 @@ for f in $faults; do
     for s in $seeds; do
       extra=""
       [ "$c" = empty ] && extra="--empty-corpus"
-      VGC_FAULT="$f" "$vgc" fuzz differential --impl "plugin:$plugin" --seed "$s" --time "$cap" --stop-at-first \
+      env "$fault_var=$f" "$vgc" fuzz "$target" "${impl[@]}" --seed "$s" --time "$cap" --stop-at-first \
         --jobs 1 $extra --fuzz-build "$fuzz_build" --source-dir "$root" >"$work/out" 2>&1
       summary=$(sed -n 's/^summary: //p' "$work/out" | tail -1)
       t=$(python3 - "$summary" "$cap" <<'PY' 2>/dev/null

@@ -105,12 +105,16 @@ const char* decode_status_name(DecodeStatus s) {
 }
 
 bool encode_command(const Command& c, std::string* out) {
-  std::string buf;
-  buf += static_cast<char>(c.index());
-  Encoder e{buf};
+  // Appended in place, taken back on failure (no buffer of its own: the
+  // fuzz targets encode every command they run).
+  const std::size_t start = out->size();
+  *out += static_cast<char>(c.index());
+  Encoder e{*out};
   std::visit([&](const auto& x) { visit_fields_const(x, e); }, c);
-  if (!e.ok) return false;
-  *out += buf;
+  if (!e.ok) {
+    out->resize(start);
+    return false;
+  }
   return true;
 }
 
@@ -129,6 +133,7 @@ DecodeStatus decode_command(const std::uint8_t* data, std::size_t size, std::siz
 }
 
 DecodeStatus decode_commands(const std::uint8_t* data, std::size_t size, std::vector<Command>* out) {
+  out->reserve(out->size() + size / 8);  // most commands take 8 bytes or more
   std::size_t pos = 0;
   for (;;) {
     Command c;

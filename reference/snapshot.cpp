@@ -16,10 +16,16 @@ std::string u16(std::uint16_t v) { return format_uint(v, 16); }
 std::string slot_values(LayerType type, const Slot& s) {
   std::string out;
   auto reals = [&](int n) {
-    for (int i = 0; i < n; ++i) out += " " + format_f64(s.r[i]);
+    for (int i = 0; i < n; ++i) {
+      out += ' ';
+      out += format_f64(s.r[i]);
+    }
   };
   auto uints = [&](int n, int bits) {
-    for (int i = 0; i < n; ++i) out += " " + format_uint(s.u[i], bits);
+    for (int i = 0; i < n; ++i) {
+      out += ' ';
+      out += format_uint(s.u[i], bits);
+    }
   };
   switch (type) {
     case LayerType::VertexXyz: reals(3); break;
@@ -63,6 +69,7 @@ std::string print_snapshot(const SnapshotParts& node) {
     return it == node.layers.end() ? kNone : it->second.slots;
   };
   std::string out = "vgc-snapshot 1\n";
+  out.reserve(4096);
   for (const auto& [id, layer] : node.layers) {
     const UsedDefaults used = used_defaults(id, layer.type);
     out += "layer " + u16(id) + " " + format_quoted(layer.name) + " " +
