@@ -468,13 +468,24 @@ int run_campaign(const CampaignOptions& o, CampaignSummary* out) {
                                    // longer than most campaigns).
                                    "-timeout=10"};
   if (!o.stop_at_first) argv.insert(argv.begin() + 2, "-ignore_crashes=1");
-  // --stop-at-first in fork mode: the campaign stops the jobs itself as
-  // soon as a crash input is saved.
+  // --stop-at-first in fork mode: the campaign stops the jobs itself once
+  // a crash input is saved (one plain job stops there by itself). Saved
+  // means written whole: not empty and untouched for a second. Stopping at
+  // the first directory entry killed libFuzzer between its fopen and its
+  // fwrite now and then, which left an empty input that replayed to
+  // nothing ("did not reproduce").
   std::function<bool()> stop_now;
-  if (o.stop_at_first)
+  if (o.stop_at_first && !plain)
     stop_now = [crashes] {
       std::error_code e;
-      return fs::directory_iterator(crashes, e) != fs::directory_iterator();
+      const auto now = fs::file_time_type::clock::now();
+      for (const auto& f : fs::directory_iterator(crashes, e)) {
+        std::error_code fe;
+        if (!f.is_regular_file(fe) || f.file_size(fe) == 0 || fe) continue;
+        const auto written = f.last_write_time(fe);
+        if (!fe && now - written >= std::chrono::seconds(1)) return true;
+      }
+      return false;
     };
   if (fs::exists(dict)) argv.push_back("-dict=" + dict.string());
   argv.push_back(corpus.string());
