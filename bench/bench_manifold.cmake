@@ -1,4 +1,4 @@
-# bench_manifold: reference/mesh_topology vs oracles/cgal_manifold (and the
+# bench_manifold: reference/geometry/mesh_topology vs oracles/cgal_manifold (and the
 # reference's split normals) on a ~100k-face mesh. Run: build-*/bench/bench_manifold
 if(NOT TARGET bench_manifold AND TARGET vgc_oracle_cgal)
   add_executable(bench_manifold ${CMAKE_CURRENT_LIST_DIR}/bench_manifold.cpp)

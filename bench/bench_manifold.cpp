@@ -1,4 +1,4 @@
-// bench_manifold.cpp — how long the reference (reference/mesh_topology.h)
+// bench_manifold.cpp — how long the reference (reference/geometry/mesh_topology.h)
 // and CGAL (oracles/cgal_manifold.h) take to classify a closed quad torus
 // of 320 x 320 = 102400 faces, and the reference's split normals on it.
 // A timing executable, not a test: run build-*/bench/bench_manifold.

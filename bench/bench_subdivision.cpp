@@ -1,5 +1,5 @@
 // bench_subdivision.cpp — not a test: times the reference Catmull-Clark
-// (reference/catmull_clark.h) against OpenSubdiv (oracles/osd_subdivision.h)
+// (reference/geometry/catmull_clark.h) against OpenSubdiv (oracles/osd_subdivision.h)
 // refining a 100k-face mesh (a 400 x 250 quad torus with a few creases) to
 // level 2. Usage: bench_subdivision [levels] [repeats]
 #include <algorithm>

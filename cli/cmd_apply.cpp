@@ -10,6 +10,7 @@
 #include <memory>
 
 #include "command_text.h"
+#include "derived_document.h"
 #include "node.h"
 #include "read_file.h"
 #include "snapshot.h"

@@ -8,7 +8,8 @@
 // the implementation.
 //
 // Spec: docs/adapters.md "The exec protocol"; command lines are the text
-// language of docs/commands.md, documents those of snapshot.h.
+// language of docs/commands.md, documents those of snapshot.h and
+// derived_document.h.
 //
 // Rationale: this is how the reference is certified through the exec route
 // (`--impl exec:'vgc serve'`) and how a plugin runs isolated in a child

@@ -4,6 +4,7 @@
 #include "attribution.h"
 #include "clause.h"
 #include "command_text.h"
+#include "derived_document.h"
 #include "document_diff.h"
 #include "implementation_choice.h"
 #include "snapshot.h"

@@ -277,18 +277,18 @@ const std::vector<Clause>& clause_catalog() {
        "the node's live polygons agrees with CGAL Polygon Mesh Processing: polygon_mesh with "
        "is_polygon_soup_a_polygon_mesh; for a polygon mesh closed, oriented, euler (V - E + F, vertices in no "
        "polygon not counted), components and boundary_loops with the Surface_mesh CGAL builds from it "
-       "(definitions of reference/mesh_topology.h; docs/adapters.md \"Optional capabilities\")."},
+       "(definitions of reference/geometry/mesh_topology.h; docs/adapters.md \"Optional capabilities\")."},
       {"SUBD-CATMARK-1", "derived", MUST, "000 2.6; optional capability \"subdivision\"",
        "\"Verse has a single primitive ...: Catmull/Clark subdivision surfaces\" with \"creases with which one "
        "can control the degree of subdivision allowed for each vertex and edge\".",
        "MUST when claimed (?capabilities names \"subdivision\"), not claimed otherwise. The ?subdivide N "
        "vertices (N = 1..3) agree with OpenSubdiv Catmark refinement of the node's polygons (uniform creasing, "
-       "edge-only boundaries, the crease-to-sharpness mapping of reference/crease_sharpness.h) as a bijection "
+       "edge-only boundaries, the crease-to-sharpness mapping of reference/geometry/crease_sharpness.h) as a bijection "
        "within 1e-9 of the coordinate scale, and the vertex and face counts agree. Compared on every mesh the node "
        "can hold, non-manifold included, with OpenSubdiv's non-manifold rules: an edge of more than two polygons, "
        "or of two polygons running the same direction, is infinitely sharp, and a non-manifold vertex (on such "
        "an edge, or where two fans meet: a bow-tie) is an infinitely sharp corner except on an interior "
-       "non-manifold crease (reference/catmull_clark.h); where OpenSubdiv refuses the polygons the case is not "
+       "non-manifold crease (reference/geometry/catmull_clark.h); where OpenSubdiv refuses the polygons the case is not "
        "judged. Vertices in no polygon are left out."},
       {"NORMALS-SPLIT-1", "normals", MUST, "003 (split vertex normals); optional capability \"normals\"",
        "\"A sharp edge is either tagged as such, non-manifold (i.e. used by more or less than exactly two faces), "
@@ -300,7 +300,7 @@ const std::vector<Clause>& clause_catalog() {
        "(two polygons, opposite directions, no corner holding edge crease 0xFFFFFFFF: the tag, 000 2.6.2) have "
        "one normal, and a corner between two sharp edges has its polygon's unit front normal (Newell, clockwise "
        "front). No external oracle is linked for the fan normal itself: every corner is compared with "
-       "reference/split_normals.h (angle-weighted sum of the fan's face normals, normalized). All within 1e-9; "
+       "reference/geometry/split_normals.h (angle-weighted sum of the fan's face normals, normalized). All within 1e-9; "
        "not compared where the reference cannot give the polygons normals or a polygon's vertex has a "
        "coordinate beyond 1e60 in magnitude (its normal's length overflows a double)."},
       {"LOOP-TRIANGLE-1", "loop", MUST, "004 (MeshEd triangle tree); optional capability \"loop\"",
@@ -309,11 +309,11 @@ const std::vector<Clause>& clause_catalog() {
        "named for their opposite vertex\"; \"Sub-vertices are named for their opposite vertex.\"",
        "MUST when claimed (?capabilities names \"loop\"), not claimed otherwise. When every live polygon is a "
        "triangle, the ?subdivide-loop N vertices (N = 1..3) agree with OpenSubdiv's Loop scheme (uniform creasing, "
-       "edge-only boundaries, the crease mapping of reference/crease_sharpness.h) as a bijection within 1e-9 of "
+       "edge-only boundaries, the crease mapping of reference/geometry/crease_sharpness.h) as a bijection within 1e-9 of "
        "the coordinate scale, with the vertex and face counts; and the face lines are the triangle tree, built "
        "on OpenSubdiv's levels: children T0..T3 of each parent consecutively, T0 = [s0 s1 s2] the centre, "
        "T(j+1) = [vj' s(j+2) s(j+1)] nearest vertex j, sk the child of the edge opposite vertex k (the oriented "
-       "order of reference/loop_subdivision.h; the spec's figure is not part of it). Compared on every "
+       "order of reference/geometry/loop_subdivision.h; the spec's figure is not part of it). Compared on every "
        "all-triangle mesh the node can hold, non-manifold included (OpenSubdiv's non-manifold rules as for "
        "SUBD-CATMARK-1; each level's edges come from its parent's edges and faces, so two triangles on the same "
        "three vertices keep distinct child edges); where OpenSubdiv refuses the polygons the case is not judged. "
@@ -332,7 +332,7 @@ const std::vector<Clause>& clause_catalog() {
        "refinement; at the edit's own level exactly one vertex moves and set puts it at the value (where coordinates are "
        "at most 1e6, so that the tolerance is far below the move). OpenSubdiv 3 "
        "has no hierarchical edits, so where the edit moves vertices (set, add at levels above N) the vertices "
-       "are compared with reference/hierarchical_edit.h only (its decisions: an edit applies after its level is "
+       "are compared with reference/geometry/hierarchical_edit.h only (its decisions: an edit applies after its level is "
        "computed, before the next). Vertices as a bijection within 1e-9 of the coordinate scale; compared on every "
        "mesh the node can hold, non-manifold included; not judged where OpenSubdiv refuses the polygons."},
   };

@@ -1,7 +1,8 @@
 // document_diff.h — comparing an implementation's snapshot and derived
 // documents with the reference's.
 //
-// Spec: the documents of reference/snapshot.h (docs/commands.md "Snapshot").
+// Spec: the documents of reference/node/snapshot.h and
+// reference/geometry/derived_document.h (docs/commands.md "Snapshot").
 //
 // Rationale: stored state must match byte for byte (the snapshot is
 // canonical), but bone world poses are computed in floating point, where two

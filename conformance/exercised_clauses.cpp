@@ -7,6 +7,7 @@
 
 #include "attribution.h"
 #include "command_text.h"
+#include "derived_document.h"
 #include "document_diff.h"
 #include "snapshot.h"
 

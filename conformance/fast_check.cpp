@@ -1,6 +1,7 @@
 // fast_check.cpp — see fast_check.h.
 #include "fast_check.h"
 
+#include "derived_document.h"
 #include "document_diff.h"
 #include "snapshot.h"
 

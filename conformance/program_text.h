@@ -1,5 +1,5 @@
 // program_text.h — the text form of a Program (runner.h): a counterexample
-// file. Its commands in the command text form (reference/command_text.h),
+// file. Its commands in the command text form (reference/node/command_text.h),
 // then, for a finding of an optional capability, one directive line naming
 // the capability check to repeat on the final state:
 //

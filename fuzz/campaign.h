@@ -110,7 +110,7 @@ int run_campaign(const CampaignOptions& o, CampaignSummary* out = nullptr);
 std::string summary_json(const CampaignSummary& s);
 std::string summary_markdown(const CampaignSummary& s);
 
-// A binary stream (reference/command_binary.h) as a command file: the
+// A binary stream (reference/node/command_binary.h) as a command file: the
 // commands that decode, then a comment naming the bytes that do not.
 std::string stream_to_text(const std::string& bytes);
 

@@ -1,7 +1,7 @@
 // command_mutator.h — structure-aware mutation of binary command streams.
 //
 // Spec: docs/spec_facts.md (the command set, id widths, the sentinels
-// 0xFFFF / 0xFFFFFFFF, FLT_MAX / DBL_MAX deletes); reference/command_binary.h
+// 0xFFFF / 0xFFFFFFFF, FLT_MAX / DBL_MAX deletes); reference/node/command_binary.h
 // (the stream format).
 //
 // Rationale: byte-level mutation of a stream mostly breaks its framing (a

@@ -5,7 +5,7 @@
 // Rationale: a finding must be replayable by someone who has never seen the
 // fuzzer. report_finding prints one line "vgc-fuzz: FINDING in <target>:
 // <what>" (the line `vgc fuzz` deduplicates crashes by), then the commands
-// run so far as a command file (reference/command_text.h), which
+// run so far as a command file (reference/node/command_text.h), which
 // `vgc apply FILE` runs, and then aborts, which libFuzzer records as a crash
 // and saves the input.
 #pragma once

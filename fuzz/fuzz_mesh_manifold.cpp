@@ -1,5 +1,5 @@
 // fuzz_mesh_manifold.cpp — the reference's connectivity and manifoldness
-// (reference/mesh_topology.h classify_mesh) against CGAL's
+// (reference/geometry/mesh_topology.h classify_mesh) against CGAL's
 // (oracles/cgal_manifold.h cgal_classify_mesh) on arbitrary small meshes.
 //
 // Spec: 002 (winged-edge connectivity, the manifold rules: an edge in one

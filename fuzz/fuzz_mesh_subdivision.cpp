@@ -1,5 +1,5 @@
 // fuzz_mesh_subdivision.cpp — the reference's uniform Catmull-Clark
-// (reference/catmull_clark.h) and Loop (reference/loop_subdivision.h)
+// (reference/geometry/catmull_clark.h) and Loop (reference/geometry/loop_subdivision.h)
 // against OpenSubdiv (oracles/osd_subdivision.h) on arbitrary small meshes
 // with vertex and edge creases.
 //
@@ -12,7 +12,7 @@
 // 3..6 corners). Compared on every mesh that passes check_mesh (every mesh
 // a geometry node can hold, and n-gons besides), non-manifold included:
 // the reference follows OpenSubdiv's non-manifold rules
-// (reference/catmull_clark.h build_base_level: non-manifold edges, and
+// (reference/geometry/catmull_clark.h build_base_level: non-manifold edges, and
 // edges two faces use the same way, infinitely sharp; non-manifold
 // vertices infinitely sharp corners except on an interior non-manifold
 // crease) and builds Loop's child edges from the parent topology

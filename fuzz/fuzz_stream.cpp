@@ -2,7 +2,7 @@
 // node invariant checked after every command.
 //
 // Spec: 000 section 2.6 and README, through node_invariants.h; the binary
-// stream format of reference/command_binary.h.
+// stream format of reference/node/command_binary.h.
 //
 // Per input: decode commands one at a time (stop at the first malformed
 // one); check that re-encoding each gives back its bytes; apply it. Cheap
@@ -27,6 +27,7 @@
 #include <vector>
 
 #include "command_binary.h"
+#include "derived_document.h"
 #include "finding.h"
 #include "node.h"
 #include "node_invariants.h"

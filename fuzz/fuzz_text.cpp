@@ -1,6 +1,6 @@
 // fuzz_text.cpp — the text command parser on arbitrary bytes.
 //
-// Spec: reference/command_text.h (the text form; parse(print(c)) is
+// Spec: reference/node/command_text.h (the text form; parse(print(c)) is
 // bit-identical to c) and number_text.h (exact number forms).
 //
 // Per input: parse_commands never crashes; an error names a line within the

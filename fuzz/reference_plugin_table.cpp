@@ -6,6 +6,7 @@
 #include <variant>
 
 #include "command_text.h"
+#include "derived_document.h"
 #include "node.h"
 #include "snapshot.h"
 

@@ -1,7 +1,8 @@
 // reference_plugin_table.h — the reference node behind the plugin C ABI.
 //
 // Spec: conformance/adapter/vgc_plugin.h (ABI version 1: one text command
-// line per apply; snapshot and derived documents of reference/snapshot.h).
+// line per apply; documents of reference/node/snapshot.h and
+// reference/geometry/derived_document.h).
 //
 // Rationale: fuzz_differential talks to every implementation through this
 // ABI. With no plugin given it uses this table, which exercises the same

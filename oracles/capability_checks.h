@@ -15,7 +15,7 @@
 // file registers its checks with the runner (register_capability_checks).
 // It includes no CGAL or OpenSubdiv header: only the plain-typed oracle
 // headers. The oracles are asked about the same mesh the reference
-// extracts (reference/mesh_arrays.h extract_mesh), with the options the
+// extracts (reference/geometry/mesh_arrays.h extract_mesh), with the options the
 // reference's Catmull-Clark uses (uniform creasing, edge-only boundaries,
 // crease_sharpness.h).
 #pragma once
@@ -39,7 +39,7 @@ std::optional<Finding> check_classify(const Node& model, Implementation& sut);
 // counts, and the vertices as a bijection by nearest position within
 // 1e-9 * max(1, largest coordinate magnitude). On every mesh a node can
 // hold, non-manifold included (OpenSubdiv's non-manifold rules, which the
-// reference follows: reference/catmull_clark.h); where OpenSubdiv refuses
+// reference follows: reference/geometry/catmull_clark.h); where OpenSubdiv refuses
 // the polygons the result is a FindingStatus::NotJudged saying why, not a
 // pass. Precondition: as check_classify. Never throws.
 std::optional<Finding> check_subdivision(const Node& model, Implementation& sut, int level);
@@ -50,7 +50,7 @@ std::optional<Finding> check_subdivision(const Node& model, Implementation& sut,
 // directions, no corner crease 0xFFFFFFFF) have one normal (so every smooth
 // fan has one), (b) a corner whose two edges are both sharp has its
 // polygon's unit front normal (Newell's, clockwise front, face_normals.h);
-// then every corner against reference/split_normals.h (angle-weighted fan
+// then every corner against reference/geometry/split_normals.h (angle-weighted fan
 // normals). All within 1e-9. Not compared when the reference cannot give
 // the polygons split normals, or a polygon's vertex has a coordinate beyond
 // 1e60 in magnitude. Precondition: as check_classify.
@@ -60,7 +60,7 @@ std::optional<Finding> check_normals(const Node& model, Implementation& sut);
 // scheme on the model's polygons: counts and vertices as check_subdivision;
 // then the face lines against the spec 004 triangle tree built on
 // OpenSubdiv's levels (tree order, T0 the centre, each triangle in the
-// oriented order of reference/loop_subdivision.h). When a live polygon is
+// oriented order of reference/geometry/loop_subdivision.h). When a live polygon is
 // not a triangle the answer must be one "error" line. Compared on every
 // all-triangle mesh, non-manifold included; NotJudged where OpenSubdiv
 // refuses it. Precondition: as check_classify.

@@ -1,5 +1,5 @@
 // cgal_manifold.h — connectivity and manifoldness answered by CGAL 5.5
-// Polygon Mesh Processing, as an oracle for reference/mesh_topology.h.
+// Polygon Mesh Processing, as an oracle for reference/geometry/mesh_topology.h.
 //
 // Spec: 002 (manifold rules: each edge in one or two polygons; disc /
 // half-disc neighbourhoods), 000 section 2.6 (consistent front side).

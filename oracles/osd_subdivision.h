@@ -4,7 +4,7 @@
 // edge creases), 004 (Loop subdivision of triangles), 001 (face holes).
 //
 // Rationale: an independent implementation of the subdivision the reference
-// computes (reference/catmull_clark.h, reference/loop_subdivision.h). Plain
+// computes (reference/geometry/catmull_clark.h, reference/geometry/loop_subdivision.h). Plain
 // types only: OpenSubdiv's headers are included by osd_subdivision.cpp and
 // nowhere else. Options are set explicitly to what the reference
 // implements: Sdc VTX_BOUNDARY_EDGE_ONLY, CREASE_UNIFORM, TRI_SUB_CATMARK.
@@ -67,7 +67,7 @@ struct OsdResult {
 OsdResult osd_refine_uniform(const OsdInput& input);
 
 // OpenSubdiv's input for a node's mesh with the reference's crease mapping
-// (reference/crease_sharpness.h): an edge's sharpness comes from the stored
+// (reference/geometry/crease_sharpness.h): an edge's sharpness comes from the stored
 // creases of its polygons combined by combine_edge_creases, a vertex's from
 // its crease (as a corner); the boundary rule is left to OpenSubdiv.
 // Precondition: `m` passes check_mesh (indices in range).

@@ -1,5 +1,5 @@
 // subdivision_comparison.h — reference subdivision levels
-// (reference/catmull_clark.h, loop_subdivision.h) against OpenSubdiv's
+// (reference/geometry/catmull_clark.h, loop_subdivision.h) against OpenSubdiv's
 // (oracles/osd_subdivision.h), matched by parent component.
 //
 // Spec: 000 section 2.6 (Catmull/Clark with vertex and edge creases), 004

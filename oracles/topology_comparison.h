@@ -1,5 +1,5 @@
 // topology_comparison.h — the reference's connectivity answers
-// (reference/mesh_topology.h) against CGAL's (oracles/cgal_manifold.h),
+// (reference/geometry/mesh_topology.h) against CGAL's (oracles/cgal_manifold.h),
 // field by field for every question both answer.
 //
 // Spec: 002 (manifold rules), 000 section 2.6 (consistent front side).

@@ -1,7 +1,7 @@
 // snapshot_state.h — a node's stored state read back from its snapshot
 // document, for the host's "what changed" comparison.
 //
-// Spec: the snapshot document of reference/snapshot.h (docs/commands.md
+// Spec: the snapshot document of reference/node/snapshot.h (docs/commands.md
 // "Snapshot"); what the host sends for each difference: docs/verse_wire.md
 // section 7.
 //

@@ -7,7 +7,7 @@
 // Rationale: the node behind the wire is any HostedNode: the reference, or
 // (from the command line) any vgc Implementation, a faulty plugin included.
 // The host never trusts it to say what changed: after every geometry
-// command it compares the node's snapshot (reference/snapshot.h) before
+// command it compares the node's snapshot (reference/node/snapshot.h) before
 // and after and sends each subscriber the commands that carry the change,
 // the way an r6 host sends what it applied. So a client sees exactly the
 // stored state, whatever the node did. A command the node rejects changes
@@ -33,11 +33,11 @@ class HostedNode {
   // failed (crashed plugin...): the host logs it and drops the node's session
   // traffic for that command.
   virtual bool apply(const vgc::Command& command, std::string* error) = 0;
-  // The node's whole state as the snapshot document of reference/snapshot.h.
+  // The node's whole state as the snapshot document of reference/node/snapshot.h.
   virtual bool snapshot(std::string* text, std::string* error) = 0;
 };
 
-// The reference node (reference/node.h) as a HostedNode.
+// The reference node (reference/node/node.h) as a HostedNode.
 std::unique_ptr<HostedNode> make_reference_hosted_node();
 
 struct HostOptions {

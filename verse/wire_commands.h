@@ -6,7 +6,7 @@
 // 3 and 4 (command numbers, field order, aliases).
 //
 // Rationale: a geometry command on the wire is a vgc::Command (reference/
-// command.h) plus the node id it is addressed to, so what the suite
+// node/command.h) plus the node id it is addressed to, so what the suite
 // generates is exactly what is sent: encode_command() writes the fields as
 // the command holds them, never "fixing" them (a 40-byte name goes out as
 // 40 bytes and a NUL, the host's check is what gets judged). decode gives

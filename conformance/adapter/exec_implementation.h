@@ -3,7 +3,8 @@
 // stdout: one text command per line in, one answer line out.
 //
 // Spec: the command language of docs/commands.md (command_text.h) and the
-// documents of snapshot.h; the protocol itself is docs/adapters.md.
+// documents of snapshot.h and derived_document.h; the protocol itself is
+// docs/adapters.md.
 //
 // Rationale: the implementation under test may crash, hang, or print
 // anything, and none of that may stop or crash the suite. So the program

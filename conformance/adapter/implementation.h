@@ -53,7 +53,8 @@ struct Answer {
   bool not_sent = false;
 };
 
-// The text documents of snapshot.h, as the implementation printed them.
+// The text documents of snapshot.h and derived_document.h, as the
+// implementation printed them.
 struct Document {
   CallStatus status = CallStatus::Ok;
   std::string text;      // whole document including the final "end\n"
@@ -98,7 +99,7 @@ class Implementation {
   virtual RouteLimits limits() const { return {}; }
   // One optional capability request (docs/adapters.md "Optional
   // capabilities"): "?capabilities", "?classify", "?subdivide <level>",
-  // "?normals", ... (reference/capability_documents.h).
+  // "?normals", ... (reference/geometry/capability_documents.h).
   // Ok with the whole document (ending in "end\n"), or Ok with one line
   // "error <message>\n" when the implementation refused the request (an
   // implementation that predates the requests answers so). The default

@@ -2,7 +2,8 @@
 // shared library through the C ABI of vgc_plugin.h (plugin:PATH).
 //
 // Spec: docs/adapters.md "plugin:PATH"; commands and documents are the text
-// forms of docs/commands.md (command_text.h, snapshot.h).
+// forms of docs/commands.md (command_text.h, snapshot.h,
+// derived_document.h).
 //
 // Rationale: in process is fast (the fuzzer uses it), but a plugin that
 // crashes takes the process with it. The suite therefore runs plugins in a

@@ -2,6 +2,7 @@
 #include "reference_implementation.h"
 
 #include "capability_documents.h"
+#include "derived_document.h"
 #include "snapshot.h"
 
 namespace vgc {

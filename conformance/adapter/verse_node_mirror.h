@@ -43,7 +43,7 @@ class VerseNodeMirror {
   // Applies one command the host sent. false with *error when it would
   // pass max_cells (the host sent more state than vgc keeps).
   bool apply(const Command& sent, std::string* error);
-  // The snapshot document (reference/snapshot.h) of what the host sent,
+  // The snapshot document (reference/node/snapshot.h) of what the host sent,
   // with no subscription column ("-": a host broadcasts none).
   std::string snapshot() const;
 

@@ -1,7 +1,7 @@
 // reference_plugin.cpp — the reference node behind the plugin C ABI
 // (vgc_plugin.h, ABI v1): libvgc_reference_plugin.so.
 //
-// Spec: as reference/node.h; the ABI is docs/adapters.md "plugin:PATH".
+// Spec: as reference/node/node.h; the ABI is docs/adapters.md "plugin:PATH".
 //
 // Rationale: certifying our own node through the plugin route (in process
 // and isolated) checks the route itself: it must give exactly the answers
@@ -14,6 +14,7 @@
 
 #include "capability_documents.h"
 #include "command_text.h"
+#include "derived_document.h"
 #include "node.h"
 #include "reason.h"
 #include "snapshot.h"

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "adapter_test_util.h"
+#include "derived_document.h"
 #include "node.h"
 #include "snapshot.h"
 

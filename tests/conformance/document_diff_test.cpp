@@ -6,6 +6,7 @@
 #include <cmath>
 #include <string>
 
+#include "derived_document.h"
 #include "document_diff.h"
 #include "node.h"
 #include "number_text.h"

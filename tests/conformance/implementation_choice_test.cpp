@@ -11,6 +11,7 @@
 
 #include "check_step.h"
 #include "command_text.h"
+#include "derived_document.h"
 #include "implementation_choice.h"
 #include "reference_implementation.h"
 #include "reference_wrapper.h"

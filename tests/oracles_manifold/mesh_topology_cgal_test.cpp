@@ -1,4 +1,4 @@
-// mesh_topology_cgal_test.cpp — reference/mesh_topology against CGAL
+// mesh_topology_cgal_test.cpp — reference/geometry/mesh_topology against CGAL
 // (oracles/cgal_manifold), field by field for every question both answer,
 // on manifold shapes (renumbered, faces rotated and shuffled), non-manifold
 // edits (fins, bow-ties), non-orientable ones (a flipped face, a Moebius

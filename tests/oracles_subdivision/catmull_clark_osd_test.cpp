@@ -1,4 +1,4 @@
-// Checks reference/catmull_clark.h against OpenSubdiv (oracles/osd_subdivision.h):
+// Checks reference/geometry/catmull_clark.h against OpenSubdiv (oracles/osd_subdivision.h):
 // random quad/triangle meshes (grids with holes as boundaries, closed
 // shapes, random vertex renumbering) with random vertex and edge creases
 // (smooth, fractional, semi-sharp, infinite); every refined vertex of levels

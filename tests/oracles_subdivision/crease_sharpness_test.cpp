@@ -1,4 +1,4 @@
-// Checks reference/crease_sharpness.h: the two ends the spec fixes (000
+// Checks reference/geometry/crease_sharpness.h: the two ends the spec fixes (000
 // 2.6.2: "zero represents a smooth surface (no crease), while MAX_UINT32
 // should give the maximum amount of crease"), monotonicity and linearity of
 // the mapping in between, the shared-edge rule (maximum) and the boundary

@@ -1,4 +1,4 @@
-// Checks reference/hierarchical_edit.h (spec 001). OpenSubdiv 3 dropped
+// Checks reference/geometry/hierarchical_edit.h (spec 001). OpenSubdiv 3 dropped
 // hierarchical edits, so only holes at level 0 are checked against it
 // (TopologyDescriptor numHoles/holeIndices); the rest by properties:
 // paths name what spec 001 says, "add" 0 changes nothing, "set" then read

@@ -1,4 +1,4 @@
-// Checks reference/loop_subdivision.h against OpenSubdiv's SCHEME_LOOP
+// Checks reference/geometry/loop_subdivision.h against OpenSubdiv's SCHEME_LOOP
 // (oracles/osd_subdivision.h): all-triangle meshes (triangle grids with
 // holes, closed shapes of valence 3..7, random renumbering) with random
 // creases; every vertex of levels 1..4 agrees within 1e-9 * scale, matched

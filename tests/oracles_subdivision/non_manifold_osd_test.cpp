@@ -1,6 +1,6 @@
-// Checks the reference's non-manifold rules (reference/catmull_clark.h
+// Checks the reference's non-manifold rules (reference/geometry/catmull_clark.h
 // build_base_level, non_manifold_tags) and Loop's child edges from the
-// parent topology (reference/loop_subdivision.h) against OpenSubdiv
+// parent topology (reference/geometry/loop_subdivision.h) against OpenSubdiv
 // (oracles/osd_subdivision.h) at levels 1..3, on shapes a geometry node can
 // hold (triangles and quads, distinct corners) that are not polygon meshes:
 // a fin (three faces on one edge), a fin along two edges (the interior

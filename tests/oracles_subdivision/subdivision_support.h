@@ -6,7 +6,7 @@
 // vertex renumbering and random vertex and edge creases (smooth, fractional,
 // infinite), all from explicit seeds.
 //
-// Comparison: reference levels (reference/catmull_clark.h, loop_subdivision.h)
+// Comparison: reference levels (reference/geometry/catmull_clark.h, loop_subdivision.h)
 // against OpenSubdiv levels (oracles/osd_subdivision.h), vertex by vertex,
 // matched by parent component: the child of a parent vertex, of a parent
 // edge (matched through the faces using it), of a parent face; child faces

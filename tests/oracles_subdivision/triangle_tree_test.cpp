@@ -1,4 +1,4 @@
-// Checks reference/triangle_tree.h, the MeshEd naming of spec 004, by its
+// Checks reference/geometry/triangle_tree.h, the MeshEd naming of spec 004, by its
 // properties on real Loop levels:
 //   "Sub-triangles are named according to their nearest vertex, with T0 in
 //    the center": T0 holds no child of a parent vertex; T(i+1) holds the

@@ -1,4 +1,4 @@
-// bone_pose_test.cpp — bone world poses (reference/bone_pose.cpp). Every
+// bone_pose_test.cpp — bone world poses (reference/geometry/bone_pose.cpp). Every
 // expected value is worked out by hand in the comments, from the rule in
 // bone_pose.h: root: (pos, normalize(rot)); child of P: world_rot =
 // normalize(P.rot * normalize(rot)), world_pos = P.pos + rotate(P.rot, pos).

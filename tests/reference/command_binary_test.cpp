@@ -1,4 +1,4 @@
-// command_binary_test.cpp — the binary form of commands (reference/command_binary.cpp):
+// command_binary_test.cpp — the binary form of commands (reference/node/command_binary.cpp):
 // byte layout, round trips, streams, truncation, bad tags, arbitrary bytes,
 // and the 255-byte name limit of the encoding.
 #include <gtest/gtest.h>

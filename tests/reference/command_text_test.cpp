@@ -1,4 +1,4 @@
-// command_text_test.cpp — the text form of commands (reference/command_text.cpp):
+// command_text_test.cpp — the text form of commands (reference/node/command_text.cpp):
 // bit-exact round trips, the printed forms of numbers and names, error
 // positions and messages, comments, blank lines, CRLF, and robustness
 // against arbitrary bytes.

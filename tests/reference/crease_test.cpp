@@ -1,4 +1,4 @@
-// crease_test.cpp — effective creases (reference/crease.cpp): constant vs
+// crease_test.cpp — effective creases (reference/geometry/crease.cpp): constant vs
 // layer, fallback for a missing or wrong-typed layer, late resolution, and
 // the corner-to-edge rule including a triangle's wrap from corner 2 to 0.
 #include <gtest/gtest.h>
@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "crease.h"
+#include "derived_document.h"
 #include "test_util.h"
 
 namespace vgc {

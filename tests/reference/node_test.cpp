@@ -1,4 +1,4 @@
-// node_test.cpp — the reference node (reference/node.cpp): every command
+// node_test.cpp — the reference node (reference/node/node.cpp): every command
 // kind, every rejection reason, the wire aliases, id picking, cascades,
 // layer re-creation, defaults, real32/real64 equivalence, bone cycles,
 // storage limits, and atomicity of rejected commands.
@@ -15,6 +15,7 @@
 #include <set>
 
 #include "arbitrary_command.h"
+#include "derived_document.h"
 #include "test_util.h"
 
 namespace vgc {

@@ -1,4 +1,4 @@
-// number_text_test.cpp — exact number and name forms (reference/number_text.cpp).
+// number_text_test.cpp — exact number and name forms (reference/node/number_text.cpp).
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 

@@ -1,4 +1,5 @@
-// snapshot_test.cpp — the snapshot and derived documents (reference/snapshot.cpp).
+// snapshot_test.cpp — the snapshot and derived documents (reference/node/snapshot.cpp,
+// reference/geometry/derived_document.cpp).
 // The expected documents are written by hand from the format in
 // docs/commands.md ("Snapshot", "Derived document").
 #include <gtest/gtest.h>
@@ -6,6 +7,7 @@
 #include <map>
 #include <sstream>
 
+#include "derived_document.h"
 #include "test_util.h"
 
 namespace vgc {

@@ -13,6 +13,7 @@
 #include "bone_pose.h"
 #include "capability_documents.h"
 #include "crease.h"
+#include "derived_document.h"
 #include "number_text.h"
 #include "snapshot.h"
 

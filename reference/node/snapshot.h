@@ -3,15 +3,13 @@
 // Spec: 000 section 2.6 (what a node holds); docs/commands.md "Snapshot"
 // defines the format for other implementations.
 //
-// Two documents, each deterministic (ids ascending, numbers in the exact
-// forms of number_text.h) and ending in a line "end":
-//   snapshot: what is stored — layers, creases as set, live vertices and
-//             polygons, every slot of every other layer, bones as sent.
-//   derived:  what the stored data means — the effective crease of every
-//             live vertex and polygon edge, and every bone's world pose.
-// Two conforming nodes fed the same commands print the same snapshot byte
-// for byte; their derived documents agree exactly on creases and within
-// rounding on bone poses.
+// The snapshot document, deterministic (ids ascending, numbers in the exact
+// forms of number_text.h) and ending in a line "end": what is stored —
+// layers, creases as set, live vertices and polygons, every slot of every
+// other layer, bones as sent. Two conforming nodes fed the same commands
+// print the same snapshot byte for byte. What the stored data means (the
+// derived document: effective creases, bone world poses) is derived
+// geometry: reference/geometry/derived_document.h.
 #pragma once
 
 #include <string>
@@ -21,7 +19,6 @@
 namespace vgc {
 
 std::string print_snapshot(const Node& node);
-std::string print_derived(const Node& node);
 
 // The parts of a node's state the snapshot prints, held anywhere: a client
 // that rebuilds a node from what a host sends (conformance/adapter/

@@ -395,7 +395,7 @@ Reason Node::apply_one(const cmd::PolygonSetFaceReal32& c) {
 Reason Node::apply_one(const cmd::CreaseSetVertex& c) {
   if (!valid_name(c.layer)) return Reason::BadName;
   // Decision: the name is stored as sent and resolved whenever creases are
-  // read (see crease.h): a layer may be created after it is named.
+  // read (see geometry/crease.h): a layer may be created after it is named.
   vertex_crease_ = {c.layer, c.def_crease};
   return Reason::Ok;
 }

@@ -1,8 +1,6 @@
 // snapshot.cpp — see snapshot.h.
 #include "snapshot.h"
 
-#include "bone_pose.h"
-#include "crease.h"
 #include "number_text.h"
 
 namespace vgc {
@@ -98,23 +96,6 @@ std::string print_snapshot(const SnapshotParts& node) {
     out += " " + format_quoted(b.pos_label);
     for (double v : b.rot) out += " " + format_f64(v);
     out += " " + format_quoted(b.rot_label) + "\n";
-  }
-  out += "end\n";
-  return out;
-}
-
-std::string print_derived(const Node& node) {
-  std::string out = "vgc-derived 1\n";
-  for (const auto& [id, slot] : node.vertices())
-    out += "vertex_crease " + u32(id) + " " + u32(vertex_crease(node, id)) + "\n";
-  for (const auto& [id, slot] : node.polygons())
-    for (int c = 0; c < corner_count(slot); ++c)
-      out += "edge_crease " + u32(id) + " " + std::to_string(c) + " " + u32(edge_crease(node, id, c)) + "\n";
-  for (const auto& [id, pose] : bone_world_poses(node)) {
-    out += "bone_pose " + u16(id);
-    for (double v : pose.pos) out += " " + format_f64(v);
-    for (double v : pose.rot) out += " " + format_f64(v);
-    out += "\n";
   }
   out += "end\n";
   return out;
