@@ -4,10 +4,7 @@
 # script timing faults side by side does this) each get a run directory of
 # their own and each write a whole summary. They used to share one
 # directory, named by the second and the seed, and one of them aborted.
-set -u
-vgc=$1 work=$2
-fail() { echo "concurrent_runs: $*" >&2; exit 1; }
-rm -rf "$work" && mkdir -p "$work/fuzz" "$work/src"
+. "$(dirname "$0")/stand_in_lib.sh" concurrent_runs "$@"
 cat >"$work/fuzz/fuzz_stream" <<'SCRIPT'
 #!/usr/bin/env bash
 echo "#1	INITED cov: 10 ft: 20 corp: 1/9b exec/s: 1 rss: 30Mb"
