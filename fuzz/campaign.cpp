@@ -433,11 +433,23 @@ int run_campaign(const CampaignOptions& o, CampaignSummary* out) {
   s.empty_corpus = o.empty_corpus;
   s.stop_at_first = o.stop_at_first;
   s.baseline = o.baseline;
-  s.run = utc_stamp() + "-seed" + std::to_string(o.seed);
-  const fs::path dir = src / "reports" / "fuzz" / target / s.run;
+  // The run's directory, claimed with one mkdir: two campaigns of the same
+  // target and seed started in the same second (a script running seeds or
+  // faults side by side) get -2, -3, ... instead of sharing one directory
+  // (they did, and one of them aborted).
+  const fs::path runs = src / "reports" / "fuzz" / target;
+  const std::string stamp = utc_stamp() + "-seed" + std::to_string(o.seed);
+  std::error_code ec;
+  fs::create_directories(runs, ec);
+  s.run = stamp;
+  for (int k = 2; !ec && !fs::create_directory(runs / s.run, ec) && !ec; ++k) s.run = stamp + "-" + std::to_string(k);
+  if (ec) {
+    fmt::print(stderr, "vgc fuzz: cannot create a run directory under {}: {}\n", runs.string(), ec.message());
+    return 2;
+  }
+  const fs::path dir = runs / s.run;
   s.run_dir = dir.string();
   const fs::path corpus = dir / "corpus", crashes = dir / "crashes", cex = dir / "counterexamples";
-  std::error_code ec;
   fs::create_directories(corpus, ec);
   if (!ec) fs::create_directories(crashes, ec);
   if (!ec) fs::create_directories(cex, ec);

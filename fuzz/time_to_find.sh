@@ -76,7 +76,7 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 median() { sort -n | awk '{ v[NR] = $1 } END { if (NR == 0) print "?"; else if (NR % 2) print v[(NR + 1) / 2]; else print (v[NR / 2] + v[NR / 2 + 1]) / 2 }'; }
 echo "time_to_find: fuzz_$target, cap $cap s, seeds $seeds, corpora $corpora; $(uptime)" >&2
-header="| fault | clause found |"
+header="| fault | $([ "$target" = differential ] && echo "clause found" || echo "finding") |"
 rule="|---|---|"
 for c in $corpora; do header="$header $c corpus: median s (runs) |"; rule="$rule---|"; done
 echo "$header"
@@ -94,11 +94,19 @@ for f in $faults; do
       env "$fault_var=$f" "$vgc" fuzz "$target" "${impl[@]}" --seed "$s" --time "$cap" --stop-at-first \
         --jobs 1 $extra --fuzz-build "$fuzz_build" --source-dir "$root" >"$work/out" 2>&1
       summary=$(sed -n 's/^summary: //p' "$work/out" | tail -1)
-      t=$(python3 - "$summary" "$cap" <<'PY' 2>/dev/null
-import json, sys
+      t=$(python3 - "$summary" "$cap" "$target" <<'PY' 2>/dev/null
+import json, re, sys
 s = json.load(open(sys.argv[1])); cap = float(sys.argv[2])
 t = s.get("time_to_first_finding_s")
-print("%.1f %s" % (t, (s["crashes"][0]["clause"] or "-") if s["crashes"] else "-") if t is not None and t <= cap
+def named(c):
+    # The clause; for the mesh target (no clause) the finding's first words.
+    if c["clause"] or sys.argv[3] == "differential":
+        return c["clause"] or "-"
+    sig = re.sub(r"^FINDING in \S+: ", "", c["signature"]).split(" (")[0]
+    if len(sig) > 64:
+        sig = sig[:64].rsplit(" ", 1)[0] + " ..."
+    return sig.replace(" ", "_") or "-"
+print("%.1f %s" % (t, named(s["crashes"][0]) if s["crashes"] else "-") if t is not None and t <= cap
       else "%s -" % ("inf"))
 PY
 )
@@ -118,6 +126,7 @@ PY
     row="$row $m (${runs# }) |"
   done
   shown=${clause:--}
+  [ "$target" = differential ] || shown=${shown//_/ }
   [ -n "$want" ] && [ "$clause" != "$want" ] && shown="$shown ($want)"
   echo "| $f | $shown |$row"
 done

@@ -22,7 +22,7 @@ def main(argv):
     env = dict(os.environ, VGC_PY_FAULT=fault)
     # --strict: the fault's clause (POLY-DISTINCT-1) is IMPLEMENTATION-DEFINED,
     # a profile difference that gates only when asked to.
-    cmd = [vgc, "certify", "--strict", "--impl", "exec:%s %s" % (sys.executable, node),
+    cmd = [vgc, "certify", "--strict", "--timeout", "30", "--impl", "exec:%s %s" % (sys.executable, node),
            "--quiet", "--cases", "100", "--reports", reports]
     rc = subprocess.run(cmd, env=env).returncode
     if rc != 1:

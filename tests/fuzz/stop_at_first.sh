@@ -6,10 +6,7 @@
 # fopen ... fwrite would), then never stops. The campaign must keep the
 # whole input (stopping at the empty file used to leave an input that
 # replayed to nothing), stop before --time, and say it stopped.
-set -u
-vgc=$1 work=$2
-fail() { echo "stop_at_first: $*" >&2; exit 1; }
-rm -rf "$work" && mkdir -p "$work/fuzz" "$work/src"
+. "$(dirname "$0")/stand_in_lib.sh" stop_at_first "$@"
 cat >"$work/fuzz/fuzz_stream" <<'SCRIPT'
 #!/usr/bin/env bash
 prefix="" last=""

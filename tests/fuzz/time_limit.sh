@@ -5,10 +5,7 @@
 # killed after --time (plus 5 s), with every process of its group, and the
 # summary is still written, saying so. (The test's own CTest timeout is the
 # bound: no timing assertion here.)
-set -u
-vgc=$1 work=$2
-fail() { echo "time_limit: $*" >&2; exit 1; }
-rm -rf "$work" && mkdir -p "$work/fuzz" "$work/src"
+. "$(dirname "$0")/stand_in_lib.sh" time_limit "$@"
 cat >"$work/fuzz/fuzz_stream" <<'SCRIPT'
 #!/usr/bin/env bash
 # A job that ignores -max_total_time, with a child of its own (a fork-mode job).
