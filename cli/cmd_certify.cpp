@@ -180,9 +180,10 @@ int run(const Options& o) {
     line.finish();
     std::string found;
     for (const auto& f : p.findings) found += (found.empty() ? "" : ", ") + f.finding.clause;
-    fmt::print(stderr, "[{}/{}] {:<20} {:<8} {}/{} cases ({} judged, {} set aside){}  {:.1f} s\n",
+    fmt::print(stderr, "[{}/{}] {:<20} {:<8} {}/{} cases ({} judged, {} set aside{}){}  {:.1f} s\n",
                at.property_index + 1, at.property_count, p.id, p.status, p.cases, p.cases_target, p.judged,
-               p.set_aside, found.empty() ? "" : "; found " + found, at.elapsed_seconds);
+               p.set_aside, p.not_judged ? fmt::format(", {} not judged", p.not_judged) : "",
+               found.empty() ? "" : "; found " + found, at.elapsed_seconds);
     if (!p.note.empty() && p.status != "pass") fmt::print(stderr, "      {}\n", p.note);
   };
   register_oracle_checks();  // the oracles judge the optional capabilities

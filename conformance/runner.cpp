@@ -57,8 +57,9 @@ struct CaseContext {
   // A tolerated clause's divergence as first seen (shortest program kept).
   std::map<std::string, PropertyFinding> tolerated_seen;
   bool set_aside_case = false;      // the current case diverged in a tolerated clause
+  bool not_judged_case = false;     // the oracle could not judge the case's capability check
   bool shrinking = false;           // this round found its failure: cases now are shrink attempts
-  int cases_done = 0, judged = 0, set_aside = 0, target = 0;
+  int cases_done = 0, judged = 0, set_aside = 0, not_judged = 0, target = 0;
   bool dominated = false;           // set-aside cases dominate: stop
 
   // Tallies (outside shrinking): the property's exercised counts, the run's
@@ -324,6 +325,7 @@ PropertyOutcome run_property(const PropertySpec& spec, Implementation& sut, cons
     c.model = Node{};
     c.abandoned = false;
     c.set_aside_case = false;
+    c.not_judged_case = false;
     struct Tally {  // at the end of the case, however it ends
       CaseContext& c;
       bool counted;
@@ -331,6 +333,7 @@ PropertyOutcome run_property(const PropertySpec& spec, Implementation& sut, cons
         if (!counted || c.shrinking) return;  // the failing case itself is counted with its finding
         ++c.cases_done;
         if (c.set_aside_case) ++c.set_aside;
+        else if (c.not_judged_case) ++c.not_judged;
         else if (!c.abandoned && !c.deadline_hit) ++c.judged;
         if (c.cases_done >= kSetAsideMinCases && c.set_aside > kSetAsideShare * c.cases_done) c.dominated = true;
       }
@@ -371,7 +374,9 @@ PropertyOutcome run_property(const PropertySpec& spec, Implementation& sut, cons
       const auto f = run_capability_check(*capability, c.model, *c.sut, request);
       if (f && f->status != FindingStatus::NotJudged) {
         fail_case(*f, request);
-      } else if (!f && !c.shrinking) {  // a case the oracle could not judge exercises nothing
+      } else if (f) {  // run, and counted, but neither judged nor exercising anything
+        c.not_judged_case = true;
+      } else if (!c.shrinking) {  // a case the oracle could not judge exercises nothing
         std::stringstream ids(capability_clause_list);
         std::string id;
         while (std::getline(ids, id, ',')) ++(*c.exercised)[id];
@@ -438,6 +443,7 @@ PropertyOutcome run_property(const PropertySpec& spec, Implementation& sut, cons
   out.cases = ctx.cases_done;
   out.judged = ctx.judged;
   out.set_aside = ctx.set_aside;
+  out.not_judged = ctx.not_judged;
   std::set<std::string> tolerated_hits;
   for (const auto& [clause, pf] : ctx.tolerated_seen) tolerated_hits.insert(clause);
   if (ctx.deadline_hit) {

@@ -106,10 +106,11 @@ struct PropertyOutcome {
   std::string status;
   std::string note;         // why skipped / stopped
   std::uint64_t seed = 0;
-  int cases = 0;            // cases run to the end: judged + set aside
+  int cases = 0;            // cases run to the end: judged + set aside + not judged
   int cases_target = 0;     // cases it should run
   int judged = 0;           // cases judged in full (no tolerated divergence)
   int set_aside = 0;        // cases whose first divergence was a tolerated clause
+  int not_judged = 0;       // capability cases the oracle could not judge (FindingStatus::NotJudged)
   int rounds = 0;           // RapidCheck runs (1 + one per new finding)
   double seconds = 0;
   std::vector<PropertyFinding> findings;  // in the order found

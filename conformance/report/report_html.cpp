@@ -260,7 +260,7 @@ std::string render_report_html(const RunResult& run, const Verdict& v, const Rep
   add(body, "h2", "Properties");
   auto props = add(body, "table", {}, "properties");
   auto ph = add(props, "tr");
-  for (const char* c : {"property", "status", "cases", "judged", "set aside", "findings", "seed", "seconds"})
+  for (const char* c : {"property", "status", "cases", "judged", "set aside", "not judged", "findings", "seed", "seconds"})
     add(ph, "th", c);
   for (const auto& p : run.properties) {
     auto tr = add(props, "tr");
@@ -271,6 +271,7 @@ std::string render_report_html(const RunResult& run, const Verdict& v, const Rep
     add(tr, "td", std::to_string(p.cases) + "/" + std::to_string(p.cases_target));
     add(tr, "td", std::to_string(p.judged));
     add(tr, "td", std::to_string(p.set_aside));
+    add(tr, "td", std::to_string(p.not_judged));
     std::string found;
     for (const auto& f : p.findings) found += (found.empty() ? "" : ", ") + f.finding.clause;
     add(tr, "td", found.empty() ? "-" : found);

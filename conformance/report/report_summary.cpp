@@ -87,14 +87,14 @@ std::string render_summary(const RunResult& run, const Verdict& v, const ReportC
   for (const auto& co : run.clauses)
     out += fmt::format("| {} | {} | {}{} | {} |\n", co.clause->id, clause_level_name(co.clause->level), co.status,
                        co.note.empty() ? "" : " (" + co.note + ")", co.exercised);
-  out += "\n## Properties\n\n| property | status | cases | judged | set aside | findings | seed | seconds |\n"
-         "|---|---|---|---|---|---|---|---|\n";
+  out += "\n## Properties\n\n| property | status | cases | judged | set aside | not judged | findings | seed | seconds |\n"
+         "|---|---|---|---|---|---|---|---|---|\n";
   for (const auto& p : run.properties) {
     std::string found;
     for (const auto& f : p.findings) found += (found.empty() ? "" : ", ") + f.finding.clause;
-    out += fmt::format("| {} | {}{} | {}/{} | {} | {} | {} | {} | {:.2f} |\n", p.id, p.status,
+    out += fmt::format("| {} | {}{} | {}/{} | {} | {} | {} | {} | {} | {:.2f} |\n", p.id, p.status,
                        p.note.empty() ? "" : " (" + p.note + ")", p.cases, p.cases_target, p.judged, p.set_aside,
-                       found.empty() ? "-" : found, p.seed, p.seconds);
+                       p.not_judged, found.empty() ? "-" : found, p.seed, p.seconds);
   }
   out += "\n## Commands judged\n\n| command | sent | applied | rejected |\n|---|---|---|---|\n";
   for (const auto& [kind, k] : run.command_kinds) {

@@ -4,6 +4,7 @@
 // capability faults are caught naming their clause. The oracle checks are
 // registered for this whole test binary (runner tests included), as
 // `vgc certify` registers them.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -297,6 +298,17 @@ TEST(Capability, ANotJudgedCheckIsNeverAPass) {
   EXPECT_NE(co->status, "pass");
   EXPECT_NE(co->status, "fail");
   EXPECT_EQ(co->exercised, 0);
+  // The property ran its cases, and counts them as not judged, not judged.
+  const PropertyOutcome* loop = nullptr;
+  for (const auto& p : run.properties)
+    if (p.id == "derived.loop") loop = &p;
+  ASSERT_NE(loop, nullptr);
+  ASSERT_GT(loop->cases, 0) << loop->status << " " << loop->note;
+  EXPECT_EQ(loop->judged, 0);
+  EXPECT_EQ(loop->not_judged, loop->cases);
+  const std::string summary = render_summary(run, judge(run, nullptr), ReportContext{});
+  const std::string row = fmt::format("| {}/{} | 0 | 0 | {} |", loop->cases, loop->cases_target, loop->cases);
+  EXPECT_NE(summary.find(row), std::string::npos) << row << "\n" << summary;
   register_capability_check(real);
 }
 
