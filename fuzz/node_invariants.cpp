@@ -55,15 +55,18 @@ bool seen_before(std::vector<std::string_view>& seen, std::string_view name) {
 }
 }  // namespace
 
-std::string check_state(const std::map<std::uint16_t, Layer>& layers,
-                        const std::map<std::uint16_t, Bone>& bones) {
+namespace {
+// The layer-level rules, O(layers) each: the base layers; every layer's
+// id, type and name; its slots against its base layer's, id by id
+// (`exact`) or by count (the cheap form check_touched uses after each
+// command, with the ids of what the command touched checked apart).
+std::string check_layer_list(const std::map<std::uint16_t, Layer>& layers, bool exact) {
   // 2.6.1: the two base layers, rigidly defined.
   if (auto e = check_base_layer(layers, Node::kVertexLayer, "vertex", LayerType::VertexXyz); !e.empty()) return e;
   if (auto e = check_base_layer(layers, Node::kPolygonLayer, "polygon", LayerType::PolygonCornerUint32); !e.empty())
     return e;
   const auto& vertices = layers.at(Node::kVertexLayer).slots;
   const auto& polygons = layers.at(Node::kPolygonLayer).slots;
-
   std::vector<std::string_view>& names = names_seen();
   for (const auto& [id, layer] : layers) {
     auto where = [&, id = id] { return "layer " + id_text(id); };
@@ -75,8 +78,18 @@ std::string check_state(const std::map<std::uint16_t, Layer>& layers,
     if (seen_before(names, layer.name)) return where() + " repeats the name \"" + layer.name + "\"";
     // 2.6.1: a layer's size "is controlled by the size of the base layer".
     const auto& base = is_vertex_layer_type(layer.type) ? vertices : polygons;
-    if (!same_ids(layer.slots, base)) return where() + " does not hold exactly the live ids of its base layer";
+    if (exact ? !same_ids(layer.slots, base) : layer.slots.size() != base.size())
+      return where() + " does not hold exactly the live ids of its base layer";
   }
+  return {};
+}
+}  // namespace
+
+std::string check_state(const std::map<std::uint16_t, Layer>& layers,
+                        const std::map<std::uint16_t, Bone>& bones) {
+  if (auto e = check_layer_list(layers, true); !e.empty()) return e;
+  const auto& vertices = layers.at(Node::kVertexLayer).slots;
+  const auto& polygons = layers.at(Node::kPolygonLayer).slots;
   for (const auto& [vid, slot] : vertices)
     for (int i = 0; i < 3; ++i)
       if (!std::isfinite(slot.r[i])) return "vertex " + id_text(vid) + " has a non-finite position";
@@ -188,26 +201,9 @@ std::string check_deterministic(const std::string& first, const std::string& sec
 
 namespace {
 
-// The layer-level rules of check_state, O(layers): base layers; ids, types,
-// names; every layer as many slots as its base layer.
+// The layer-level rules of check_state, with slot counts for slot ids.
 std::string check_layer_headers(const std::map<std::uint16_t, Layer>& layers) {
-  if (auto e = check_base_layer(layers, Node::kVertexLayer, "vertex", LayerType::VertexXyz); !e.empty()) return e;
-  if (auto e = check_base_layer(layers, Node::kPolygonLayer, "polygon", LayerType::PolygonCornerUint32); !e.empty())
-    return e;
-  const std::size_t nv = layers.at(Node::kVertexLayer).slots.size();
-  const std::size_t np = layers.at(Node::kPolygonLayer).slots.size();
-  std::vector<std::string_view>& names = names_seen();
-  for (const auto& [id, layer] : layers) {
-    auto where = [&, id = id] { return "layer " + id_text(id); };
-    if (layer.id != id) return where() + " is stored under id " + id_text(layer.id);
-    if (!is_layer_type(static_cast<std::uint8_t>(layer.type))) return where() + " has no valid type";
-    if (layer.name.empty()) return where() + " has an empty name";
-    if (!valid_name(layer.name)) return where() + " has a name over 15 bytes or with a NUL";
-    if (seen_before(names, layer.name)) return where() + " repeats the name \"" + layer.name + "\"";
-    if (layer.slots.size() != (is_vertex_layer_type(layer.type) ? nv : np))
-      return where() + " does not hold exactly the live ids of its base layer";
-  }
-  return {};
+  return check_layer_list(layers, false);
 }
 
 std::string check_polygon(const std::map<std::uint32_t, Slot>& vertices, std::uint32_t pid, const Slot& slot) {
