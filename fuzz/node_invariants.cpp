@@ -38,6 +38,8 @@ std::string check_base_layer(const std::map<std::uint16_t, Layer>& layers, std::
 
 namespace {
 std::string check_bone(const std::map<std::uint16_t, Bone>& bones, std::uint16_t id);  // below
+std::string check_polygon(const std::map<std::uint32_t, Slot>& vertices, std::uint32_t pid,
+                          const Slot& slot);  // below
 
 // The layer names seen so far in one check, in id order: a linear scan of
 // a vector kept between calls (a node holds tens of layers; a std::set
@@ -94,17 +96,8 @@ std::string check_state(const std::map<std::uint16_t, Layer>& layers,
     for (int i = 0; i < 3; ++i)
       if (!std::isfinite(slot.r[i])) return "vertex " + id_text(vid) + " has a non-finite position";
   // 2.6: three or four corners, pairwise distinct, each a live vertex.
-  for (const auto& [pid, slot] : polygons) {
-    auto where = [&, pid = pid] { return "polygon " + id_text(pid); };
-    for (int i = 0; i < 3; ++i)
-      if (slot.u[i] == kNone32) return where() + " has an unused corner " + id_text(i);
-    const int n = slot.u[3] == kNone32 ? 3 : 4;
-    for (int i = 0; i < n; ++i) {
-      if (vertices.count(slot.u[i]) == 0) return where() + " names vertex " + id_text(slot.u[i]) + ", not live";
-      for (int j = i + 1; j < n; ++j)
-        if (slot.u[i] == slot.u[j]) return where() + " repeats vertex " + id_text(slot.u[i]);
-    }
-  }
+  for (const auto& [pid, slot] : polygons)
+    if (auto e = check_polygon(vertices, pid, slot); !e.empty()) return e;
   // 2.6.3: bones form a forest (no bone is its own ancestor); names valid.
   for (const auto& entry : bones)
     if (std::string e = check_bone(bones, entry.first); !e.empty()) return e;
