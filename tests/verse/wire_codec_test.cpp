@@ -78,10 +78,23 @@ TEST(VerseCodec, EveryGeometryCommandAndAliasRoundTrips) {
 }
 
 TEST(VerseCodec, BytesFollowTheR6Layout) {
-  // g_layer_create: 48, node u32, layer u16, name + NUL, type u8, def_uint u32, def_real f64 (big-endian).
+  // g_layer_create: 48, node u32, layer u16, name + NUL, type u8, def_uint u32, def_real f64. A real64
+  // goes as r6 on a little-endian machine packs it (docs/verse_wire.md section 1): its low 32 bits first,
+  // then its high 32 bits, each big-endian. 0.5 is 0x3FE0000000000000.
   std::string b;
   ASSERT_TRUE(encode_command(wire::Geometry{9, cmd::LayerCreate{2, "ab", 1, 7, 0.5}}, &b).ok());
-  EXPECT_EQ(hex(b), "30" "00000009" "0002" "616200" "01" "00000007" "3fe0000000000000");
+  EXPECT_EQ(hex(b), "30" "00000009" "0002" "616200" "01" "00000007" "00000000" "3fe00000");
+  // -4.0 (0xC010000000000000) in g_vertex_set_xyz_real64, as the r6 host sent it in the issue 18 run;
+  // read high word first it was 1.5920149086e-314.
+  b.clear();
+  ASSERT_TRUE(encode_command(wire::Geometry{77, cmd::VertexSetXyzReal64{0, 0, -4, -4, -4}}, &b).ok());
+  EXPECT_EQ(hex(b), "33" "0000004d" "0000" "00000000" "00000000c0100000" "00000000c0100000" "00000000c0100000");
+  {
+    const Command back = decode_one(b);
+    const auto* v = std::get_if<cmd::VertexSetXyzReal64>(&back);
+    ASSERT_NE(v, nullptr);
+    EXPECT_EQ(v->x, -4.0);
+  }
   // g_vertex_delete_real32 as r6 sends it: 50, layer 0, FLT_MAX three times.
   b.clear();
   ASSERT_TRUE(encode_command(wire::Geometry{1, cmd::VertexDelete{7}}, &b).ok());
