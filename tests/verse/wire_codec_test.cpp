@@ -148,6 +148,51 @@ RC_GTEST_PROP(VerseCodec, AnyCommandRoundTripsToItsCanonicalForm, (const Command
   RC_ASSERT(bit_equal(std::get<wire::Geometry>(w).command, wire_canonical(c)));
 }
 
+// bone_create in r6's form (r6 v_gen_pack_g_node.c verse_send_g_bone_create):
+// node, bone_id, weight, reference, parent, pos x y z, then position,
+// rotation and scale labels; bone_destroy as r6 sends it.
+TEST(VerseCodec, BoneCreateInR6sFormHasR6sBytes) {
+  cmd::BoneCreate b{2, "w", "", 0xFFFF, {1, 0, 0}, "p", {0, 0, 0, 1}, "r"};
+  std::string bytes;
+  ASSERT_TRUE(encode_command(wire::Geometry{5, b}, &bytes, BoneForm::R6).ok());
+  EXPECT_EQ(hex(bytes), "40" "00000005" "0002" "7700" "00" "ffff" "000000003ff00000" "0000000000000000"
+                        "0000000000000000" "7000" "7200" "00");
+  std::size_t used = 0;
+  WireCommand w;
+  ASSERT_TRUE(decode_command(reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size(), &used, &w,
+                             BoneForm::R6).ok());
+  EXPECT_EQ(used, bytes.size());
+  EXPECT_TRUE(bit_equal(std::get<wire::Geometry>(w).command, Command(b)));
+  // The same bytes read in the spec's form run out (the rotation is missing).
+  EXPECT_FALSE(decode_command(reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size(), &used, &w).ok());
+  bytes.clear();
+  ASSERT_TRUE(encode_command(wire::Geometry{5, cmd::BoneDestroy{2}}, &bytes, BoneForm::R6).ok());
+  EXPECT_EQ(hex(bytes), "40" "00000005" "0002" "00" "00" "ffff" "ffffffff7fefffff" "ffffffff7fefffff"
+                        "ffffffff7fefffff" "00" "00" "00");
+  // A rotation r6's form cannot carry is refused, nothing written.
+  bytes.clear();
+  b.rot = {0, 1, 0, 0};
+  EXPECT_EQ(encode_command(wire::Geometry{5, b}, &bytes, BoneForm::R6).code, Status::Code::ProtocolError);
+  EXPECT_TRUE(bytes.empty());
+}
+
+TEST(VersePacket, APacketInTheOtherBoneFormIsReadInItWhenAsked) {
+  std::string cmds;
+  ASSERT_TRUE(encode_command(wire::Geometry{5, cmd::BoneCreate{2, "w", "", 0xFFFF, {1, 0, 0}, "p", {0, 0, 0, 1}, "r"}},
+                             &cmds, BoneForm::R6).ok());
+  ASSERT_TRUE(encode_command(wire::NodeNameSet{5, "vgc-barrier-1"}, &cmds).ok());
+  const std::string bytes = build_packet(3, cmds);
+  Packet p;
+  const auto* d = reinterpret_cast<const std::uint8_t*>(bytes.data());
+  EXPECT_EQ(parse_packet(d, bytes.size(), &p).code, Status::Code::ProtocolError);  // r6's own behaviour
+  ASSERT_TRUE(parse_packet(d, bytes.size(), &p, BoneForm::Spec, true).ok());
+  EXPECT_TRUE(p.other_bone_form);
+  ASSERT_EQ(p.commands.size(), 2u);
+  EXPECT_TRUE(std::holds_alternative<wire::NodeNameSet>(p.commands[1]));
+  ASSERT_TRUE(parse_packet(d, bytes.size(), &p, BoneForm::R6, true).ok());
+  EXPECT_FALSE(p.other_bone_form);
+}
+
 TEST(VerseCodec, NamesWithNulCannotBeEncoded) {
   std::string b;
   const Status st = encode_command(wire::Geometry{1, cmd::LayerCreate{2, std::string("a\0b", 3), 1, 0, 0}}, &b);
