@@ -51,6 +51,13 @@ struct ClientSession::Impl {
       if (!st.ok()) return st;
       if (done()) return {};
       const Clock::time_point now = Clock::now();
+      if (options.unacknowledged_limit_s > 0 && channel->oldest_unacknowledged() != Clock::time_point::max() &&
+          now - channel->oldest_unacknowledged() >
+              std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(options.unacknowledged_limit_s))) {
+        connected = false;
+        return Status::closed("the host has not acknowledged a packet for " +
+                              std::to_string(options.unacknowledged_limit_s) + " s: it no longer knows this session");
+      }
       const bool late = now >= deadline;  // then only what has already arrived is read
       Clock::time_point wake = std::min({deadline, channel->next_resend_due(), now + std::chrono::milliseconds(50)});
       const double wait = late ? 0.0 : std::chrono::duration<double>(wake - now).count();
@@ -223,7 +230,11 @@ void ClientSession::set_bone_form(BoneForm form) {
 Status ClientSession::create_geometry_node(std::uint32_t* node_id, double timeout_s) {
   Impl& s = *impl_;
   const Clock::time_point deadline = deadline_after(timeout_s);
-  if (!s.index_subscribed) {
+  // Every time, not once: a host may have lost the subscription (r6 runs
+  // whatever node_index_subscribe it decodes from the rest of a
+  // desynchronised packet). Its answer re-announces live nodes, which are
+  // not new.
+  {
     Status st = s.send(wire::NodeIndexSubscribe{1u << kNodeTypeGeometry});
     if (!st.ok()) return st;
     s.index_subscribed = true;
@@ -309,6 +320,13 @@ ClientSession::Counters ClientSession::counters() const {
   }
   return c;
 }
+double ClientSession::unacknowledged_for() const {
+  if (!impl_->channel) return 0;
+  const Clock::time_point t = impl_->channel->oldest_unacknowledged();
+  if (t == Clock::time_point::max()) return 0;
+  return std::chrono::duration<double>(Clock::now() - t).count();
+}
+
 const std::string& ClientSession::last_protocol_error() const { return impl_->last_protocol_error; }
 
 }  // namespace vgc::verse

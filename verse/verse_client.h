@@ -45,6 +45,10 @@ struct ClientOptions {
   // that parses only in the other form is read in it and counted
   // (Counters::other_bone_form). set_bone_form() changes it later.
   BoneForm bone_form = BoneForm::Spec;
+  // > 0: a call that waits fails at once (Closed) when a packet has stayed
+  // unacknowledged this long (see unacknowledged_for()); 0: only its own
+  // time-out ends a wait.
+  double unacknowledged_limit_s = 0;
   // Called with every packet received from the host, clear (decrypted), the
   // login packets included: captures (the fuzz seeds of
   // corpora/fuzz/fuzz_verse_packet) and debugging. Null: nothing.
@@ -70,7 +74,7 @@ class ClientSession {
   BoneForm bone_form() const;
   void set_bone_form(BoneForm form);
 
-  // node_index_subscribe(geometry) (once per session) then
+  // node_index_subscribe(geometry) then
   // node_create(geometry): waits up to timeout_s for the host's node_create
   // of a geometry node owned by this session that is not live, and returns
   // its id. "Live" follows the index as it arrives: a node_create makes an
@@ -102,6 +106,13 @@ class ClientSession {
   // in answer to commands sent before it has been seen, in the host's order
   // (docs/verse_wire.md section 6 says what this assumes).
   Status barrier(std::uint32_t node_id, double timeout_s, std::vector<WireCommand>* before);
+
+  // Seconds since the oldest packet the host has not acknowledged was first
+  // sent (0 when all are). A host acknowledges on receipt, so a packet
+  // unacknowledged for long means the host no longer knows this session
+  // (r6 forgets one silently after a connect_terminate). Reads nothing: call
+  // after receive() or barrier().
+  double unacknowledged_for() const;
 
   // connect_terminate, then closes the socket. Safe to call twice.
   void disconnect(const std::string& bye = "vgc done");

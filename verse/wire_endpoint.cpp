@@ -141,6 +141,12 @@ Clock::time_point Channel::next_resend_due() const {
   return due;
 }
 
+Clock::time_point Channel::oldest_unacknowledged() const {
+  Clock::time_point t = Clock::time_point::max();
+  for (const auto& [id, s] : history_) t = std::min(t, s.first_sent);
+  return t;
+}
+
 std::vector<std::string> Channel::take_datagrams(Clock::time_point now) {
   std::vector<std::string> out;
   // Resends first: same id, same bytes (the peer acks a duplicate without acting on it).
@@ -178,7 +184,7 @@ std::vector<std::string> Channel::take_datagrams(Clock::time_point now) {
     ++counters_.sent;
     if (!commands.empty()) {  // ack-only packets are neither acknowledged nor resent
       history_bytes_ += commands.size();
-      history_[id] = Sent{std::move(parts), std::move(commands), std::move(datagram), now};
+      history_[id] = Sent{std::move(parts), std::move(commands), std::move(datagram), now, now};
     }
   }
   return out;

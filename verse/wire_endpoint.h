@@ -103,6 +103,8 @@ class Channel {
 
   bool all_acknowledged() const { return history_.empty() && queue_.empty(); }
   Clock::time_point next_resend_due() const;  // max() when nothing is unacknowledged
+  // When the oldest packet still unacknowledged was first sent; max() when none.
+  Clock::time_point oldest_unacknowledged() const;
   Clock::time_point last_heard() const { return last_heard_; }
 
   struct Counters {
@@ -121,6 +123,7 @@ class Channel {
     std::string commands;  // the same, back to back
     std::string datagram;  // as sent, encrypted
     Clock::time_point sent_at;
+    Clock::time_point first_sent;
   };
   std::uint32_t take_id();
 

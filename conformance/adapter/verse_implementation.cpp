@@ -16,6 +16,16 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
+// While waiting for a round trip: how often the driver's session is
+// checked, and how long a packet may stay unacknowledged on loopback-speed
+// hosts before the session counts as dropped (a host acks on receipt).
+constexpr double kSessionCheckSeconds = 0.1;
+constexpr double kDeadSessionSeconds = 1.0;
+// reset()'s node_create on a session in use: a host that acknowledges but
+// does not answer (r6 after running a node_index_subscribe decoded from
+// garbage) gets a fresh login after this, not the whole --timeout.
+constexpr double kFirstCreateSeconds = 1.0;
+
 double seconds_left(Clock::time_point deadline) {
   return std::max(0.0, std::chrono::duration<double>(deadline - Clock::now()).count());
 }
@@ -167,6 +177,7 @@ Answer VerseImplementation::connect() {
   if (const char* pw = std::getenv("VERSE_PASSWORD")) o.password = pw;
   o.login_timeout_s = options_.timeout_seconds;
   o.bone_form = bone_form_;
+  o.unacknowledged_limit_s = std::min(kDeadSessionSeconds, options_.timeout_seconds);
   const std::string where = host_ + ":" + std::to_string(port_);
   for (auto* session : {driver_.get(), observer_.get()}) {
     const verse::Status st = session->connect(host_, port_, o);
@@ -185,7 +196,7 @@ Answer VerseImplementation::connect() {
   return {};
 }
 
-Answer VerseImplementation::make_node() {
+Answer VerseImplementation::make_node(double create_timeout_s) {
   if (have_node_) {
     verse::wire::NodeDestroy destroy;
     destroy.node_id = node_;
@@ -194,7 +205,8 @@ Answer VerseImplementation::make_node() {
     have_node_ = false;
   }
   std::uint32_t id = 0;
-  if (const verse::Status st = driver_->create_geometry_node(&id, options_.timeout_seconds); !st.ok())
+  const double wait = create_timeout_s > 0 ? std::min(create_timeout_s, options_.timeout_seconds) : options_.timeout_seconds;
+  if (const verse::Status st = driver_->create_geometry_node(&id, wait); !st.ok())
     return failed(call_status_of(st), "creating a geometry node (node_create): " + st.to_string());
   node_ = id;
   have_node_ = true;
@@ -214,12 +226,12 @@ Answer VerseImplementation::start() {
 
 Answer VerseImplementation::reset() {
   if (broken_ || !driver_ || !driver_->connected() || !observer_->connected()) return start();
-  Answer a = make_node();
+  Answer a = make_node(kFirstCreateSeconds);
   // A host may end a session without a word (r6 runs a connect_terminate
   // it decoded from the rest of a desynchronised packet and forgets the
   // session): then nothing it is sent is answered. One fresh login tells
   // that apart from a host that no longer answers at all.
-  if (a.status == CallStatus::Timeout && silent_since_.empty()) a = start();
+  if ((a.status == CallStatus::Timeout || a.status == CallStatus::Crash) && silent_since_.empty()) a = start();
   return a;
 }
 
@@ -258,7 +270,18 @@ Answer VerseImplementation::settle(const std::string& what) {
     return failed(call_status_of(st), what + ": sending the round-trip node_name_set: " + st.to_string());
   for (;;) {
     verse::WireCommand w;
-    const verse::Status st = observer_->receive(&w, seconds_left(deadline));
+    const double left = seconds_left(deadline);
+    const verse::Status st = observer_->receive(&w, std::min(left, kSessionCheckSeconds));
+    if (st.code == verse::Status::Code::Timeout && left > kSessionCheckSeconds) {
+      drain_driver();  // reads the host's acks of the driver's packets
+      if (driver_->unacknowledged_for() > kDeadSessionSeconds)
+        return failed(CallStatus::Crash,
+                      what + ": the host has not acknowledged the driver's packets for " +
+                          std::to_string(kDeadSessionSeconds) +
+                          " s: it dropped the session (r6 does so silently when the rest of a packet it could not "
+                          "decode reads as connect_terminate)");
+      continue;
+    }
     if (!st.ok()) {
       if (st.code == verse::Status::Code::Timeout)
         return failed(CallStatus::Timeout,

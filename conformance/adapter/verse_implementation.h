@@ -76,7 +76,7 @@ class VerseImplementation final : public Implementation {
 
  private:
   Answer connect();
-  Answer make_node();
+  Answer make_node(double create_timeout_s = 0);  // 0: the call time-out
   // Sends node_name_set(node, "vgc-barrier-<n>") on the driver and applies
   // what the observer receives until that echo; then, while the host
   // announced new layers, subscribes the observer to them and waits for the
