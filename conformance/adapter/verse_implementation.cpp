@@ -114,12 +114,13 @@ void VerseImplementation::use_bone_form(verse::BoneForm f) {
 }
 
 Answer VerseImplementation::probe_bone_form() {
-  // The weight layer a bone needs (BONE-WEIGHT-1), then the bone. Its
-  // rotation has no zero byte, so a host of r6's form reads it as two
-  // 15-byte labels and nothing of it is left over to be read as commands.
+  // The weight layer a bone needs (BONE-WEIGHT-1), then the bone with the
+  // identity rotation: a host of r6's form reads the rotation's first two
+  // (zero) bytes as empty rotation and scale labels, then stops at the next
+  // zero byte (command 0 does not decode there), so nothing else is run.
   use_bone_form(verse::BoneForm::Spec);
   cmd::LayerCreate layer{2, "vgc_probe_w", static_cast<std::uint8_t>(LayerType::VertexUint32), 0, 0};
-  cmd::BoneCreate bone{0xFFFF, "vgc_probe_w", "", 0xFFFF, {0, 0, 0}, "", {0.3, 0.3, 0.3, 0.3}, ""};
+  cmd::BoneCreate bone{0xFFFF, "vgc_probe_w", "", 0xFFFF, {0, 0, 0}, "", {0, 0, 0, 1}, ""};
   const std::size_t other_before = observer_->counters().other_bone_form;
   for (const Command& c : {Command(layer), Command(bone)}) {
     if (const verse::Status st = driver_->send(verse::wire::Geometry{node_, c}, true); !st.ok())
@@ -145,6 +146,15 @@ VerseImplementation::~VerseImplementation() {
   }
   if (observer_) observer_->disconnect();
   if (driver_) driver_->disconnect();
+}
+
+RouteLimits VerseImplementation::limits() const {
+  RouteLimits l = verse_route_limits();
+  if (bone_form_known_ && bone_form_ == verse::BoneForm::R6)
+    l.clauses["BONE-VALUE-1"] =
+        "in r6's form of bone_create (the host's; docs/verse_wire.md section 4) a bone carries no rotation, so a "
+        "non-finite or zero rotation cannot be sent";
+  return l;
 }
 
 std::string VerseImplementation::identity() const {

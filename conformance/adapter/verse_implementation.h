@@ -72,7 +72,7 @@ class VerseImplementation final : public Implementation {
   Answer apply(const Command& c) override;
   Document snapshot() override;
   Document derived() override;
-  RouteLimits limits() const override { return verse_route_limits(); }
+  RouteLimits limits() const override;
 
  private:
   Answer connect();
