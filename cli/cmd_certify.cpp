@@ -157,6 +157,7 @@ int run(const Options& o) {
 
   ReportContext ctx;
   ctx.implementation_spec = o.impl;
+  if (o.impl.rfind("verse:", 0) == 0) ctx.implementation_identity = sut->identity();  // host, release, bone form
   ctx.command_line = rerun_command(o);
   ctx.started = utc_now();
   if (!o.baseline.empty()) {
@@ -165,6 +166,7 @@ int run(const Options& o) {
   }
   fmt::print(stderr, "vgc certify: {} (seed {}, {} cases per property, budget {:g} s, shard {})\n", o.impl, o.seed,
              o.cases, o.budget, o.shard);
+  if (!ctx.implementation_identity.empty()) fmt::print(stderr, "vgc certify: {}\n", ctx.implementation_identity);
 
   ProgressLine line(!o.quiet);
   ro.progress = [&line](const RunProgress& p) {
