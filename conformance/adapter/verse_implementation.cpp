@@ -177,11 +177,22 @@ Answer VerseImplementation::connect() {
   if (!silent_since_.empty())
     return failed(CallStatus::Timeout, "the Verse host stopped answering (" + silent_since_ +
                                            "); vgc does not wait for it again in this run");
-  if (observer_) observer_->disconnect();
+  // Only the driver's session was dropped (the host forgot it: section 7 of
+  // docs/adapters.md): the observer stays, after a round trip on the old
+  // node that takes in everything still under way for it; a login costs a
+  // second on r6.
+  const bool keep_observer = driver_lost_ && observer_ && observer_->connected() && [&] {
+    std::vector<verse::WireCommand> stale;
+    return observer_->barrier(node_, std::min(kDeadSessionSeconds, options_.timeout_seconds), &stale).ok();
+  }();
+  driver_lost_ = false;
+  if (observer_ && !keep_observer) observer_->disconnect();
   if (driver_) driver_->disconnect();
   driver_ = std::make_unique<verse::ClientSession>();
-  observer_ = std::make_unique<verse::ClientSession>();
-  have_node_ = false;
+  if (!keep_observer) {
+    observer_ = std::make_unique<verse::ClientSession>();
+    have_node_ = false;  // the old node is left to the host
+  }  // else make_node() destroys the old node, if it still has one, through the new driver
   verse::ClientOptions o;
   o.name = login_;
   if (const char* pw = std::getenv("VERSE_PASSWORD")) o.password = pw;
@@ -190,6 +201,7 @@ Answer VerseImplementation::connect() {
   o.unacknowledged_limit_s = std::min(kDeadSessionSeconds, options_.timeout_seconds);
   const std::string where = host_ + ":" + std::to_string(port_);
   for (auto* session : {driver_.get(), observer_.get()}) {
+    if (session == observer_.get() && keep_observer) continue;
     const verse::Status st = session->connect(host_, port_, o);
     // A host that answered before and no longer answers a login has gone
     // silent: waiting for it again at every test case would only turn a
@@ -237,6 +249,7 @@ Answer VerseImplementation::start() {
 Answer VerseImplementation::reset() {
   if (broken_ || !driver_ || !driver_->connected() || !observer_->connected()) return start();
   Answer a = make_node(kFirstCreateSeconds);
+  if (a.status == CallStatus::Crash && !driver_->connected() && observer_->connected()) driver_lost_ = true;
   // A host may end a session without a word (r6 runs a connect_terminate
   // it decoded from the rest of a desynchronised packet and forgets the
   // session): then nothing it is sent is answered. One fresh login tells
@@ -284,12 +297,15 @@ Answer VerseImplementation::settle(const std::string& what) {
     const verse::Status st = observer_->receive(&w, std::min(left, kSessionCheckSeconds));
     if (st.code == verse::Status::Code::Timeout && left > kSessionCheckSeconds) {
       drain_driver();  // reads the host's acks of the driver's packets
-      if (driver_->unacknowledged_for() > kDeadSessionSeconds)
-        return failed(CallStatus::Crash,
+      if (driver_->unacknowledged_for() > kDeadSessionSeconds) {
+        Answer lost = failed(CallStatus::Crash,
                       what + ": the host has not acknowledged the driver's packets for " +
                           std::to_string(kDeadSessionSeconds) +
                           " s: it dropped the session (r6 does so silently when the rest of a packet it could not "
                           "decode reads as connect_terminate)");
+        driver_lost_ = true;
+        return lost;
+      }
       continue;
     }
     if (!st.ok()) {

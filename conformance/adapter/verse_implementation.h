@@ -98,6 +98,7 @@ class VerseImplementation final : public Implementation {
   std::uint32_t node_ = 0;
   bool have_node_ = false;
   bool broken_ = true;  // reset() must log in again
+  bool driver_lost_ = false;  // only the driver's session is gone: connect() keeps the observer
   std::uint64_t barrier_count_ = 0;
   bool ever_connected_ = false;
   std::string silent_since_;  // set when a host that answered before no longer answers a login
