@@ -48,6 +48,7 @@ class VerseNodeMirror {
   std::string snapshot() const;
 
   const std::map<std::uint16_t, Layer>& layers() const { return layers_; }
+  const std::map<std::uint16_t, Bone>& bones() const { return bones_; }
 
  private:
   bool new_element(bool vertex_stack, std::uint32_t id, std::string* error);
