@@ -72,6 +72,9 @@ class ClientSession {
   Status subscribe_layer(std::uint32_t node_id, std::uint16_t layer_id, vgc::RealFormat format);
   Status send_geometry(std::uint32_t node_id, const vgc::Command& command);
   Status send(const WireCommand& command);  // any other command (node_name_set, node_destroy, ...)
+  // All of them queued, then sent together: in one packet when they fit
+  // (as r6's client sends a flush; tests of docs/verse_wire.md section 6).
+  Status send_burst(const std::vector<WireCommand>& commands);
 
   // The next decoded incoming command, waiting up to timeout_s (0: only
   // what has already arrived). Timeout when none came.
