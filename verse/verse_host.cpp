@@ -113,7 +113,10 @@ struct Host::Impl {
 
   void send_to(Session& s, const WireCommand& c) {
     std::string bytes;
-    Status st = encode_command(c, &bytes);
+    // A session that sent a bone_create in r6's form gets bones in that form
+    // (docs/verse_wire.md section 10).
+    const bool r6_bones = s.channel->counters().other_bone_form > 0;
+    Status st = encode_command(c, &bytes, r6_bones ? BoneForm::R6 : BoneForm::Spec);
     if (st.ok()) st = s.channel->queue(std::move(bytes));
     if (!st.ok()) log("cannot send " + describe(c) + " to " + s.peer.to_string() + ": " + st.detail);
   }
@@ -187,6 +190,7 @@ struct Host::Impl {
         }
         s.connected = true;
         s.channel = std::make_unique<Channel>(s.data_key, options.resend_interval_s);
+        s.channel->set_bone_form(BoneForm::Spec, true);  // r6's client speaks r6's bone_create
         ++counters.logins;
         log("login: " + from.to_string() + " as '" + name + "', avatar " + std::to_string(s.avatar));
       }

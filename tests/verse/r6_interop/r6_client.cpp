@@ -401,9 +401,14 @@ bool run_script(std::string* failed_step) {
   expect("slots", "crease vertex", "v_uint 5", g.crease_vertex);
   expect("slots", "crease edge", "p_cuint 9", g.crease_edge);
   // step bone: r6's own form of bone_create (v_cmd_def_g.c), in a flush of its own
-  verse_send_g_bone_create(g.node, 0xFFFF, "v_real", "v_xyz", 0xFFFF, 1, 2, 3, "pl", "rl", "sl");
+  verse_send_g_bone_create(g.node, 0xFFFF, "v_real", "v_uint", 0xFFFF, 1, 2, 3, "pl", "rl", "sl");
   if (!step("bone", settle())) return false;
   expect("bone", "bones", "1", std::to_string(g.bones.size()));
+  // Spec 2.6.3 has no scale label (r6's form does): compared up to it.
+  std::string bone = g.bones.empty() ? "(none)" : g.bones.begin()->second;
+  expect("bone", "bone fields",
+         "weight=v_real reference=v_uint parent=65535 pos_x=1 pos_y=2 pos_z=3 position_label=pl rotation_label=rl",
+         bone.substr(0, bone.find(" scale_label=")));
   // step real64: every real layer again at REAL64 (the 49 alias, then 49)
   std::vector<VLayerID> reals = {0, 1, layer_named("v_real"), layer_named("v_xyz"), layer_named("p_creal"),
                                  layer_named("p_freal")};
