@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <cstring>
 #include <map>
+#include <set>
 #include <utility>
 
 // r6's own functions, declared here with the signatures of its sources
@@ -46,6 +47,8 @@ struct TapState {
   PacketRecord* current = nullptr;  // the packet r6 is decoding now
   bool decode_only = false;
   R6Unpack unpackers[256] = {};
+  std::uint32_t last_command_packet = 0;
+  std::set<std::uint32_t> acked;
 };
 
 TapState& tap() {
@@ -119,11 +122,22 @@ void decode_sent(const char* data, std::size_t length) {
   __real_v_fs_unpack(reinterpret_cast<std::uint8_t*>(&copy[0]), length);
   s.current = saved;
   s.decode_only = saved_mode;
+  for (const Cmd& c : rec->cmds)
+    if (c.number != 7 && c.number != 8) s.last_command_packet = id;
 }
 
 }  // namespace
 
 const std::vector<PacketRecord>& records() { return tap().packets; }
+std::uint32_t last_command_packet() { return tap().last_command_packet; }
+bool acknowledged(std::uint32_t id) { return tap().acked.count(id) != 0; }
+void forget() {
+  TapState& s = tap();
+  s.packets.clear();
+  s.index.clear();
+  s.acked.clear();
+  s.current = nullptr;
+}
 
 std::string data_key() {
   TapState& s = tap();
@@ -232,6 +246,7 @@ static void note_ack_nak(unsigned number, std::uint32_t id) {
 
 extern "C" void __wrap_callback_send_packet_ack(void* user, std::uint32_t packet_id) {
   note_ack_nak(7, packet_id);
+  if (!r6tap::tap().decode_only) r6tap::tap().acked.insert(packet_id);
   if (!r6tap::tap().decode_only) __real_callback_send_packet_ack(user, packet_id);
 }
 

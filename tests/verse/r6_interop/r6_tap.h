@@ -42,6 +42,13 @@ struct PacketRecord {
 const std::vector<PacketRecord>& records();
 // The data key of the session (64 bytes), empty before the accept.
 std::string data_key();
+// The id of the last data packet r6's library sent that held more than
+// acks and naks (0: none yet), and whether the peer acknowledged an id.
+std::uint32_t last_command_packet();
+bool acknowledged(std::uint32_t id);
+// Drops the records and acks kept so far (a long-running program calls it
+// between sessions' steps, outside any callback).
+void forget();
 // Called by the program's callbacks: appends one decoded command text to the
 // command r6's unpacker is running now (ignored outside an unpack).
 void note_decoded(const std::string& text);
