@@ -89,7 +89,43 @@ RouteLimits verse_route_limits() {
 
 VerseImplementation::VerseImplementation(const std::string& spec, const std::string& login_name,
                                          const std::string& host, std::uint16_t port, const OpenOptions& options)
-    : spec_(spec), login_(login_name), host_(host), port_(port), options_(options) {}
+    : spec_(spec), login_(login_name), host_(host), port_(port), options_(options) {
+  if (options.verse_bone_form == "spec" || options.verse_bone_form == "r6") {
+    bone_form_ = options.verse_bone_form == "r6" ? verse::BoneForm::R6 : verse::BoneForm::Spec;
+    bone_form_known_ = true;
+    bone_form_why_ = "as --verse-bone-form " + options.verse_bone_form + " asks";
+  }
+}
+
+void VerseImplementation::use_bone_form(verse::BoneForm f) {
+  bone_form_ = f;
+  if (driver_) driver_->set_bone_form(f);
+  if (observer_) observer_->set_bone_form(f);
+}
+
+Answer VerseImplementation::probe_bone_form() {
+  // The weight layer a bone needs (BONE-WEIGHT-1), then the bone. Its
+  // rotation has no zero byte, so a host of r6's form reads it as two
+  // 15-byte labels and nothing of it is left over to be read as commands.
+  use_bone_form(verse::BoneForm::Spec);
+  cmd::LayerCreate layer{2, "vgc_probe_w", static_cast<std::uint8_t>(LayerType::VertexUint32), 0, 0};
+  cmd::BoneCreate bone{0xFFFF, "vgc_probe_w", "", 0xFFFF, {0, 0, 0}, "", {0.3, 0.3, 0.3, 0.3}, ""};
+  const std::size_t other_before = observer_->counters().other_bone_form;
+  for (const Command& c : {Command(layer), Command(bone)}) {
+    if (const verse::Status st = driver_->send(verse::wire::Geometry{node_, c}, true); !st.ok())
+      return failed(call_status_of(st), "probing the host's bone_create form: " + st.to_string());
+  }
+  Answer a = settle("probing the host's bone_create form");
+  if (a.status != CallStatus::Ok) return a;
+  const bool r6 = observer_->counters().other_bone_form != other_before;
+  const bool bone_seen = !mirror_.bones().empty();
+  use_bone_form(r6 ? verse::BoneForm::R6 : verse::BoneForm::Spec);
+  bone_form_known_ = true;
+  bone_form_why_ = r6 ? "the host answered a spec-form probe in r6's form"
+                      : bone_seen ? "the host answered a spec-form probe in the spec's form"
+                                  : "the host did not answer a bone_create probe; the spec's form by default";
+  return make_node();  // a fresh node again
+}
 
 VerseImplementation::~VerseImplementation() {
   if (driver_ && have_node_ && !broken_) {
@@ -101,7 +137,13 @@ VerseImplementation::~VerseImplementation() {
   if (driver_) driver_->disconnect();
 }
 
-std::string VerseImplementation::identity() const { return identity_.empty() ? spec_ : identity_; }
+std::string VerseImplementation::identity() const {
+  std::string id = identity_.empty() ? spec_ : identity_;
+  if (bone_form_known_)
+    id += "; bone_create in the " + std::string(bone_form_ == verse::BoneForm::R6 ? "r6 form" : "spec 2.6.3 form") +
+          " (" + bone_form_why_ + ")";
+  return id;
+}
 
 Answer VerseImplementation::failed(CallStatus s, const std::string& detail) {
   broken_ = true;
@@ -124,6 +166,7 @@ Answer VerseImplementation::connect() {
   o.name = login_;
   if (const char* pw = std::getenv("VERSE_PASSWORD")) o.password = pw;
   o.login_timeout_s = options_.timeout_seconds;
+  o.bone_form = bone_form_;
   const std::string where = host_ + ":" + std::to_string(port_);
   for (auto* session : {driver_.get(), observer_.get()}) {
     const verse::Status st = session->connect(host_, port_, o);
@@ -136,7 +179,7 @@ Answer VerseImplementation::connect() {
       return failed(call_status_of(st), "logging in to the Verse host at " + where + " as \"" + login_ +
                                             "\": " + st.to_string());
   }
-  identity_ = "Verse host at " + where;
+  identity_ = "Verse host at " + where + " (release " + std::to_string(driver_->host_release()) + ")";
   broken_ = false;
   ever_connected_ = true;
   return {};
@@ -164,12 +207,20 @@ Answer VerseImplementation::make_node() {
 Answer VerseImplementation::start() {
   Answer a = connect();
   if (a.status != CallStatus::Ok) return a;
-  return make_node();
+  a = make_node();
+  if (a.status != CallStatus::Ok || bone_form_known_) return a;
+  return probe_bone_form();
 }
 
 Answer VerseImplementation::reset() {
   if (broken_ || !driver_ || !driver_->connected() || !observer_->connected()) return start();
-  return make_node();
+  Answer a = make_node();
+  // A host may end a session without a word (r6 runs a connect_terminate
+  // it decoded from the rest of a desynchronised packet and forgets the
+  // session): then nothing it is sent is answered. One fresh login tells
+  // that apart from a host that no longer answers at all.
+  if (a.status == CallStatus::Timeout && silent_since_.empty()) a = start();
+  return a;
 }
 
 void VerseImplementation::drain_driver() {
@@ -257,7 +308,7 @@ Answer VerseImplementation::apply(const Command& c) {
     g.node_id = node_;
     g.command = c;
     std::string bytes;
-    if (const verse::Status st = verse::encode_command(g, &bytes); !st.ok()) {
+    if (const verse::Status st = verse::encode_command(g, &bytes, bone_form_); !st.ok()) {
       Answer a;
       a.not_sent = true;
       a.verdict_reported = false;

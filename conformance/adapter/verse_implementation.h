@@ -39,6 +39,7 @@
 
 #include "implementation.h"
 #include "verse_node_mirror.h"
+#include "wire_commands.h"
 
 namespace vgc {
 
@@ -82,6 +83,12 @@ class VerseImplementation final : public Implementation {
   // observer's own barrier (their contents come before its echo).
   Answer settle(const std::string& what);
   Answer failed(CallStatus s, const std::string& detail);
+  // --verse-bone-form auto: on the fresh node, a bone_create in the spec's
+  // form (after the weight layer it needs); the host's broadcast of the bone
+  // parses in the form the host speaks (Channel's other_bone_form). Sets
+  // bone_form_ and leaves a fresh node.
+  Answer probe_bone_form();
+  void use_bone_form(verse::BoneForm f);
   void drain_driver();
 
   std::string spec_, login_, host_;
@@ -95,6 +102,9 @@ class VerseImplementation final : public Implementation {
   bool ever_connected_ = false;
   std::string silent_since_;  // set when a host that answered before no longer answers a login
   VerseNodeMirror mirror_;
+  verse::BoneForm bone_form_ = verse::BoneForm::Spec;
+  bool bone_form_known_ = false;  // given as an option, or probed
+  std::string bone_form_why_;     // for identity(): how the form was chosen
   std::string identity_;
 };
 
