@@ -332,45 +332,56 @@ const Names kLayers[] = {
 };
 const uint32 kNone = 0xFFFFFFFFu;
 
-// The scripted session; false when a step could not complete (no answer).
-bool run_script(std::string* failed_step) {
-  auto step = [&](const char* name, bool ok) {
-    if (!ok && failed_step->empty()) *failed_step = name;
-    return ok;
-  };
-  // login: index subscription, our node, its base layers
+// One step's outcome: false (and the step's name kept) when the host did
+// not answer in time.
+using Check = std::function<bool(const char*, bool)>;
+
+// login: index subscription, our node, its base layers
+bool step_login(const Check& check) {
   verse_send_node_index_subscribe(1u << V_NT_GEOMETRY);
   verse_send_node_create(~0u, V_NT_GEOMETRY, VN_OWNER_MINE);
-  if (!step("node_create", pump_until([] { return g.node != 0xFFFFFFFFu; }, 5))) return false;
+  if (!check("node_create", pump_until([] { return g.node != 0xFFFFFFFFu; }, 5))) return false;
   verse_send_node_subscribe(g.node);
-  if (!step("node_subscribe",
+  if (!check("node_subscribe",
             pump_until([] { return g.layers.count(0) != 0 && g.layers.count(1) != 0; }, 5) && settle()))
     return false;
   verse_send_g_layer_subscribe(g.node, 0, VN_FORMAT_REAL32);
   verse_send_g_layer_subscribe(g.node, 1, VN_FORMAT_REAL32);
-  // step layers: one of every type, the host picks the ids
+  return true;
+}
+
+// step layers: one of every type, the host picks the ids
+bool step_layers(const Check& check) {
   for (const Names& l : kLayers) verse_send_g_layer_create(g.node, 0xFFFF, l.name, l.type, l.def_uint, l.def_real);
-  if (!step("layers", settle())) return false;
+  if (!check("layers", settle())) return false;
   for (const Names& l : kLayers) {
     expect("layers", std::string("layer ") + l.name, "1", layer_named(l.name) == 0xFFFF ? "0" : "1");
     if (layer_named(l.name) != 0xFFFF) verse_send_g_layer_subscribe(g.node, layer_named(l.name), VN_FORMAT_REAL32);
   }
-  if (!step("subscribe", settle())) return false;
-  // step vertices, then polygons (each after the other has arrived)
+  if (!check("subscribe", settle())) return false;
+  return true;
+}
+
+// step vertices, then polygons (each after the other has arrived)
+bool step_geometry(const Check& check) {
   verse_send_g_vertex_set_xyz_real32(g.node, 0, 0, 0, 0, 0);
   verse_send_g_vertex_set_xyz_real32(g.node, 0, 1, 1, 0, 0);
   verse_send_g_vertex_set_xyz_real64(g.node, 0, 2, 0, 1, 0);
   verse_send_g_vertex_set_xyz_real64(g.node, 0, 3, -4, -4, -4);
   verse_send_g_vertex_set_xyz_real32(g.node, 0, 4, 2, 2, 2);
-  if (!step("vertices", settle())) return false;
+  if (!check("vertices", settle())) return false;
   expect("vertices", "vertex 2", "0 1 0", base_slot(0, 2));
   expect("vertices", "vertex 3", "-4 -4 -4", base_slot(0, 3));
   verse_send_g_polygon_set_corner_uint32(g.node, 1, 0, 0, 1, 2, kNone);
   verse_send_g_polygon_set_corner_uint32(g.node, 1, 1, 0, 1, 2, 3);
-  if (!step("polygons", settle())) return false;
+  if (!check("polygons", settle())) return false;
   expect("polygons", "polygon 0", "0 1 2 4294967295", base_slot(1, 0));
   expect("polygons", "polygon 1", "0 1 2 3", base_slot(1, 1));
-  // step slots: every set command on a layer of its type
+  return true;
+}
+
+// step slots: every set command on a layer of its type
+bool step_slots(const Check& check) {
   verse_send_g_vertex_set_uint32(g.node, layer_named("v_uint"), 1, 42);
   verse_send_g_vertex_set_real64(g.node, layer_named("v_real"), 0, -4.0);
   verse_send_g_vertex_set_real32(g.node, layer_named("v_real"), 2, 1.5f);
@@ -385,7 +396,7 @@ bool run_script(std::string* failed_step) {
   verse_send_g_polygon_set_face_real32(g.node, layer_named("p_freal"), 1, 0.125f);
   verse_send_g_crease_set_vertex(g.node, "v_uint", 5);
   verse_send_g_crease_set_edge(g.node, "p_cuint", 9);
-  if (!step("slots", settle())) return false;
+  if (!check("slots", settle())) return false;
   expect("slots", "v_uint[1]", "42", slot("v_uint", 1));
   expect("slots", "v_real[0]", "-4", slot("v_real", 0));
   expect("slots", "v_real[2]", "1.5", slot("v_real", 2));
@@ -400,61 +411,98 @@ bool run_script(std::string* failed_step) {
   expect("slots", "p_freal[1]", "0.125", slot("p_freal", 1));
   expect("slots", "crease vertex", "v_uint 5", g.crease_vertex);
   expect("slots", "crease edge", "p_cuint 9", g.crease_edge);
-  // step bone: r6's own form of bone_create (v_cmd_def_g.c), in a flush of its own
+  return true;
+}
+
+// step bone: r6's own form of bone_create (v_cmd_def_g.c), in a flush of its own
+bool step_bone(const Check& check) {
   verse_send_g_bone_create(g.node, 0xFFFF, "v_real", "v_uint", 0xFFFF, 1, 2, 3, "pl", "rl", "sl");
-  if (!step("bone", settle())) return false;
+  if (!check("bone", settle())) return false;
   expect("bone", "bones", "1", std::to_string(g.bones.size()));
   // Spec 2.6.3 has no scale label (r6's form does): compared up to it.
   std::string bone = g.bones.empty() ? "(none)" : g.bones.begin()->second;
   expect("bone", "bone fields",
          "weight=v_real reference=v_uint parent=65535 pos_x=1 pos_y=2 pos_z=3 position_label=pl rotation_label=rl",
          bone.substr(0, bone.find(" scale_label=")));
-  // step real64: every real layer again at REAL64 (the 49 alias, then 49)
+  return true;
+}
+
+// step real64: every real layer again at REAL64 (the 49 alias, then 49)
+bool step_real64(const Check& check) {
   std::vector<VLayerID> reals = {0, 1, layer_named("v_real"), layer_named("v_xyz"), layer_named("p_creal"),
                                  layer_named("p_freal")};
   for (VLayerID l : reals) verse_send_g_layer_unsubscribe(g.node, l);
-  if (!step("unsubscribe", settle())) return false;
+  if (!check("unsubscribe", settle())) return false;
   for (VLayerID l : reals) verse_send_g_layer_subscribe(g.node, l, VN_FORMAT_REAL64);
-  if (!step("real64", settle())) return false;
+  if (!check("real64", settle())) return false;
   expect("real64", "vertex 3", "-4 -4 -4", base_slot(0, 3));
   expect("real64", "v_real[0]", "-4", slot("v_real", 0));
   expect("real64", "p_creal[0]", "0.5 -4 2 0", slot("p_creal", 0));
-  // step deletes: polygon 1, vertex 3 (real64 alias), the bone, a layer
+  return true;
+}
+
+// step deletes: polygon 1, vertex 3 (real64 alias), the bone, a layer
+bool step_deletes(const Check& check) {
   verse_send_g_polygon_delete(g.node, 1);
-  if (!step("polygon_delete", settle())) return false;
+  if (!check("polygon_delete", settle())) return false;
   verse_send_g_vertex_delete_real64(g.node, 3);
   if (!g.bones.empty()) verse_send_g_bone_destroy(g.node, static_cast<uint16>(g.bones.begin()->first));
   verse_send_g_layer_destroy(g.node, layer_named("doomed"));
-  if (!step("deletes", settle())) return false;
+  if (!check("deletes", settle())) return false;
   expect("deletes", "polygon 1", "(none)", base_slot(1, 1));
   expect("deletes", "vertex 3", "(none)", base_slot(0, 3));
   expect("deletes", "bones", "0", std::to_string(g.bones.size()));
   expect("deletes", "layer doomed", "0", layer_named("doomed") == 0xFFFF ? "0" : "1");
-  // step real32 delete: layer 0 at REAL32 again, vertex 4 by the real32 alias
+  return true;
+}
+
+// step real32 delete: layer 0 at REAL32 again, vertex 4 by the real32 alias
+bool step_real32_delete(const Check& check) {
   verse_send_g_layer_unsubscribe(g.node, 0);
-  if (!step("resubscribe", settle())) return false;
+  if (!check("resubscribe", settle())) return false;
   verse_send_g_layer_subscribe(g.node, 0, VN_FORMAT_REAL32);
-  if (!step("resubscribe", settle())) return false;
+  if (!check("resubscribe", settle())) return false;
   verse_send_g_vertex_delete_real32(g.node, 4);
   verse_send_g_crease_set_vertex(g.node, "", 0);
-  if (!step("delete_real32", settle())) return false;
+  if (!check("delete_real32", settle())) return false;
   expect("delete_real32", "vertex 4", "(none)", base_slot(0, 4));
   expect("delete_real32", "vertex 0", "0 0 0", base_slot(0, 0));
   expect("delete_real32", "crease vertex", "\\empty 0", g.crease_vertex);
-  // step burst (issue 18): a layer, three vertices and a triangle in one flush
+  return true;
+}
+
+// step burst (issue 18): a layer, three vertices and a triangle in one flush
+bool step_burst(const Check& check) {
   verse_send_g_layer_create(g.node, 0xFFFF, "burst", VN_G_LAYER_VERTEX_UINT32, 0, 0);
   verse_send_g_vertex_set_xyz_real32(g.node, 0, 10, 5, 5, 5);
   verse_send_g_vertex_set_xyz_real32(g.node, 0, 11, 6, 5, 5);
   verse_send_g_vertex_set_xyz_real32(g.node, 0, 12, 5, 6, 5);
   verse_send_g_polygon_set_corner_uint32(g.node, 1, 5, 10, 11, 12, kNone);
-  if (!step("burst", settle())) return false;
+  if (!check("burst", settle())) return false;
   expect("burst", "layer burst", "1", layer_named("burst") == 0xFFFF ? "0" : "1");
   expect("burst", "vertex 12", "5 6 5", base_slot(0, 12));
   expect("burst", "polygon 5", "10 11 12 4294967295", base_slot(1, 5));
-  // the end: the node goes, the session says goodbye
+  return true;
+}
+
+// the end: the node goes, the session says goodbye
+bool step_end(const Check& check) {
   verse_send_node_destroy(g.node);
   double until = now_s() + 0.1;
-  return step("node_destroy", pump_until([&] { return now_s() > until; }, 1));
+  return check("node_destroy", pump_until([&] { return now_s() > until; }, 1));
+}
+
+// The scripted session, step by step; false when a step could not
+// complete (no answer), *failed_step naming it.
+bool run_script(std::string* failed_step) {
+  const Check check = [&](const char* name, bool ok) {
+    if (!ok && failed_step->empty()) *failed_step = name;
+    return ok;
+  };
+  for (bool (*step)(const Check&) : {step_login, step_layers, step_geometry, step_slots, step_bone, step_real64,
+                                     step_deletes, step_real32_delete, step_burst, step_end})
+    if (!step(check)) return false;
+  return true;
 }
 
 bool write_transcript(const char* path, const char* host) {
