@@ -262,6 +262,17 @@ Status ClientSession::send_geometry(std::uint32_t node_id, const vgc::Command& c
   return impl_->send(wire::Geometry{node_id, command});
 }
 Status ClientSession::send(const WireCommand& command, bool own_packet) { return impl_->send(command, own_packet); }
+Status ClientSession::send_burst(const std::vector<WireCommand>& commands) {
+  Impl& s = *impl_;
+  if (!s.connected) return Status::closed("not connected");
+  for (const WireCommand& c : commands) {
+    std::string bytes;
+    Status st = encode_command(c, &bytes, s.options.bone_form);
+    if (st.ok()) st = s.channel->queue(std::move(bytes));
+    if (!st.ok()) return st;
+  }
+  return s.flush();
+}
 
 Status ClientSession::receive(WireCommand* out, double timeout_s) {
   Impl& s = *impl_;

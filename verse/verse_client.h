@@ -93,6 +93,9 @@ class ClientSession {
   // Any other command (node_name_set, node_destroy, ...). own_packet: in a
   // packet of its own (Channel::queue).
   Status send(const WireCommand& command, bool own_packet = false);
+  // All of them queued, then sent together: in one packet when they fit
+  // (as r6's client sends a flush; tests of docs/verse_wire.md section 6).
+  Status send_burst(const std::vector<WireCommand>& commands);
 
   // The next decoded incoming command, waiting up to timeout_s (0: only
   // what has already arrived). Timeout when none came.

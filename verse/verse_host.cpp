@@ -12,6 +12,7 @@
 #include <thread>
 
 #include "node.h"
+#include "packet_order.h"
 #include "snapshot.h"
 #include "snapshot_state.h"
 #include "wire_endpoint.h"
@@ -442,6 +443,7 @@ struct Host::Impl {
       log("protocol-error from " + from.to_string() + ": " + st.detail);
     }
     terminated = false;
+    order_packet(&got);  // one packet: creations before their uses (packet_order.h)
     for (WireCommand& c : got) {
       on_command(s, std::move(c));
       if (terminated) break;

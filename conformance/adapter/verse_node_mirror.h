@@ -48,6 +48,8 @@ class VerseNodeMirror {
   std::string snapshot() const;
 
   const std::map<std::uint16_t, Layer>& layers() const { return layers_; }
+  const CreaseSetting& vertex_crease() const { return vertex_crease_; }
+  const CreaseSetting& edge_crease() const { return edge_crease_; }
   const std::map<std::uint16_t, Bone>& bones() const { return bones_; }
 
  private:

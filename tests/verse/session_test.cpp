@@ -210,6 +210,41 @@ TEST(VerseSession, BoneCreateInR6sFormAndTheBarrierAfterOneTheHostCannotDecode) 
   EXPECT_EQ(a.s.counters().other_bone_form, 1u) << "no more packets in the other form";
 }
 
+// Issue 18 / docs/verse_wire.md section 6: r6's client sends one flush in
+// the hash order of the commands' addresses, e.g. the triangle before its
+// vertices. vgc's host applies a packet's layer commands, then vertex
+// commands, then polygon commands, so the triangle is kept.
+TEST(VerseSession, ABurstInR6sOrderKeepsTheTriangle) {
+  RunningHost h;
+  Client a;
+  a.connect(h);
+  ASSERT_TRUE(a.s.create_geometry_node(&a.node, kWait).ok());
+  ASSERT_TRUE(a.s.subscribe_node(a.node).ok());
+  ASSERT_TRUE(a.s.subscribe_layer(a.node, 0, RealFormat::Real32).ok());
+  ASSERT_TRUE(a.s.subscribe_layer(a.node, 1, RealFormat::Real32).ok());
+  (void)a.barrier();
+  auto g = [&](const Command& c) { return WireCommand{wire::Geometry{a.node, c}}; };
+  // The order r6's client sent this burst in (tests/verse/r6_fixtures/r6_host.txt, step burst).
+  ASSERT_TRUE(a.s.send_burst({g(cmd::LayerCreate{0xFFFF, "burst", 1, 0, 0}),
+                              g(cmd::PolygonSetCornerUint32{1, 5, {10, 11, 12, 0xFFFFFFFFu}}),
+                              g(cmd::VertexSetXyzReal32{0, 10, 5, 5, 5}),
+                              g(cmd::VertexSetXyzReal32{0, 11, 6, 5, 5}),
+                              g(cmd::VertexSetXyzReal32{0, 12, 5, 6, 5})})
+                  .ok());
+  auto seen = a.barrier();
+  EXPECT_EQ(geometry_of<cmd::VertexSetXyzReal32>(seen).size(), 3u);
+  EXPECT_EQ(geometry_of<cmd::LayerCreate>(seen).size(), 1u);
+  auto polys = geometry_of<cmd::PolygonSetCornerUint32>(seen);
+  ASSERT_EQ(polys.size(), 1u) << "the triangle sent before its vertices in one packet was dropped";
+  EXPECT_EQ(polys[0].v, (std::array<std::uint32_t, 4>{10, 11, 12, 0xFFFFFFFFu}));
+  // Two commands of one address keep their order: set then delete leaves no vertex.
+  ASSERT_TRUE(a.s.send_burst({g(cmd::VertexSetXyzReal32{0, 20, 1, 1, 1}), g(cmd::VertexDelete{20})}).ok());
+  seen = a.barrier();
+  auto deletes = geometry_of<cmd::VertexDelete>(seen);
+  ASSERT_EQ(deletes.size(), 1u);
+  EXPECT_EQ(deletes[0].vertex_id, 20u);
+}
+
 TEST(VerseSession, ASeededFaultOfTheServedNodeShowsOnTheWire) {
   std::vector<int> faults;
   std::string error;
