@@ -99,6 +99,7 @@ StepResult check_step(const Node& before, const Command& c, Implementation& sut,
     const bool changed = diff_documents(before_text, comparable(snap.text)).has_value();
     const bool reference_changed = expected == Reason::Ok && comparable(print_snapshot(*after)) != before_text;
     applied = changed || (expected == Reason::Ok && !reference_changed);
+    result.implementation_unchanged = !changed;
     observed_answer = changed ? "done, and the state changed (applied)" : "done, and the state is unchanged (dropped)";
   }
   if (applied != (expected == Reason::Ok)) {

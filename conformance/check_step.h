@@ -69,6 +69,10 @@ struct StepResult {
   // false when the route carries no derived document (RouteLimits::derived):
   // the step was judged on its verdict and snapshot only.
   bool derived_judged = true;
+  // Set when the implementation's state after the command was read and is
+  // the state before it (it dropped the command): the runner can then take
+  // a tolerated command out of a case without resetting (runner.cpp).
+  bool implementation_unchanged = false;
   // Set when the route could not carry the command (Answer::not_sent):
   // nothing was judged, *after is `before` (neither side changed), and the
   // runner counts nothing for the step. Says why.

@@ -57,6 +57,8 @@ struct CaseContext {
   // A tolerated clause's divergence as first seen (shortest program kept).
   std::map<std::string, PropertyFinding> tolerated_seen;
   bool set_aside_case = false;      // the current case diverged in a tolerated clause
+  int taken_out = 0;                // commands of the current case taken out (take_step_out)
+  long steps_taken_out = 0;         // ... in all cases of the property (outside shrinking)
   bool not_judged_case = false;     // the oracle could not judge the case's capability check
   bool shrinking = false;           // this round found its failure: cases now are shrink attempts
   int cases_done = 0, judged = 0, set_aside = 0, not_judged = 0, target = 0;
@@ -65,6 +67,7 @@ struct CaseContext {
   // Tallies (outside shrinking): the property's exercised counts, the run's
   // command kinds and unreported verdicts.
   std::map<std::string, long>* exercised = nullptr;
+  const std::vector<std::string_view>* declared = nullptr;  // the property's clauses
   std::map<std::string, long>* derived_only = nullptr;  // route without a derived document
   std::map<std::string, CommandKindCount>* kinds = nullptr;
   long* unreported = nullptr;
@@ -78,11 +81,10 @@ bool past_deadline() {
   return true;
 }
 
-// A tolerated clause diverged first: the case is set aside, and the first
-// (shortest) program that showed it is kept for the report.
-void set_case_aside(const Finding& f, const std::optional<CapabilityRequest>& request = std::nullopt) {
+// The first (shortest) program that showed a tolerated clause's divergence
+// is kept for the report.
+void note_tolerated(const Finding& f, const std::optional<CapabilityRequest>& request = std::nullopt) {
   CaseContext& c = *g_context;
-  c.set_aside_case = true;
   if (c.shrinking) return;
   auto it = c.tolerated_seen.find(f.clause);
   if (it == c.tolerated_seen.end() || it->second.program.commands.size() > c.trace.size()) {
@@ -93,6 +95,67 @@ void set_case_aside(const Finding& f, const std::optional<CapabilityRequest>& re
     pf.tolerated_from_start = c.baseline.count(f.clause) > 0;
     c.tolerated_seen[f.clause] = std::move(pf);
   }
+}
+
+// A tolerated clause diverged first: the case is set aside.
+void set_case_aside(const Finding& f, const std::optional<CapabilityRequest>& request = std::nullopt) {
+  g_context->set_aside_case = true;
+  note_tolerated(f, request);
+}
+
+// A command whose first divergence is a plain failure in a tolerated clause
+// is taken out of the case instead of setting the whole case aside: the
+// implementation is reset and the case so far, without that command, is
+// sent again and must agree with the model as it did before; then the case
+// goes on and every later command is judged. Without this, an
+// implementation that deviates on a command most cases send (a host that
+// ignores the id a bone_create asks for) leaves every clause downstream of
+// that command unjudged. A command the implementation dropped (its state is
+// still the state before) is taken out without a reset. Returns false, and
+// the case is set aside, when the case already had kMaxTakenOut commands
+// taken out, the divergence is not a plain failure (a crash or time-out
+// leaves an instance nothing should be built on), the replay does not agree
+// (an implementation that does not repeat itself), or no clause still
+// wants reach: taking out costs a reset and a replay, so it is spent only
+// while a clause the property is meant to check, with no finding of its
+// own, has been decided by fewer than kReachWanted judged steps.
+constexpr int kMaxTakenOut = 4;
+constexpr long kReachWanted = 20;
+
+bool reach_wanted() {
+  const CaseContext& c = *g_context;
+  for (std::string_view clause : *c.declared) {
+    const std::string id(clause);
+    if (c.tolerated.count(id)) continue;
+    const auto it = c.exercised->find(id);
+    if (it == c.exercised->end() || it->second < kReachWanted) return true;
+  }
+  return false;
+}
+
+bool take_step_out(const StepResult& r, const Node& before) {
+  CaseContext& c = *g_context;
+  const Finding& f = *r.failure;
+  if (f.status != FindingStatus::Fail || c.taken_out >= kMaxTakenOut || c.trace.empty() || !reach_wanted())
+    return false;
+  note_tolerated(f);
+  c.trace.pop_back();
+  ++c.taken_out;
+  if (!c.shrinking) ++c.steps_taken_out;
+  if (r.implementation_unchanged) {  // it dropped the command: both sides still hold `before`
+    c.model = before;
+    return true;
+  }
+  if (c.sut->reset().status != CallStatus::Ok) return false;
+  Node model;
+  for (const auto& cmd : c.trace) {
+    Node after;
+    StepResult r = check_step(model, cmd, *c.sut, &after, /*follow_choices=*/true);
+    if (r.failure) return false;
+    model = std::move(after);
+  }
+  c.model = std::move(model);
+  return true;
 }
 
 // Records `f` and fails the case, unless it is a different failure from the
@@ -138,6 +201,7 @@ struct Step final : rc::state::Command<Node, Implementation> {
     const Node before = c.model;
     Node after;
     StepResult r = check_step(before, command, sut, &after, /*follow_choices=*/true);
+    if (r.failure && c.tolerated.count(r.failure->clause) && take_step_out(r, before)) return;
     c.model = after;
     for (auto& note : r.notes) {
       auto it = c.notes.find(note.clause);
@@ -304,6 +368,7 @@ PropertyOutcome run_property(const PropertySpec& spec, Implementation& sut, cons
   ctx.baseline = o.tolerated;
   ctx.target = spec.capability.empty() ? o.cases : std::max(1, o.cases / 4);
   ctx.exercised = &out.exercised;
+  ctx.declared = &spec.clauses;
   ctx.derived_only = &out.derived_only;
   ctx.kinds = &run->command_kinds;
   ctx.unreported = &run->unreported_verdicts;
@@ -326,6 +391,7 @@ PropertyOutcome run_property(const PropertySpec& spec, Implementation& sut, cons
     c.abandoned = false;
     c.set_aside_case = false;
     c.not_judged_case = false;
+    c.taken_out = 0;
     struct Tally {  // at the end of the case, however it ends
       CaseContext& c;
       bool counted;
@@ -443,6 +509,7 @@ PropertyOutcome run_property(const PropertySpec& spec, Implementation& sut, cons
   out.cases = ctx.cases_done;
   out.judged = ctx.judged;
   out.set_aside = ctx.set_aside;
+  out.steps_taken_out = ctx.steps_taken_out;
   out.not_judged = ctx.not_judged;
   std::set<std::string> tolerated_hits;
   for (const auto& [clause, pf] : ctx.tolerated_seen) tolerated_hits.insert(clause);

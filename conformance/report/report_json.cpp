@@ -87,7 +87,7 @@ std::string render_report_json(const RunResult& run, const Verdict& v, const Rep
   for (const PropertyOutcome& p : run.properties) {
     json o = {{"id", p.id},         {"status", p.status},           {"seed", p.seed},
               {"cases", p.cases},   {"cases_target", p.cases_target}, {"judged", p.judged},
-              {"set_aside", p.set_aside}, {"not_judged", p.not_judged}, {"rounds", p.rounds},     {"seconds", p.seconds}};
+              {"set_aside", p.set_aside}, {"steps_taken_out", p.steps_taken_out}, {"not_judged", p.not_judged}, {"rounds", p.rounds},     {"seconds", p.seconds}};
     if (!p.note.empty()) o["note"] = p.note;
     json found = json::array();
     for (const auto& f : p.findings) found.push_back(f.finding.clause);

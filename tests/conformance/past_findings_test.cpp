@@ -313,3 +313,57 @@ TEST(PastFindings, TheReferencePassesEveryClauseWithANonzeroExercisedCount) {
 
 }  // namespace
 }  // namespace vgc
+
+namespace vgc {
+namespace {
+
+// A host like the r6 server: a bone_create for a bone id that is not live
+// creates the bone at the lowest free id instead (BONE-CREATE-1, a MUST).
+// Nearly every bones case creates a bone with an explicit id, so before
+// tolerated commands were taken out of cases (runner.cpp take_step_out),
+// the clauses downstream of bone creation were never judged: unchecked.
+class IgnoresRequestedBoneIds final : public test::ReferenceWrapper {
+ public:
+  std::string name() const override { return "ignores-requested-bone-ids"; }
+  Answer reset() override {
+    shadow_ = Node{};
+    return test::ReferenceWrapper::reset();
+  }
+  Answer apply(const Command& c) override {
+    Command sent = c;
+    if (auto* b = std::get_if<cmd::BoneCreate>(&sent); b && !b->weight.empty() && !shadow_.bones().count(b->bone_id))
+      b->bone_id = kNone16;
+    shadow_.apply(sent);
+    return test::ReferenceWrapper::apply(sent);
+  }
+
+ private:
+  Node shadow_;
+};
+
+TEST(PastFindings, ClausesDownstreamOfADeviationEveryCaseHitsAreStillJudged) {
+  IgnoresRequestedBoneIds impl;
+  RunOptions o = defaults();
+  o.clause_glob = "BONE-*";
+  const RunResult run = run_certification(impl, o);
+  const ClauseOutcome* create = clause_in(run, "BONE-CREATE-1");
+  ASSERT_TRUE(create && create->finding) << findings_of(run);
+  EXPECT_EQ(create->status, "fail");
+  long taken_out = 0;
+  for (const auto& p : run.properties) taken_out += p.steps_taken_out;
+  EXPECT_GT(taken_out, 0);
+  // Every bone clause is judged: a finding of its own (creating the bone
+  // elsewhere has consequences, e.g. a bone made its own parent), or pass.
+  for (const auto& co : run.clauses) {
+    if (co.clause->id.rfind("BONE-", 0) != 0) continue;
+    EXPECT_NE(co.status, "unchecked") << co.clause->id << ": " << co.note;
+  }
+  for (const char* id : {"BONE-DOWNSTREAM-1", "BONE-VALUE-1", "BONE-DESTROY-1"}) {
+    const ClauseOutcome* co = clause_in(run, id);
+    ASSERT_TRUE(co) << id;
+    EXPECT_EQ(co->status, "pass") << id << ": " << co->note << " / " << findings_of(run);
+  }
+}
+
+}  // namespace
+}  // namespace vgc
