@@ -625,6 +625,14 @@ TEST_F(Cli, ClausesListsTheWholeCatalog) {
   ASSERT_EQ(md.exit_code, 0);
   for (const Clause& c : clause_catalog())
     EXPECT_NE(md.out.find("### " + std::string(c.id) + " "), std::string::npos) << c.id;
+  // The header says what each level does to the verdict: an
+  // IMPLEMENTATION-DEFINED failure is a profile difference that gates only
+  // with --strict (it said "counts like MUST"); and docs/clauses.md is the
+  // generated text, not an older one.
+  EXPECT_EQ(md.out.find("counts like MUST"), std::string::npos);
+  EXPECT_NE(md.out.find("`profile difference`, not gating; `vgc certify --strict` makes it gate"), std::string::npos);
+  EXPECT_EQ(read(fs::path(VGC_SOURCE_DIR) / "docs" / "clauses.md"), md.out)
+      << "docs/clauses.md is stale: ./vgc clauses --markdown > docs/clauses.md";
 }
 
 TEST_F(Cli, AMalformedFileNamesLineAndColumn) {
