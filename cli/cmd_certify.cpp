@@ -205,13 +205,16 @@ int run(const Options& o) {
     return 2;
   }
 
-  std::map<std::string, int> counts;
-  for (const auto& c : result.clauses) ++counts[c.status];
+  // The counts per shown status (verdict.h), as summary.md, report.html and
+  // report.json give them: "N of M clauses pass, 1 fail, 2 fail (SHOULD), ...".
+  int passed = 0;
   std::string tally;
-  for (const char* st : {"fail", "crash", "timeout", "unchecked", "not-applicable", "not-claimed", "skipped"})
-    if (counts[st]) tally += fmt::format(", {} {}", counts[st], st);
-  fmt::print("{}: {} ({} of {} clauses pass{}; {:.1f} s)\n", o.impl, verdict.name, counts["pass"],
-             result.clauses.size(), tally, result.seconds);
+  for (const auto& [status, n] : shown_status_counts(result, verdict)) {
+    if (status == "pass") passed = n;
+    else tally += fmt::format(", {} {}", n, status);
+  }
+  fmt::print("{}: {} ({} of {} clauses pass{}; {:.1f} s)\n", o.impl, verdict.name, passed, result.clauses.size(),
+             tally, result.seconds);
   if (result.preflight)
     fmt::print("  the implementation could not show a fresh node: {}: {}\n", result.preflight->clause,
                result.preflight->message);

@@ -7,7 +7,12 @@
 //
 // Exit codes: 0 the implementation agrees with the reference on the whole
 // file (and passes its capability check); 1 it does not (the finding and
-// its clause are printed); 2 usage error, a file that does not parse (line
+// its clause are printed, in certify's words: the status as certify shows
+// it, "profile difference" for one that does not gate, the level, and
+// what it does to certify's verdict; exit 1 whatever the level: the
+// divergence reproduced). A SHOULD clause not met (wrong reason code) is
+// printed as certify shows it, "fail (SHOULD)", the verdict standing, and
+// does not change the exit code, as in certify; 2 usage error, a file that does not parse (line
 // and column named), an implementation that cannot be started, or a
 // capability check that cannot be judged (the implementation does not
 // claim the capability, this vgc has no oracle for it, or the oracle cannot
@@ -26,6 +31,7 @@
 #include "read_file.h"
 #include "runner.h"
 #include "subcommand.h"
+#include "verdict.h"
 
 namespace vgc::cli {
 namespace {
@@ -35,6 +41,7 @@ struct Options {
   std::string impl = "reference";
   double timeout = 5;
   std::string verse_bone_form = "auto";  // --verse-bone-form
+  bool strict = false;  // as certify --strict: IMPLEMENTATION-DEFINED readings gate
 };
 
 int run(const Options& o) {
@@ -58,9 +65,28 @@ int run(const Options& o) {
   if (!sut) return 2;
   register_oracle_checks();  // as certify: the oracles judge the capability checks
   const ReplayResult r = replay_program(program, *sut);
-  for (const auto& n : r.notes) fmt::print("note     {:<24} {}\n", n.clause, n.message);
+  // A SHOULD clause not met is said as certify says it ("fail (SHOULD)",
+  // the verdict stands); other notes are choices the model followed.
+  int should_not_met = 0;
+  for (const auto& n : r.notes) {
+    const Clause* nc = find_clause(n.clause);
+    if (nc && nc->level == ClauseLevel::Should) {
+      ++should_not_met;
+      fmt::print("fail (SHOULD) {} (SHOULD): {}\n", n.clause, n.message);
+      fmt::print("verdict: a SHOULD clause not met: certify reports it as \"fail (SHOULD)\" and the verdict "
+                 "stands (not gating)\n");
+    } else {
+      fmt::print("note     {:<24} {}\n", n.clause, n.message);
+    }
+  }
   if (!r.failure) {
-    fmt::print("{}: agrees with the reference on all {} commands of {}\n", o.impl, program.commands.size(), o.file);
+    if (should_not_met)
+      fmt::print("{}: agrees with the reference on all {} commands of {} but for {} SHOULD clause(s) not met "
+                 "(above; the verdict stands)\n",
+                 o.impl, program.commands.size(), o.file, should_not_met);
+    else
+      fmt::print("{}: agrees with the reference on all {} commands of {}\n", o.impl, program.commands.size(),
+                 o.file);
     if (!program.request) return 0;
     if (!r.not_judged.empty()) {
       fmt::print("{}:{}: cannot repeat the capability check: {}\n", o.file, directive_line, r.not_judged);
@@ -76,9 +102,35 @@ int run(const Options& o) {
     fmt::print("{}:{}: {}\n", o.file, lines[at], print_command(program.commands[at]));
   else if (program.request && at == program.commands.size())
     fmt::print("{}:{}: {}", o.file, directive_line, print_capability_directive(*program.request));
-  fmt::print("{} {} ({}): {}\n", finding_status_name(r.failure->status), r.failure->clause,
-             clause ? clause_level_name(clause->level) : "?", r.failure->message);
-  if (clause) fmt::print("spec ({}): {}\n", clause->source, clause->text);
+  // The finding in certify's words (verdict.h): its shown status, level,
+  // and what it does to the verdict. The exit code says the divergence
+  // reproduced (1), whatever the level: scripts and `vgc fuzz` rely on it.
+  const std::string status = finding_status_name(r.failure->status);
+  if (!clause) {
+    fmt::print("{} {} (?): {}\n", status, r.failure->clause, r.failure->message);
+    return 1;
+  }
+  ClauseOutcome co;
+  co.clause = clause;
+  co.status = status;
+  co.finding = *r.failure;
+  const bool gates = finding_gates(co, o.strict);
+  const std::string shown = clause->level == ClauseLevel::Should ? status + " (SHOULD)"
+                            : gates                              ? status
+                                                                 : std::string("profile difference");
+  fmt::print("{} {} ({}): {}\n", shown, r.failure->clause, clause_level_name(clause->level), r.failure->message);
+  fmt::print("spec ({}): {}\n", clause->source, clause->text);
+  if (clause->level == ClauseLevel::Should)
+    fmt::print("verdict: a SHOULD clause not met: certify reports it as \"{}\" and the verdict stands (not "
+               "gating)\n", shown);
+  else if (!gates)
+    fmt::print("verdict: an IMPLEMENTATION-DEFINED reading not followed: certify reports it as a profile "
+               "difference, not gating; with --strict it gates (not-conformant)\n");
+  else
+    fmt::print("verdict: certify reports it as \"{}\" and the run is not-conformant (gating{})\n", shown,
+               clause->level == ClauseLevel::ImplementationDefined && r.failure->status == FindingStatus::Fail
+                   ? ", --strict"
+                   : "");
   return 1;
 }
 
@@ -94,6 +146,9 @@ void add(CLI::App& app, int* exit_code) {
                   "(Verse spec 2.6.3) or r6 (r6's last release; docs/verse_wire.md section 4)")
       ->check(CLI::IsMember({"auto", "spec", "r6"}))
       ->capture_default_str();
+  sub->add_flag("--strict", o->strict,
+                "Say the verdict as certify --strict would (IMPLEMENTATION-DEFINED readings gate); the exit "
+                "code is the same");
   sub->callback([o, exit_code] { *exit_code = run(*o); });
 }
 

@@ -228,9 +228,11 @@ const std::vector<Clause>& clause_catalog() {
        "two numbers' magnitudes. So a root's rotation must be of unit length; its sign is free."},
       {"BONE-FOREST-1", "bones", IMPL, "000 2.6.3 (silent)",
        "The parent link defines hierarchies of bones, i.e. skeletons.",
-       "The spec is silent on cycles; this is the suite's reading. A bone_create whose parent link would make "
-       "the bone its own ancestor is rejected, so bones "
-       "always form a forest. (The r6 host stores cycles as sent.)"},
+       "The spec is silent on cycles; this is the suite's reading. \"Hierarchies\" rules out a cycle among "
+       "the bones a node holds, but 2.6.3 does not say what a host does with a bone_create whose link would "
+       "close one: reject it, store the bone at root level (as for a parent that does not exist), or store "
+       "it as sent (the r6 host). The suite rejects it, so bones always form a forest; a host that does "
+       "otherwise is a profile difference, gating with --strict."},
       {"BONE-DOWNSTREAM-1", "bones", MUST, "000 2.6.3",
        "The geometry node can also store local transformations known as bones. ... if you rotate any bone, all "
        "bones \"downstream\" of it will rotate, too.",

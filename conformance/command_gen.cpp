@@ -10,6 +10,7 @@
 
 #include "crease.h"                 // corner_count
 #include "gen/arbitrary_command.h"  // gen_quaternion_extreme
+#include "gen/magnitude.h"
 
 namespace vgc {
 namespace {
@@ -24,6 +25,22 @@ namespace gen = rc::gen;
 // value writes were never sent. Every choice here is made with this; it
 // still shrinks toward lo.
 template <class T> Gen<T> uniform(T lo, T hi) { return gen::resize(rc::kNominalSize, gen::inRange<T>(lo, hi)); }
+
+// An unsigned field of T drawn from its magnitude classes (gen/magnitude.h):
+// the class uniformly, then a value in it. Shrinks toward class "0".
+template <class T> Gen<T> magnitude() {
+  constexpr int bits = static_cast<int>(sizeof(T) * 8);
+  const std::size_t classes = ::vgc::gen::magnitude_classes(bits).size();
+  return gen::exec([classes] {
+    const std::size_t k = *uniform<std::size_t>(0, classes);
+    return static_cast<T>(::vgc::gen::magnitude_value(bits, k, *uniform<std::uint64_t>(0, 16)));
+  });
+}
+
+// A 32-bit value: anything, or (2 in 3) one of the magnitude classes.
+Gen<std::uint32_t> u32_value() {
+  return gen::weightedOneOf<std::uint32_t>({{1, gen::arbitrary<std::uint32_t>()}, {2, magnitude<std::uint32_t>()}});
+}
 
 // What the generators need to know of the model, copied out of it.
 struct View {
@@ -89,27 +106,65 @@ template <class T> Gen<T> pick(const std::vector<T>& live, Gen<T> others) {
   return gen::weightedOneOf<T>({{4, gen::elementOf(live)}, {1, others}});
 }
 
+// The ids of `live` (sorted) that are most likely dead: the gaps among the
+// small ids (below 64, up to 8 of them), else the lowest free id.
+// Generators create at the lowest free id, so a small gap is almost always
+// an element deleted earlier in the case (by a delete, an alias, or a
+// vertex's polygons with it); with no gap, a deleted element is most often
+// the lowest free id. A write there is where an implementation that keeps
+// a deleted element's slots shows it.
+std::vector<std::uint32_t> dead_ids(const std::vector<std::uint32_t>& live) {
+  std::vector<std::uint32_t> dead;
+  std::uint32_t expect = 0;
+  for (std::uint32_t id : live) {
+    if (id >= 64) break;
+    for (; expect < id && dead.size() < 8; ++expect) dead.push_back(expect);
+    expect = id + 1;
+  }
+  if (!dead.empty()) return dead;
+  std::uint32_t next = 0;
+  for (std::uint32_t id : live)
+    if (id == next) ++next;
+  return {next};
+}
+
+// Whether `live` has a small gap: almost surely an element deleted earlier
+// in the case (dead_ids).
+bool has_gap(const std::vector<std::uint32_t>& live) {
+  std::uint32_t expect = 0;
+  for (std::uint32_t id : live) {
+    if (id >= 64) break;
+    if (id != expect) return true;
+    expect = id + 1;
+  }
+  return false;
+}
+
 // An element id: often the lowest free one (so meshes grow), often a live
-// one (so they change), sometimes a dead small id, "pick one", or huge.
+// one (so they change), sometimes a small dead one, "pick one", or any of
+// the magnitude classes (gen/magnitude.h: 2^8 .. 2^31 and their neighbours,
+// where a node's storage bound is).
 Gen<std::uint32_t> element_id(const std::vector<std::uint32_t>& live) {
   std::uint32_t next = 0;
   for (std::uint32_t id : live)
     if (id == next) ++next;
-  std::vector<std::pair<std::size_t, Gen<std::uint32_t>>> choices;
   const auto others = gen::weightedOneOf<std::uint32_t>({
-      {8, uniform<std::uint32_t>(0, 10)},
+      {5, uniform<std::uint32_t>(0, 10)},
       {1, gen::just(std::uint32_t(kNone32))},
-      {1, gen::elementOf(std::vector<std::uint32_t>{4000000000u, 0xFFFFFFFEu, 1u << 24})},
+      {8, magnitude<std::uint32_t>()},
   });
   if (live.empty()) return gen::weightedOneOf<std::uint32_t>({{3, gen::just(next)}, {1, others}});
   return gen::weightedOneOf<std::uint32_t>({{3, gen::just(next)}, {4, gen::elementOf(live)}, {1, others}});
 }
 
-// A live element id mostly, for writes and deletes.
+// A live element id mostly, for writes and deletes; else a small one, "pick
+// one", or an id of any magnitude. (Writes aimed at deleted elements are
+// write_dead's.)
 Gen<std::uint32_t> live_id(const std::vector<std::uint32_t>& live) {
   return pick<std::uint32_t>(live, gen::weightedOneOf<std::uint32_t>({
                                        {8, uniform<std::uint32_t>(0, 10)},
                                        {1, gen::just(std::uint32_t(kNone32))},
+                                       {3, magnitude<std::uint32_t>()},
                                    }));
 }
 
@@ -118,6 +173,7 @@ Gen<std::uint16_t> layer_id(const View& v) {
                                            {8, uniform<std::uint16_t>(2, 7)},
                                            {1, gen::elementOf(std::vector<std::uint16_t>{0, 1})},
                                            {1, gen::just(std::uint16_t(kNone16))},
+                                           {2, magnitude<std::uint16_t>()},
                                        }));
 }
 
@@ -147,13 +203,15 @@ double from_bits(std::uint64_t bits) {
 }
 
 // Reals for data layers: ordinary values and every special the encoding
-// must keep: -0, infinities, NaNs with payloads, subnormals, float edges.
+// must keep: -0, infinities, NaNs with payloads, subnormals, float edges;
+// DBL_MAX and FLT_MAX, a value on a REAL layer, the vertex-delete alias in
+// a vertex_set_xyz on any layer.
 Gen<double> any_real() {
   return gen::weightedOneOf<double>({
       {6, gen::map(uniform<int>(-800, 800), [](int i) { return i / 8.0; })},
       {2, gen::elementOf(std::vector<double>{-0.0, 0.1, 1e300, -1e-310, std::numeric_limits<double>::infinity(),
                                -std::numeric_limits<double>::infinity(), double(FLT_MAX) * 2, 16777217.0,
-                               1.0000000000000002})},
+                               1.0000000000000002, DBL_MAX, double(FLT_MAX)})},
       {1, gen::map(uniform<std::uint64_t>(1, (1ull << 51) - 1),
                    [](std::uint64_t p) { return from_bits(0x7FF0000000000000ull | p); })},
       {1, gen::map(uniform<std::uint64_t>(1, (1ull << 51) - 1),
@@ -164,7 +222,8 @@ Gen<double> any_real() {
 Gen<float> any_float() {
   return gen::weightedOneOf<float>({
       {6, gen::map(uniform<int>(-800, 800), [](int i) { return i / 8.0f; })},
-      {2, gen::elementOf(std::vector<float>{-0.0f, 0.1f, 1e-40f, std::numeric_limits<float>::infinity(), 16777217.0f})},
+      {2, gen::elementOf(std::vector<float>{-0.0f, 0.1f, 1e-40f, std::numeric_limits<float>::infinity(), 16777217.0f,
+                                            FLT_MAX})},
       {1, gen::map(uniform<std::uint32_t>(1, (1u << 22) - 1), [](std::uint32_t p) {
          const std::uint32_t bits = 0x7F800000u | p;
          float f;
@@ -186,7 +245,7 @@ Gen<double> coordinate() {
 Gen<std::uint32_t> crease_value() {
   return gen::weightedOneOf<std::uint32_t>({
       {3, gen::elementOf(std::vector<std::uint32_t>{0u, 0xFFFFFFFFu})},
-      {2, gen::arbitrary<std::uint32_t>()},
+      {2, u32_value()},
   });
 }
 
@@ -198,7 +257,7 @@ Gen<Command> create_layer(const View& v) {
     c.name = *layer_name(v);
     c.type = *layer_type();
     c.def_uint = *gen::weightedOneOf<std::uint32_t>(
-        {{3, gen::elementOf(std::vector<std::uint32_t>{0u, 7u, 300u, 0xFFFFFFFFu})}, {1, gen::arbitrary<std::uint32_t>()}});
+        {{3, gen::elementOf(std::vector<std::uint32_t>{0u, 7u, 300u, 0xFFFFFFFFu})}, {2, u32_value()}});
     c.def_real = *gen::weightedOneOf<double>({{3, gen::elementOf(std::vector<double>{0.0, 0.5, -2.0})}, {1, any_real()}});
     return Command{c};
   });
@@ -231,14 +290,35 @@ Gen<Command> set_vertex(const View& v) {
   });
 }
 
+// The layer a vertex-delete alias names. The alias is a condition on the
+// command's coordinates, whatever layer it names (VERTEX-DELETE-1: the same
+// bytes as the delete on the wire): layer 0 mostly, else another VERTEX_XYZ
+// layer, a layer of another type (the polygon layer among them), or a layer
+// that does not exist. Before, it was only ever sent on layer 0.
+Gen<std::uint16_t> alias_layer(const View& v) {
+  std::vector<std::uint16_t> other_types{Node::kPolygonLayer};
+  for (std::uint16_t id : v.layers)
+    if (std::find(v.vertex_xyz_layers.begin(), v.vertex_xyz_layers.end(), id) == v.vertex_xyz_layers.end())
+      other_types.push_back(id);
+  std::uint16_t missing = 2;
+  while (std::find(v.layers.begin(), v.layers.end(), missing) != v.layers.end()) ++missing;
+  return gen::weightedOneOf<std::uint16_t>({
+      {3, gen::just(std::uint16_t(Node::kVertexLayer))},
+      {v.vertex_xyz_layers.empty() ? 0u : 4u,
+       v.vertex_xyz_layers.empty() ? gen::just(std::uint16_t(0)) : gen::elementOf(v.vertex_xyz_layers)},
+      {2, gen::elementOf(other_types)},
+      {1, gen::weightedOneOf<std::uint16_t>({{3, gen::just(missing)}, {1, magnitude<std::uint16_t>()}})},
+  });
+}
+
 Gen<Command> delete_vertex(const View& v) {
   return gen::exec([pv = std::make_shared<const View>(v)] {
     const View& v = *pv;  // one copy, shared by the copies RapidCheck makes of this lambda
     const std::uint32_t id = *live_id(v.vertices);
     switch (*uniform(0, 3)) {
       case 0: return Command{cmd::VertexDelete{id}};
-      case 1: return Command{cmd::VertexSetXyzReal32{0, id, 0.f, FLT_MAX, 0.f}};
-      default: return Command{cmd::VertexSetXyzReal64{0, id, DBL_MAX, 0.0, 0.0}};
+      case 1: return Command{cmd::VertexSetXyzReal32{*alias_layer(v), id, 0.f, FLT_MAX, 0.f}};
+      default: return Command{cmd::VertexSetXyzReal64{*alias_layer(v), id, DBL_MAX, 0.0, 0.0}};
     }
   });
 }
@@ -381,43 +461,47 @@ Gen<Command> delete_polygon(const View& v) {
 // The value write of kind `kind` (0..10: vertex uint32, real64, real32,
 // xyz; corner uint32, real64, real32; face uint8, uint32, real64, real32) to
 // a layer of its type mostly.
-Gen<Command> write_value_of(const View& v, Gen<int> kind) {
-  return gen::exec([pv = std::make_shared<const View>(v), kind]() -> Command {
+Gen<Command> write_value_of(const View& v, Gen<int> kind, bool dead = false) {
+  return gen::exec([pv = std::make_shared<const View>(v), kind, dead]() -> Command {
     const View& v = *pv;  // one copy, shared by the copies RapidCheck makes of this lambda
+    const auto target = [dead](const std::vector<std::uint32_t>& live) {
+      return dead ? *gen::elementOf(dead_ids(live)) : *live_id(live);
+    };
     switch (*kind) {
       case 0:
-        return cmd::VertexSetUint32{*typed_layer(v.vertex_uint_layers, v), *live_id(v.vertices),
-                                    *gen::arbitrary<std::uint32_t>()};
-      case 1: return cmd::VertexSetReal64{*typed_layer(v.vertex_real_layers, v), *live_id(v.vertices), *any_real()};
-      case 2: return cmd::VertexSetReal32{*typed_layer(v.vertex_real_layers, v), *live_id(v.vertices), *any_float()};
+        return cmd::VertexSetUint32{*typed_layer(v.vertex_uint_layers, v), target(v.vertices),
+                                    *u32_value()};
+      case 1: return cmd::VertexSetReal64{*typed_layer(v.vertex_real_layers, v), target(v.vertices), *any_real()};
+      case 2: return cmd::VertexSetReal32{*typed_layer(v.vertex_real_layers, v), target(v.vertices), *any_float()};
       case 3:
-        return cmd::VertexSetXyzReal64{*typed_layer(v.vertex_xyz_layers, v), *live_id(v.vertices), *any_real(),
+        return cmd::VertexSetXyzReal64{*typed_layer(v.vertex_xyz_layers, v), target(v.vertices), *any_real(),
                                        *any_real(), *any_real()};
       case 4: {
-        cmd::PolygonSetCornerUint32 c{*typed_layer(v.corner_uint_layers, v), *live_id(v.polygons), {}};
+        cmd::PolygonSetCornerUint32 c{*typed_layer(v.corner_uint_layers, v), target(v.polygons), {}};
         for (auto& x : c.v) x = *crease_value();
         return c;
       }
       case 5: {
-        cmd::PolygonSetCornerReal64 c{*typed_layer(v.corner_real_layers, v), *live_id(v.polygons), {}};
+        cmd::PolygonSetCornerReal64 c{*typed_layer(v.corner_real_layers, v), target(v.polygons), {}};
         for (auto& x : c.v) x = *any_real();
         return c;
       }
       case 6: {
-        cmd::PolygonSetCornerReal32 c{*typed_layer(v.corner_real_layers, v), *live_id(v.polygons), {}};
+        cmd::PolygonSetCornerReal32 c{*typed_layer(v.corner_real_layers, v), target(v.polygons), {}};
         for (auto& x : c.v) x = *any_float();
         return c;
       }
       case 7:
-        return cmd::PolygonSetFaceUint8{*typed_layer(v.face_u8_layers, v), *live_id(v.polygons),
-                                        *gen::arbitrary<std::uint8_t>()};
+        return cmd::PolygonSetFaceUint8{*typed_layer(v.face_u8_layers, v), target(v.polygons),
+                                        *gen::weightedOneOf<std::uint8_t>(
+                                            {{1, gen::arbitrary<std::uint8_t>()}, {2, magnitude<std::uint8_t>()}})};
       case 8:
-        return cmd::PolygonSetFaceUint32{*typed_layer(v.face_u32_layers, v), *live_id(v.polygons),
-                                         *gen::arbitrary<std::uint32_t>()};
+        return cmd::PolygonSetFaceUint32{*typed_layer(v.face_u32_layers, v), target(v.polygons),
+                                         *u32_value()};
       case 9:
-        return cmd::PolygonSetFaceReal64{*typed_layer(v.face_real_layers, v), *live_id(v.polygons), *any_real()};
+        return cmd::PolygonSetFaceReal64{*typed_layer(v.face_real_layers, v), target(v.polygons), *any_real()};
       default:
-        return cmd::PolygonSetFaceReal32{*typed_layer(v.face_real_layers, v), *live_id(v.polygons), *any_float()};
+        return cmd::PolygonSetFaceReal32{*typed_layer(v.face_real_layers, v), target(v.polygons), *any_float()};
     }
   });
 }
@@ -494,6 +578,21 @@ Gen<Command> value_step(const View& v) {
       return vertex_kind ? *grow_vertex(v) : *build_polygon(v);
     return *write_value_of(v, gen::just(k));
   });
+}
+
+// A value write of a kind whose layer exists, to a vertex or polygon that is
+// most likely one deleted earlier in the case (dead_ids): where a node that
+// keeps a deleted element's slots, or frees them only in some layers, shows
+// it. Before, a face write to a deleted polygon happened 0 to 2 times in a
+// default run.
+// Face writes (kinds 7..10) weigh double.
+Gen<Command> write_dead(const View& v) {
+  std::vector<int> ready;
+  for (int k = 0; k < 11; ++k)
+    if (!layers_of_kind(v, k).first->empty())
+      for (int copies = k >= 7 ? 2 : 1; copies > 0; --copies) ready.push_back(k);
+  if (ready.empty()) return value_step(v);
+  return write_value_of(v, gen::elementOf(ready), true);
 }
 
 // A new vertex, at the lowest free id, at a finite position: how a mesh
@@ -594,7 +693,8 @@ Gen<Command> create_bone(const View& v) {
     cmd::BoneCreate c;
     c.bone_id = *pick<std::uint16_t>(v.bones, gen::weightedOneOf<std::uint16_t>(
                                                   {{8, uniform<std::uint16_t>(0, 6)},
-                                                   {1, gen::just(std::uint16_t(kNone16))}}));
+                                                   {1, gen::just(std::uint16_t(kNone16))},
+                                                   {2, magnitude<std::uint16_t>()}}));
     std::vector<std::string> weights = v.vertex_uint_names;
     weights.insert(weights.end(), v.vertex_real_names.begin(), v.vertex_real_names.end());
     c.weight = *gen::weightedOneOf<std::string>({
@@ -607,7 +707,9 @@ Gen<Command> create_bone(const View& v) {
         {2, v.vertex_uint_names.empty() ? gen::just(std::string("ref")) : gen::elementOf(v.vertex_uint_names)},
         {1, layer_name(v)},
     });
-    c.parent = *pick<std::uint16_t>(v.bones, gen::elementOf(std::vector<std::uint16_t>{kNone16, 9, 0}));
+    c.parent = *pick<std::uint16_t>(v.bones, gen::weightedOneOf<std::uint16_t>(
+                                                 {{3, gen::elementOf(std::vector<std::uint16_t>{kNone16, 9, 0})},
+                                                  {1, magnitude<std::uint16_t>()}}));
     for (auto& x : c.pos) x = *unit_component();
     c.pos_label = *gen::elementOf(std::vector<std::string>{"", "curve_x", "sixteen_bytes_xx"});
     // Rotations: identity, quarter turns about an axis, or anything.
@@ -634,7 +736,8 @@ Gen<Command> create_bone(const View& v) {
 Gen<Command> destroy_bone(const View& v) {
   return gen::exec([pv = std::make_shared<const View>(v)]() -> Command {
     const View& v = *pv;  // one copy, shared by the copies RapidCheck makes of this lambda
-    return cmd::BoneDestroy{*pick<std::uint16_t>(v.bones, uniform<std::uint16_t>(0, 6))};
+    return cmd::BoneDestroy{*pick<std::uint16_t>(
+        v.bones, gen::weightedOneOf<std::uint16_t>({{3, uniform<std::uint16_t>(0, 6)}, {1, magnitude<std::uint16_t>()}}))};
   });
 }
 
@@ -683,12 +786,14 @@ Gen<Command> gen_command(const Node& model, Focus focus) {
   switch (focus) {
     case Focus::Layers:
       return rc::gen::weightedOneOf<Command>({W{6, L(create_layer)}, W{3, L(destroy_layer)}, W{2, L(subscribe)},
-                                          W{4, L(set_vertex)}, W{2, L(delete_vertex)}, W{3, L(build_polygon)},
-                                          W{1, L(delete_polygon)}, W{2, L(value_step)}});
+                                          W{4, L(set_vertex)}, W{v.vertex_xyz_layers.empty() ? 2u : 5u, L(delete_vertex)},
+                                          W{3, L(build_polygon)}, W{1, L(delete_polygon)}, W{2, L(value_step)},
+                                          W{1, L(write_dead)}});
     case Focus::Polygons:
       return rc::gen::weightedOneOf<Command>({W{6, L(set_vertex)}, W{2, L(delete_vertex)}, W{7, L(build_polygon)},
                                           W{v.polygons.empty() ? 1u : 4u, L(delete_polygon)}, W{1, L(create_layer)},
                                           W{v.polygons.empty() ? 0u : 3u, L(value_step)},
+                                          W{has_gap(v.polygons) || has_gap(v.vertices) ? 2u : 0u, L(write_dead)},
                                           W{v.polygons.empty() ? 0u : 2u, L(non_manifold_polygon)}});
     case Focus::Creases: {
       // A crease rule is seen only in a state with all of: polygons, a
@@ -704,7 +809,8 @@ Gen<Command> gen_command(const Node& model, Focus focus) {
           {W{v.vertices.size() >= 4 ? 3u : 6u, L(set_vertex)}, W{mesh ? 3u : 6u, L(build_polygon)},
            W{named_edge && named_vertex ? 2u : 4u, L(set_crease)}, W{crease_layers ? 1u : 3u, L(create_crease_layer)},
            W{write, L(write_crease_values)}, W{1, L(destroy_layer)}, W{1, L(delete_vertex)},
-           W{mesh ? 1u : 0u, L(value_step)}, W{mesh ? 2u : 0u, L(non_manifold_polygon)}});
+           W{mesh ? 1u : 0u, L(value_step)}, W{mesh ? 2u : 0u, L(non_manifold_polygon)},
+           W{has_gap(v.polygons) ? 2u : 0u, L(write_dead)}});
     }
     case Focus::Bones:
       return rc::gen::weightedOneOf<Command>({W{2, L(bone_layer)}, W{6, L(create_bone)}, W{2, L(destroy_bone)},
@@ -718,9 +824,14 @@ Gen<Command> gen_command(const Node& model, Focus focus) {
                                 !v.corner_real_layers.empty() + !v.face_u8_layers.empty() +
                                 !v.face_u32_layers.empty() + !v.face_real_layers.empty();
       const bool mesh = !v.polygons.empty();
+      const bool faces = !v.face_u8_layers.empty() || !v.face_u32_layers.empty() || !v.face_real_layers.empty();
       return rc::gen::weightedOneOf<Command>(
           {W{1, L(create_layer)}, W{types == 0 ? 2u : 1u, L(create_value_layer)}, W{1, L(set_vertex)},
-           W{mesh ? 1u : 8u, L(build_polygon)}, W{16, L(value_step)}});
+           W{mesh ? 1u : 8u, L(build_polygon)}, W{20, L(value_step)},
+           // a polygon delete once there are face layers, then writes to
+           // the deleted (the share of value_step grows to match)
+           W{mesh && faces ? 1u : 0u, L(delete_polygon)},
+           W{has_gap(v.polygons) || has_gap(v.vertices) ? 5u : 0u, L(write_dead)}});
     }
     case Focus::Ids:
       return rc::gen::weightedOneOf<Command>({W{3, L(create_layer)}, W{4, L(set_vertex)}, W{3, L(build_polygon)},

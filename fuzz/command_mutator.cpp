@@ -12,6 +12,7 @@
 
 #include "command_binary.h"
 #include "command_fields.h"
+#include "magnitude.h"
 #include "node.h"
 
 namespace vgc::fuzz {
@@ -39,7 +40,13 @@ std::string pick_name(Rng& rng) {
 
 template <class T> T pick_uint(Rng& rng, T current) {
   constexpr T kMax = std::numeric_limits<T>::max();
-  switch (below(rng, 10)) {
+  constexpr int kBits = static_cast<int>(sizeof(T) * 8);
+  switch (below(rng, 12)) {
+    case 10:
+    case 11: {  // a magnitude class (magnitude.h): 2^k and its neighbours, where storage bounds are
+      static const std::size_t classes = gen::magnitude_classes(kBits).size();
+      return static_cast<T>(gen::magnitude_value(kBits, below(rng, classes), rng()));
+    }
     case 0: return 0;
     case 1: return 1;
     case 2: case 3: return static_cast<T>(below(rng, 4));   // small ids hit live elements

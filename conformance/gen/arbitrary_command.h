@@ -41,6 +41,7 @@
 #include "command.h"
 #include "command_fields.h"
 #include "command_text.h"
+#include "magnitude.h"
 #include "node.h"
 
 namespace vgc {
@@ -149,11 +150,23 @@ inline rc::Gen<std::array<double, 4>> gen_quaternion_extreme() {
 }
 
 // uint32 ids and values: small ones, the all-ones "none / pick / max" value,
-// its neighbour, four billion, anything.
+// its neighbour, four billion, every magnitude class (magnitude.h), anything.
+// Any class of an unsigned field of T (magnitude.h): 0, small, 2^k and its
+// neighbours up to the field's top, the all-ones sentinel and its neighbour.
+template <class T> rc::Gen<T> gen_magnitude() {
+  constexpr int bits = static_cast<int>(sizeof(T) * 8);
+  const std::size_t classes = magnitude_classes(bits).size();
+  return rc::gen::exec([classes] {
+    const auto k = *rc::gen::resize(rc::kNominalSize, rc::gen::inRange<std::size_t>(0, classes));
+    return static_cast<T>(magnitude_value(bits, k, *rc::gen::inRange<std::uint64_t>(0, 16)));
+  });
+}
+
 inline rc::Gen<std::uint32_t> gen_u32_any() {
   return rc::gen::weightedOneOf<std::uint32_t>({
       {5, rc::gen::inRange<std::uint32_t>(0, 16)},
       {2, rc::gen::element<std::uint32_t>(0xFFFFFFFFu, 0xFFFFFFFEu, 4000000000u, 0x80000000u, 4096u, 4097u)},
+      {3, gen_magnitude<std::uint32_t>()},
       {3, rc::gen::arbitrary<std::uint32_t>()},
   });
 }
@@ -162,6 +175,7 @@ inline rc::Gen<std::uint16_t> gen_u16_any() {
   return rc::gen::weightedOneOf<std::uint16_t>({
       {5, rc::gen::inRange<std::uint16_t>(0, 16)},
       {2, rc::gen::element<std::uint16_t>(0xFFFFu, 0xFFFEu, 0x8000u)},
+      {3, gen_magnitude<std::uint16_t>()},
       {3, rc::gen::arbitrary<std::uint16_t>()},
   });
 }
@@ -170,6 +184,7 @@ inline rc::Gen<std::uint8_t> gen_u8_any() {
   return rc::gen::weightedOneOf<std::uint8_t>({
       {3, rc::gen::inRange<std::uint8_t>(0, 16)},
       {1, rc::gen::element<std::uint8_t>(0xFF, 0x80, 0x7F)},
+      {2, gen_magnitude<std::uint8_t>()},
       {2, rc::gen::arbitrary<std::uint8_t>()},
   });
 }
@@ -366,6 +381,9 @@ inline rc::Gen<Command> gen_command_for(const Node& node) {
       {1, rg::exec([=] { return Command{cmd::LayerUnsubscribe{*layer}}; })},
       {4, rg::exec([=] { return Command{cmd::VertexSetXyzReal64{*layer, *vertex, *real, *real, *real}}; })},
       {2, rg::exec([=] { return Command{cmd::VertexSetXyzReal32{*layer, *vertex, *real32, *real32, *real32}}; })},
+      // the vertex-delete alias, on whatever layer (VERTEX-DELETE-1)
+      {1, rg::exec([=] { return Command{cmd::VertexSetXyzReal64{*layer, *vertex, *real, DBL_MAX, *real}}; })},
+      {1, rg::exec([=] { return Command{cmd::VertexSetXyzReal32{*layer, *vertex, FLT_MAX, *real32, *real32}}; })},
       {1, rg::exec([=] { return Command{cmd::VertexDelete{*vertex}}; })},
       {2, rg::exec([=] { return Command{cmd::VertexSetUint32{*layer, *vertex, *value}}; })},
       {1, rg::exec([=] { return Command{cmd::VertexSetReal64{*layer, *vertex, *real}}; })},

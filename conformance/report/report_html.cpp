@@ -49,12 +49,17 @@ bool in(const std::vector<std::string>& ids, const std::string& id) {
   return std::find(ids.begin(), ids.end(), id) != ids.end();
 }
 
-ShownStatus shown_status(const ClauseOutcome& co, const Verdict& v) {
-  const std::string id(co.clause->id);
-  if (in(v.profile_differences, id)) return {"profile difference", "st-profile-difference"};
-  if (in(v.known_failures, id)) return {co.status + " (baseline)", "st-known"};
-  if (in(v.should_failures, id)) return {co.status + " (SHOULD)", "st-should"};
-  return {co.status, "st-" + co.status};
+// The words are verdict.h's shown_status, the same in every report; the
+// colour follows them.
+ShownStatus shown_status_of(const std::string& text) {
+  if (text == "profile difference") return {text, "st-profile-difference"};
+  if (text.size() > 11 && text.compare(text.size() - 11, 11, " (baseline)") == 0) return {text, "st-known"};
+  if (text.size() > 9 && text.compare(text.size() - 9, 9, " (SHOULD)") == 0) return {text, "st-should"};
+  return {text, "st-" + text};
+}
+
+ShownStatus shown_status_html(const ClauseOutcome& co, const Verdict& v) {
+  return shown_status_of(shown_status(co, v));
 }
 
 void status_badge(pugi::xml_node parent, const ShownStatus& s) {
@@ -91,7 +96,7 @@ void finding_section(pugi::xml_node parent, const ClauseOutcome& co, const Verdi
   sec.append_attribute("id") = ("finding-" + id).c_str();
   auto h = add(sec, "h3");
   add_text(h, id + " (" + std::string(clause_level_name(co.clause->level)) + ") ");
-  status_badge(h, shown_status(co, v));
+  status_badge(h, shown_status_html(co, v));
 
   auto quote = add(sec, "blockquote");
   add_text(quote, std::string(co.clause->text) + " ");
@@ -165,22 +170,12 @@ std::string render_report_html(const RunResult& run, const Verdict& v, const Rep
   add_text(h1, "vgc certify: " + ctx.implementation_spec + " ");
   add(h1, "span", headline, ("verdict " + v.name).c_str());
 
-  // Counts, as the reader will see the statuses in the table.
-  std::map<std::string, std::pair<int, std::string>> counts;  // shown status -> count, css
-  std::vector<std::string> order;
-  for (const auto& co : run.clauses) {
-    const ShownStatus s = shown_status(co, v);
-    if (!counts.count(s.text)) order.push_back(s.text);
-    auto& c = counts[s.text];
-    ++c.first;
-    c.second = s.css;
-  }
+  // Counts, as the reader will see the statuses in the table (the same
+  // counts as every other report: verdict.h).
   auto counts_p = add(body, "p", {}, "counts");
   add_text(counts_p, std::to_string(run.clauses.size()) + " clauses: ");
-  for (const auto& s : order) {
-    auto b = add(counts_p, "span", std::to_string(counts[s].first) + " " + s, ("st " + counts[s].second).c_str());
-    (void)b;
-  }
+  for (const auto& [status, n] : shown_status_counts(run, v))
+    add(counts_p, "span", std::to_string(n) + " " + status, ("st " + shown_status_of(status).css).c_str());
   std::ostringstream run_line;
   run_line.precision(1);
   run_line << std::fixed << "Seed " << run.options.seed << ", " << run.options.cases << " cases per property, "
@@ -252,7 +247,7 @@ std::string render_report_html(const RunResult& run, const Verdict& v, const Rep
     }
     add(tr, "td", std::string(co.clause->group));
     add(tr, "td", std::string(clause_level_name(co.clause->level)));
-    status_badge(add(tr, "td"), shown_status(co, v));
+    status_badge(add(tr, "td"), shown_status_html(co, v));
     add(tr, "td", std::to_string(co.exercised));
     add(tr, "td", co.note);
   }

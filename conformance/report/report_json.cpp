@@ -6,13 +6,16 @@
 #include "command_text.h"
 #include "finding_picture.h"
 #include "report.h"
+#include "version.h"
 
 namespace vgc {
 
 std::string render_report_json(const RunResult& run, const Verdict& v, const ReportContext& ctx) {
   using nlohmann::json;
   json j;
-  j["vgc_report_version"] = 2;  // 2: exercised counts, unchecked, findings per property, command lines
+  // 2: exercised counts, unchecked, findings per property, command lines;
+  // 3: counts per shown status (verdict.h), each clause's shown_status.
+  j["vgc_report_version"] = kReportFormatVersion;
   j["implementation"] = ctx.implementation_spec;
   if (!ctx.implementation_identity.empty()) j["implementation_identity"] = ctx.implementation_identity;
   j["implementation_name"] = run.implementation;
@@ -44,16 +47,21 @@ std::string render_report_json(const RunResult& run, const Verdict& v, const Rep
                       {"message", run.preflight->message}};
   if (ctx.baseline) j["baseline"] = ctx.baseline_path;
 
+  // Per shown status (verdict.h), the same counts as stdout, summary.md and
+  // report.html: "fail" is a failure that gates; a SHOULD one is counted
+  // under "fail (SHOULD)", a baselined one under "fail (baseline)", an
+  // IMPLEMENTATION-DEFINED one without --strict under "profile difference".
   json counts = {{"pass", 0},      {"fail", 0},           {"crash", 0},       {"timeout", 0},
                  {"unchecked", 0}, {"not-applicable", 0}, {"not-claimed", 0}, {"skipped", 0}};
+  for (const auto& [status, n] : shown_status_counts(run, v)) counts[status] = n;
   json clauses = json::array();
   for (const ClauseOutcome& co : run.clauses) {
-    counts[co.status] = counts.value(co.status, 0) + 1;
     json c;
     c["id"] = co.clause->id;
     c["group"] = co.clause->group;
     c["level"] = clause_level_name(co.clause->level);
     c["status"] = co.status;
+    c["shown_status"] = shown_status(co, v);
     c["properties"] = co.properties;
     c["exercised"] = co.exercised;
     if (!co.note.empty()) c["note"] = co.note;

@@ -13,15 +13,11 @@ namespace vgc {
 
 std::string render_summary(const RunResult& run, const Verdict& v, const ReportContext& ctx) {
   std::string out;
-  std::map<std::string, int> counts;
-  for (const auto& co : run.clauses) ++counts[co.status];
   const char* headline = v.name == "conformant"       ? "CONFORMANT"
                          : v.name == "not-conformant" ? "NOT CONFORMANT"
                                                       : "INCOMPLETE";
   out += fmt::format("# vgc certify: {} — {}\n\n", ctx.implementation_spec, headline);
-  std::string tally;
-  for (const char* st : {"pass", "fail", "crash", "timeout", "unchecked", "not-applicable", "not-claimed", "skipped"})
-    if (counts[st]) tally += fmt::format("{}{} {}", tally.empty() ? "" : ", ", counts[st], st);
+  const std::string tally = shown_status_tally(run, v);  // the same counts as every other report
   out += fmt::format("{} clauses: {}. Seed {}, {} cases per property, {:.1f} s{}.\n\n", run.clauses.size(), tally,
                      run.options.seed, run.options.cases, run.seconds,
                      v.strict ? ", --strict (IMPLEMENTATION-DEFINED readings gate)" : "");
@@ -61,7 +57,8 @@ std::string render_summary(const RunResult& run, const Verdict& v, const ReportC
       if (!co.finding) continue;
       if (std::find(ids.begin(), ids.end(), std::string(co.clause->id)) == ids.end()) continue;
       const std::string file = (std::filesystem::path(ctx.run_dir) / counterexample_path(co)).string();
-      out += fmt::format("### {} ({}) — {}\n\n", co.clause->id, clause_level_name(co.clause->level), co.status);
+      out += fmt::format("### {} ({}) — {}\n\n", co.clause->id, clause_level_name(co.clause->level),
+                         shown_status(co, v));
       out += fmt::format("> {} ({})\n\n", co.clause->text, co.clause->source);
       out += fmt::format("Suite's reading: {}\n\n", co.clause->reading);
       out += fmt::format("**What the implementation did:** {}\n\n", co.finding->message);
@@ -87,7 +84,7 @@ std::string render_summary(const RunResult& run, const Verdict& v, const ReportC
   }
   out += "## Clauses\n\n| clause | level | status | exercised |\n|---|---|---|---|\n";
   for (const auto& co : run.clauses)
-    out += fmt::format("| {} | {} | {}{} | {} |\n", co.clause->id, clause_level_name(co.clause->level), co.status,
+    out += fmt::format("| {} | {} | {}{} | {} |\n", co.clause->id, clause_level_name(co.clause->level), shown_status(co, v),
                        co.note.empty() ? "" : " (" + co.note + ")", co.exercised);
   out += "\n## Properties\n\n| property | status | cases | judged | set aside | not judged | findings | seed | seconds |\n"
          "|---|---|---|---|---|---|---|---|---|\n";

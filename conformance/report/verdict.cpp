@@ -1,7 +1,16 @@
 // verdict.cpp — see verdict.h.
 #include "verdict.h"
 
+#include <algorithm>
+#include <map>
+
 namespace vgc {
+
+namespace {
+bool in(const std::vector<std::string>& ids, const std::string& id) {
+  return std::find(ids.begin(), ids.end(), id) != ids.end();
+}
+}  // namespace
 
 bool finding_gates(const ClauseOutcome& co, bool strict) {
   if (!co.finding) return false;
@@ -41,6 +50,39 @@ Verdict judge(const RunResult& run, const Baseline* baseline, bool strict) {
     v.exit_code = 0;
   }
   return v;
+}
+
+std::string shown_status(const ClauseOutcome& co, const Verdict& v) {
+  const std::string id(co.clause->id);
+  if (in(v.should_failures, id)) return co.status + " (SHOULD)";
+  if (in(v.known_failures, id)) return co.status + " (baseline)";
+  if (in(v.profile_differences, id)) return "profile difference";
+  return co.status;
+}
+
+std::vector<std::pair<std::string, int>> shown_status_counts(const RunResult& run, const Verdict& v) {
+  static const char* const kOrder[] = {
+      "pass",           "fail",           "crash",         "timeout",         "fail (baseline)",
+      "crash (baseline)", "timeout (baseline)", "profile difference", "fail (SHOULD)", "crash (SHOULD)",
+      "timeout (SHOULD)", "unchecked",      "not-applicable", "not-claimed",     "skipped"};
+  std::map<std::string, int> counts;
+  std::vector<std::string> others;
+  for (const auto& co : run.clauses) {
+    const std::string s = shown_status(co, v);
+    if (!counts[s]++ && std::find(std::begin(kOrder), std::end(kOrder), s) == std::end(kOrder)) others.push_back(s);
+  }
+  std::vector<std::pair<std::string, int>> out;
+  for (const char* s : kOrder)
+    if (counts.count(s)) out.emplace_back(s, counts[s]);
+  for (const auto& s : others) out.emplace_back(s, counts[s]);
+  return out;
+}
+
+std::string shown_status_tally(const RunResult& run, const Verdict& v) {
+  std::string out;
+  for (const auto& [status, n] : shown_status_counts(run, v))
+    out += (out.empty() ? "" : ", ") + std::to_string(n) + " " + status;
+  return out;
 }
 
 }  // namespace vgc

@@ -46,4 +46,23 @@ bool finding_gates(const ClauseOutcome& co, bool strict);
 
 Verdict judge(const RunResult& run, const Baseline* baseline, bool strict = false);
 
+// The one story every report tells (stdout, summary.md, report.html,
+// report.json): the status a reader is shown for a clause. It is the
+// clause's status, except for a finding that does not decide the verdict,
+// which is named for why: "fail (SHOULD)" (the verdict stands), "fail
+// (baseline)" (a known deviation), "profile difference" (an
+// IMPLEMENTATION-DEFINED reading the implementation does not follow, not
+// gating without --strict). So "fail", "crash" and "timeout" alone are
+// exactly the clauses that make the run not conformant.
+std::string shown_status(const ClauseOutcome& co, const Verdict& v);
+
+// How many clauses show each status, in one fixed order: pass, what gates,
+// what does not, what was not judged (then any other status, in catalog
+// order); statuses no clause shows are left out.
+std::vector<std::pair<std::string, int>> shown_status_counts(const RunResult& run, const Verdict& v);
+
+// The counts as a reader sees them: "39 pass, 1 fail, 1 fail (SHOULD),
+// 1 profile difference".
+std::string shown_status_tally(const RunResult& run, const Verdict& v);
+
 }  // namespace vgc

@@ -15,6 +15,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <regex>
 #include <set>
@@ -314,6 +315,96 @@ TEST_F(Cli, AFaultIsRejectedReplaysAndCanBeBaselined) {
   EXPECT_NE(known.out.find("known"), std::string::npos) << context(known);
 }
 
+// One story in every report (issue 17 item 6): a run with a MUST, a SHOULD
+// and an IMPLEMENTATION-DEFINED failure gives the same counts per status on
+// stdout, in summary.md, in report.html and in report.json, and `vgc
+// replay` of the SHOULD finding says what certify says of it. Before, stdout
+// and summary.md counted all three as "fail" where report.html said
+// "fail (SHOULD)" and "profile difference" (seen: stdout "3 fail", HTML
+// "1 fail, 1 profile difference, 1 fail (SHOULD)"), and replay of the
+// SHOULD finding said only "note REASON-1" and "agrees with the reference".
+std::map<std::string, int> tally_of(const std::string& text) {  // "1 fail, 2 fail (SHOULD)" -> counts
+  std::map<std::string, int> out;
+  std::stringstream items(text);
+  std::string item;
+  while (std::getline(items, item, ',')) {
+    std::size_t at = item.find_first_not_of(' ');
+    if (at == std::string::npos) continue;
+    item = item.substr(at);
+    const std::size_t space = item.find(' ');
+    out[item.substr(space + 1)] += std::stoi(item.substr(0, space));
+  }
+  return out;
+}
+
+TEST_F(Cli, EveryReportGivesTheSameCountsPerStatus) {
+  const std::string env = "VGC_FAULT=polygon-delete-ignored,wrong-reason-codes,recreate-resets-data";
+  const std::string impl = std::string("plugin:") + VGC_FAULT_PLUGIN;
+  const Result r = vgc("certify --impl " + shell_quote(impl) + " --reports rep --quiet --cases 100 --seed 1", env);
+  ASSERT_EQ(r.exit_code, 1) << context(r);
+  const fs::path run_dir = fs::canonical(dir_ / "rep" / "latest");
+
+  // stdout: "IMPL: not-conformant (N of M clauses pass, 1 fail, ...; 1.0 s)"
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(r.out, m, std::regex(R"(\((\d+) of (\d+) clauses pass((?:, [^,;]+)*); )")))
+      << context(r);
+  std::map<std::string, int> from_stdout = tally_of(m[3].str());
+  from_stdout["pass"] = std::stoi(m[1].str());
+  const int clauses = std::stoi(m[2].str());
+
+  // summary.md: "M clauses: N pass, 1 fail, .... Seed ..."
+  const std::string summary = read(run_dir / "summary.md");
+  ASSERT_TRUE(std::regex_search(summary, m, std::regex(R"((\d+) clauses: ([^\n]*?)\. Seed)"))) << summary;
+  EXPECT_EQ(std::stoi(m[1].str()), clauses);
+  const std::map<std::string, int> from_summary = tally_of(m[2].str());
+
+  // report.html: <p class="counts">M clauses: <span ...>N pass</span>...</p>
+  const std::string html = read(run_dir / "report.html");
+  ASSERT_TRUE(std::regex_search(html, m, std::regex(R"(<p class="counts">(\d+) clauses: (.*?)</p>)"))) << html;
+  EXPECT_EQ(std::stoi(m[1].str()), clauses);
+  std::map<std::string, int> from_html;
+  const std::string spans = m[2].str();
+  const std::regex span(R"(<span class="st [^"]*">(\d+) ([^<]*)</span>)");
+  for (std::sregex_iterator it(spans.begin(), spans.end(), span), end; it != end; ++it)
+    from_html[(*it)[2].str()] += std::stoi((*it)[1].str());
+
+  // report.json: "counts", the non-zero ones.
+  const auto j = nlohmann::json::parse(read(run_dir / "report.json"));
+  std::map<std::string, int> from_json;
+  for (const auto& [status, n] : j.at("counts").items())
+    if (n.get<int>() != 0) from_json[status] = n.get<int>();
+
+  EXPECT_EQ(from_stdout, from_summary) << context(r) << summary;
+  EXPECT_EQ(from_stdout, from_html);
+  EXPECT_EQ(from_stdout, from_json);
+  int total = 0;
+  for (const auto& [status, n] : from_stdout) total += n;
+  EXPECT_EQ(total, clauses);
+  // Each kind of failure is counted under its own status.
+  EXPECT_EQ(from_stdout["fail"], 1) << "POLY-DELETE-1 (MUST) only: " << context(r);
+  EXPECT_EQ(from_stdout["fail (SHOULD)"], 1) << "REASON-1: " << context(r);
+  EXPECT_EQ(from_stdout["profile difference"], 1) << "LAYER-RECREATE-1: " << context(r);
+  EXPECT_NE(summary.find("| REASON-1 | SHOULD | fail (SHOULD) |"), std::string::npos) << summary;
+
+  // vgc replay of the SHOULD finding: certify's words for it.
+  const fs::path file = run_dir / "counterexamples" / "REASON-1.vgc";
+  ASSERT_TRUE(fs::is_regular_file(file));
+  const Result again = vgc("replay " + shell_quote(file.string()) + " --impl " + shell_quote(impl), env);
+  EXPECT_EQ(again.exit_code, 0) << "as in certify, a SHOULD clause not met leaves the verdict: " << context(again);
+  EXPECT_NE(again.out.find("fail (SHOULD) REASON-1 (SHOULD): "), std::string::npos) << context(again);
+  EXPECT_NE(again.out.find("the verdict stands (not gating)"), std::string::npos) << context(again);
+  // ... and of the IMPLEMENTATION-DEFINED one: a profile difference, gating only with --strict.
+  const fs::path impl_file = run_dir / "counterexamples" / "LAYER-RECREATE-1.vgc";
+  ASSERT_TRUE(fs::is_regular_file(impl_file));
+  const Result lax = vgc("replay " + shell_quote(impl_file.string()) + " --impl " + shell_quote(impl), env);
+  EXPECT_NE(lax.out.find("profile difference LAYER-RECREATE-1 (IMPLEMENTATION-DEFINED): "), std::string::npos)
+      << context(lax);
+  const Result strict = vgc("replay --strict " + shell_quote(impl_file.string()) + " --impl " + shell_quote(impl), env);
+  EXPECT_NE(strict.out.find("fail LAYER-RECREATE-1 (IMPLEMENTATION-DEFINED): "), std::string::npos)
+      << context(strict);
+  EXPECT_NE(strict.out.find("not-conformant"), std::string::npos) << context(strict);
+}
+
 // A capability fault (one whose clause a capability property declares):
 // certify fails it through the plugin route; the counterexample records the
 // check to repeat ("#! capability NAME variant N") and still runs under
@@ -534,6 +625,14 @@ TEST_F(Cli, ClausesListsTheWholeCatalog) {
   ASSERT_EQ(md.exit_code, 0);
   for (const Clause& c : clause_catalog())
     EXPECT_NE(md.out.find("### " + std::string(c.id) + " "), std::string::npos) << c.id;
+  // The header says what each level does to the verdict: an
+  // IMPLEMENTATION-DEFINED failure is a profile difference that gates only
+  // with --strict (it said "counts like MUST"); and docs/clauses.md is the
+  // generated text, not an older one.
+  EXPECT_EQ(md.out.find("counts like MUST"), std::string::npos);
+  EXPECT_NE(md.out.find("`profile difference`, not gating; `vgc certify --strict` makes it gate"), std::string::npos);
+  EXPECT_EQ(read(fs::path(VGC_SOURCE_DIR) / "docs" / "clauses.md"), md.out)
+      << "docs/clauses.md is stale: ./vgc clauses --markdown > docs/clauses.md";
 }
 
 TEST_F(Cli, AMalformedFileNamesLineAndColumn) {

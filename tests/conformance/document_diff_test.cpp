@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
+#include <sstream>
 #include <string>
 
 #include "derived_document.h"
@@ -133,6 +135,27 @@ TEST(DocumentDiff, BonePoseWithinToleranceMatchesAndBeyondDiffers) {
   EXPECT_TRUE(diff_documents(e, pose_doc(pose_line(5, base))));
   // A pose that is not a number is different.
   EXPECT_TRUE(diff_documents(e, pose_doc("bone_pose 4 1000 -2.5 0.125 0 0.6 0 x")));
+}
+
+// docs/commands.md states one tolerance, the code's, in both places that
+// speak of it: 4.8 (bones) and 6.2 (the derived document), which said
+// "within floating-point rounding" (seen failing on that text).
+TEST(DocumentDiff, CommandsMdStatesTheCodesToleranceIn48And62) {
+  std::ifstream in(std::string(VGC_SOURCE_DIR) + "/docs/commands.md");
+  std::stringstream ss;
+  ss << in.rdbuf();
+  const std::string doc = ss.str();
+  const auto section = [&](const std::string& heading, const std::string& next) {
+    const std::size_t a = doc.find(heading), b = doc.find(next, a);
+    return a == std::string::npos ? std::string() : doc.substr(a, b - a);
+  };
+  const std::string rule = "`|a − b| ≤ 1e-9 × max(1, |a|, |b|)`";
+  ASSERT_DOUBLE_EQ(kPoseTolerance, 1e-9);
+  for (const std::string& s : {section("### 4.8 Bones", "### 4.9"), section("### 6.2 Derived document", "## 7.")}) {
+    ASSERT_FALSE(s.empty());
+    EXPECT_NE(s.find(rule), std::string::npos) << s;
+    EXPECT_EQ(s.find("floating-point rounding"), std::string::npos) << s;
+  }
 }
 
 TEST(DocumentDiff, ARotationEqualsItsNegation) {

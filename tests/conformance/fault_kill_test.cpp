@@ -87,6 +87,42 @@ TEST(FaultKill, EveryFaultIsRejectedNamingItsClause) {
   EXPECT_GE(total, 12);
 }
 
+// Two faults that only generators of full reach find (issue 17): ids
+// between 4,100 and 2^24 were never drawn, and the vertex-delete alias was
+// only ever sent on layer 0, so both certified conformant at seeds 1..3
+// with the generators before magnitude classes (seen).
+// Each must now fail a MUST clause it breaks, in a default run (`vgc
+// certify`: 200 cases, size 50) at each of the seeds 1, 2 and 3.
+TEST(FaultKill, FaultsPastTheOldGeneratorsReachFailAtSeedsOneToThree) {
+  const std::vector<std::pair<std::string, std::vector<std::string>>> faults = {
+      {"mid-range-ids-dropped", {"VERTEX-SET-1", "ID-BOUND-1"}},
+      {"vertex-delete-alias-layer-0-only", {"VERTEX-DELETE-1"}},
+  };
+  for (const auto& [name, clauses] : faults) {
+    const int fault = faults::find_fault(name);
+    ASSERT_GT(fault, 0) << name;
+    for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+      faults::FaultyImplementation impl(fault);
+      RunOptions o;
+      o.seed = seed;
+      o.cases = 200;
+      o.max_size = 50;
+      o.budget_seconds = 300;
+      const RunResult run = run_certification(impl, o);
+      std::string found;
+      bool hit = false;
+      for (const auto& co : run.clauses) {
+        if (!co.finding) continue;
+        found += std::string(co.clause->id) + "(" + co.status + ") ";
+        for (const auto& c : clauses) hit = hit || (co.clause->id == c && co.status == "fail");
+      }
+      std::printf("%-34s seed %llu: %s\n", name.c_str(), static_cast<unsigned long long>(seed), found.c_str());
+      EXPECT_TRUE(hit) << name << " at seed " << seed << ": found " << found;
+      EXPECT_EQ(judge(run, nullptr).exit_code, 1) << name << " at seed " << seed;
+    }
+  }
+}
+
 TEST(FaultKill, TheUnfaultedWrapperIsConformant) {
   faults::FaultyImplementation impl(0);
   const RunResult run = run_certification(impl, kill_options());

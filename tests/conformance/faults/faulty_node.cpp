@@ -3,6 +3,7 @@
 #include "faulty_node.h"
 
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
@@ -58,6 +59,11 @@ const std::vector<FaultInfo>& fault_catalog() {
        "claims subdivision; ?subdivide leaves non-manifold vertices and same-direction edges smooth"},
       {"loop-edges-by-vertex-pair", "LOOP-TRIANGLE-1", "fail",
        "claims loop; ?subdivide-loop merges a level's edges by vertex pair (a pillow loses vertices)"},
+      {"mid-range-ids-dropped", "VERTEX-SET-1", "fail",
+       "answers ok to a new vertex or polygon id from 4,101 to 2^24-1 and stores nothing (the r6 host past its "
+       "storage bound)"},
+      {"vertex-delete-alias-layer-0-only", "VERTEX-DELETE-1", "fail",
+       "treats FLT_MAX / DBL_MAX in a coordinate as a delete only on layer 0; elsewhere it is a plain write"},
   };
   return catalog;
 }
@@ -122,6 +128,12 @@ bool creates_element(const Command& c, const Node& before, bool* vertex_stack, s
     *vertex_stack = false, *id = x->polygon_id;
     return true;
   }
+  return false;
+}
+
+bool is_vertex_delete_alias(const Command& c) {
+  if (auto* x = std::get_if<cmd::VertexSetXyzReal32>(&c)) return x->x == FLT_MAX || x->y == FLT_MAX || x->z == FLT_MAX;
+  if (auto* x = std::get_if<cmd::VertexSetXyzReal64>(&c)) return x->x == DBL_MAX || x->y == DBL_MAX || x->z == DBL_MAX;
   return false;
 }
 }  // namespace
@@ -228,6 +240,41 @@ FaultyAnswer FaultyNode::apply(const Command& original) {
         x->layer_id = id;
         break;
       }
+  }
+  // mid-range-ids-dropped: a new vertex or polygon past the bound that the
+  // reference would create is answered ok and not stored. The r6 host drops
+  // ids more than 4,096 past its storage (4,129 on a fresh node); ids from
+  // 2^24 on this fault keeps, so that only generators that draw the ids in
+  // between find it (the old ones drew 0..10, 2^24, 4e9 and 2^32-2).
+  if (is("mid-range-ids-dropped")) {
+    bool vertex_stack = false;
+    std::uint32_t id = 0;
+    Node trial = node_;
+    if (creates_element(c, before, &vertex_stack, &id) && id > 4100 && id < (1u << 24) && trial.apply(c) == Reason::Ok)
+      return {true, ""};
+  }
+  // vertex-delete-alias-layer-0-only: on another layer the coordinates are
+  // written as they are (into a VERTEX_XYZ layer holding the vertex), or the
+  // write is refused as a plain write would be.
+  if (is("vertex-delete-alias-layer-0-only") && is_vertex_delete_alias(c)) {
+    std::uint16_t layer_id = 0;
+    std::uint32_t vertex_id = 0;
+    std::array<double, 3> xyz{};
+    if (auto* x = std::get_if<cmd::VertexSetXyzReal32>(&c))
+      layer_id = x->layer_id, vertex_id = x->vertex_id, xyz = {double(x->x), double(x->y), double(x->z)};
+    if (auto* x = std::get_if<cmd::VertexSetXyzReal64>(&c))
+      layer_id = x->layer_id, vertex_id = x->vertex_id, xyz = {x->x, x->y, x->z};
+    if (layer_id != Node::kVertexLayer) {
+      const Layer* l = node_.find_layer(layer_id);
+      if (l && l->type == LayerType::VertexXyz && l->slots.count(vertex_id)) {
+        Slot& slot = const_cast<Layer*>(l)->slots.at(vertex_id);  // test-only: reach into the node's storage
+        std::copy(xyz.begin(), xyz.end(), slot.r.begin());
+        return {true, ""};
+      }
+      Node trial = node_;  // the answer to the same write with ordinary coordinates
+      const Reason r = trial.apply(cmd::VertexSetXyzReal64{layer_id, vertex_id, 0, 0, 0});
+      return answer(r == Reason::Ok ? Reason::NoSuchVertex : r);
+    }
   }
   // crash-on-self-parent
   if (auto* x = std::get_if<cmd::BoneCreate>(&c); x && is("crash-on-self-parent") && x->parent == x->bone_id) {
