@@ -146,7 +146,7 @@ struct Step final : rc::state::Command<Node, Implementation> {
     }
     if (!r.failure && !c.shrinking && r.not_judged.empty()) {
       std::vector<std::string_view> decided, derived_only;
-      exercised_clauses(before, command, r.expected, after, r.verdict_reported, &decided,
+      exercised_clauses(before, command, r.expected, r.rules, after, r.verdict_reported, &decided,
                         r.derived_judged ? nullptr : &derived_only);
       count_exercised(decided);
       for (auto clause : derived_only) ++(*c.derived_only)[std::string(clause)];
