@@ -170,7 +170,10 @@ Blame blame_snapshot(const Node& before, const Node& after, Reason expected, con
       const auto w = line_written(after, e);
       if (before_lines.count(ke)) {
         add(with_role(trace, RuleRole::Keep, bit));
-        if (w && w->step == now) cands.push_back(w->rule);
+        if (w && w->step == now) {  // the command re-placed and re-wrote it (a re-typed layer's slot)
+          add(with_role(trace, RuleRole::Place, bit));
+          cands.push_back(w->rule);
+        }
         what = "The model keeps " + quoted(e) + written_by(w) + "; the implementation has no line `" + ke + "`.";
       } else {
         const auto place = with_role(trace, RuleRole::Place, bit);

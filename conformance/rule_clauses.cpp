@@ -97,6 +97,27 @@ std::vector<Rule> rules_of_clause(std::string_view clause_id) {
   return out;
 }
 
+std::string_view rule_fault_exemption(Rule r) {
+  switch (r) {
+    case Rule::LayerStackLimit:
+    case Rule::ElementLimit:
+      return "not reachable in a bounded run: the cell budget is 2^22 slots per stack (docs/commands.md 4.9)";
+    case Rule::BaseLayers:
+      return "a fresh node's state, applied by no command: judged by the fresh-node check, not by a rule fault";
+    default: return "";
+  }
+}
+
+std::vector<Rule> fault_matrix_rules() {
+  std::vector<Rule> out;
+  for (std::size_t i = 1; i < kRuleCount; ++i) {
+    const Rule r = static_cast<Rule>(i);
+    const Clause* c = find_clause(rule_clause(r));
+    if (c && c->level == ClauseLevel::Must && rule_fault_exemption(r).empty()) out.push_back(r);
+  }
+  return out;
+}
+
 int clause_strictness(ClauseLevel level) {
   switch (level) {
     case ClauseLevel::Must: return 2;

@@ -24,6 +24,15 @@ namespace vgc {
 std::string_view rule_clause(Rule r);
 // The rules whose clause is `clause_id`, in enum order.
 std::vector<Rule> rules_of_clause(std::string_view clause_id);
+// Why a MUST rule has no seeded fault certified by the fault matrix
+// (tests/conformance/fault_matrix_test.cpp), or empty when it has one: the
+// rules a default run cannot reach (the storage budgets need 2^22 cells)
+// and the fresh node's rules (no command applies them; the fresh-node check
+// judges them).
+std::string_view rule_fault_exemption(Rule r);
+// The rules of MUST clauses that the fault matrix certifies, in enum order.
+std::vector<Rule> fault_matrix_rules();
+
 // Strictness for gating: MUST 2, IMPLEMENTATION-DEFINED 1, SHOULD 0.
 int clause_strictness(ClauseLevel level);
 
