@@ -108,6 +108,18 @@ std::string_view rule_fault_exemption(Rule r) {
   }
 }
 
+std::string_view rule_coverage_exemption(Rule r) {
+  switch (r) {
+    case Rule::LayerStackLimit:
+    case Rule::ElementLimit: return "the cell budget is 2^22 slots per stack (docs/commands.md 4.9)";
+    case Rule::LayerNoFreeId: return "needs all 65533 layer ids from 2 to 0xFFFE in use";
+    case Rule::BoneNoFreeId: return "needs all 65535 bone ids in use";
+    case Rule::VertexNoFreeId:
+    case Rule::PolygonNoFreeId: return "needs 2^32 - 1 ids in use";
+    default: return "";
+  }
+}
+
 std::vector<Rule> fault_matrix_rules() {
   std::vector<Rule> out;
   for (std::size_t i = 1; i < kRuleCount; ++i) {

@@ -30,6 +30,12 @@ std::vector<Rule> rules_of_clause(std::string_view clause_id);
 // and the fresh node's rules (no command applies them; the fresh-node check
 // judges them).
 std::string_view rule_fault_exemption(Rule r);
+// Why a rule is left out of the rule-coverage threshold (every rule used at
+// least 20 times in a default run, tests/conformance/rule_coverage_test.cpp),
+// or empty: the rules no bounded run can reach (a storage budget of 2^22
+// cells, every one of 65535 or 2^32 - 1 ids in use).
+std::string_view rule_coverage_exemption(Rule r);
+
 // The rules of MUST clauses that the fault matrix certifies, in enum order.
 std::vector<Rule> fault_matrix_rules();
 
