@@ -103,7 +103,7 @@ TEST(ClauseCatalog, EveryClauseIdLiteralInTheSourcesExists) {
       EXPECT_NE(find_clause((*it)[1].str()), nullptr) << f.filename() << " names unknown clause " << (*it)[1];
     }
   }
-  EXPECT_GE(found, 60);  // attribution.cpp alone has dozens
+  EXPECT_GE(found, 60);  // rule_clauses.cpp alone has dozens
   for (const auto& fault : faults::fault_catalog())
     if (!fault.expected_clause.empty()) {
       EXPECT_NE(find_clause(fault.expected_clause), nullptr) << "fault " << fault.name;

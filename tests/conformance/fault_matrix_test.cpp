@@ -21,11 +21,17 @@
 namespace vgc {
 namespace {
 
-RunOptions matrix_options(std::uint64_t seed) {
+// The run is restricted to the properties that declare the rule's clause
+// (RunOptions::clause_glob), to keep 53 rules x 3 seeds within CI's time:
+// those properties still judge every step against the whole catalog, and a
+// finding in any other clause is still reported by the run (RunResult
+// lists every clause with a finding) and fails the test.
+RunOptions matrix_options(std::uint64_t seed, const std::string& glob) {
   RunOptions o;
   o.seed = seed;
   o.cases = 100;
   o.budget_seconds = 120;
+  o.clause_glob = glob;
   return o;
 }
 
@@ -36,9 +42,9 @@ struct SeedOutcome {
   std::string first_message;
 };
 
-SeedOutcome certify(int fault, const std::string& clause, std::uint64_t seed) {
+SeedOutcome certify_once(int fault, const std::string& clause, std::uint64_t seed, const std::string& glob) {
   faults::FaultyImplementation impl(fault);
-  const RunResult run = run_certification(impl, matrix_options(seed));
+  const RunResult run = run_certification(impl, matrix_options(seed, glob));
   SeedOutcome out;
   for (const auto& co : run.clauses) {
     if (!co.finding) continue;
@@ -52,6 +58,15 @@ SeedOutcome certify(int fault, const std::string& clause, std::uint64_t seed) {
   }
   out.exit_code = judge(run, nullptr).exit_code;
   return out;
+}
+
+// Restricted to the clause's properties first; where those do not reach the
+// rule at this seed (a rule the generators draw rarely, e.g. a 15-byte bone
+// label), the whole catalog, as a default run would.
+SeedOutcome certify(int fault, const std::string& clause, std::uint64_t seed) {
+  SeedOutcome o = certify_once(fault, clause, seed, clause);
+  if (!o.blamed && o.others.empty()) o = certify_once(fault, clause, seed, "*");
+  return o;
 }
 
 class FaultMatrix : public ::testing::TestWithParam<Rule> {};
@@ -90,7 +105,7 @@ TEST(FaultMatrix, TheThreeMustBugKindsFailAtEverySeed) {
     const std::string clause(faults::fault_catalog()[static_cast<std::size_t>(fault)].expected_clause);
     ASSERT_EQ(find_clause(clause)->level, ClauseLevel::Must) << name;
     for (std::uint64_t seed = 1; seed <= 3; ++seed) {
-      const SeedOutcome o = certify(fault, clause, seed);
+      const SeedOutcome o = certify_once(fault, clause, seed, "*");  // a default run, the whole catalog
       EXPECT_TRUE(o.blamed) << name << " seed " << seed << ": others " << o.others << "\n" << o.first_message;
       EXPECT_EQ(o.exit_code, 1) << name << " seed " << seed;
       std::printf("%-30s seed %llu: %s  exit %d  others: %s\n", name, static_cast<unsigned long long>(seed),
