@@ -103,8 +103,9 @@ std::string line_key(const std::string& line) {
 Blame blame_verdict(const Command& c, Reason expected, const RuleTrace& trace) {
   const std::string cmd = "`" + print_command(c) + "`";
   if (expected != Reason::Ok) {
-    auto guards = with_role(trace, RuleRole::Guard, kLineNone);
-    if (guards.empty()) guards = select(trace, [](const RuleInfo& i) { return i.role == RuleRole::Guard; });
+    // Every guard that refuses it: the one that decided, then any other
+    // that would have refused it too (Node::apply).
+    auto guards = select(trace, [](const RuleInfo& i) { return i.role == RuleRole::Guard; });
     return make_blame(guards, "The model refused " + cmd + " (" + std::string(reason_name(expected)) +
                                   "); the implementation applied it.");
   }

@@ -105,11 +105,19 @@ Reason Node::apply_one(const cmd::LayerCreate& c) {
   }
   // 2.6.1: the two base layers "are rigidly defined". Decision: creating on
   // id 0 or 1 is rejected (the r6 host silently picks another id instead).
-  if (c.layer_id == kVertexLayer || c.layer_id == kPolygonLayer)
-    return refuse(Rule::LayerCreateBaseId, Reason::BaseLayer);
+  const bool bad_type = !is_layer_type(c.type), bad_name = !valid_name(c.name);
+  if (c.layer_id == kVertexLayer || c.layer_id == kPolygonLayer) {
+    const Reason r = refuse(Rule::LayerCreateBaseId, Reason::BaseLayer);
+    also_refusing({{Rule::LayerTypeUnknown, bad_type}, {Rule::LayerNameInvalid, bad_name}});
+    return r;
+  }
   // Table 2-1 lists eight types; README: "Any other value is not a layer type".
-  if (!is_layer_type(c.type)) return refuse(Rule::LayerTypeUnknown, Reason::BadLayerType);
-  if (!valid_name(c.name)) return refuse(Rule::LayerNameInvalid, Reason::BadName);
+  if (bad_type) {
+    const Reason r = refuse(Rule::LayerTypeUnknown, Reason::BadLayerType);
+    also_refusing({{Rule::LayerNameInvalid, bad_name}});
+    return r;
+  }
+  if (bad_name) return refuse(Rule::LayerNameInvalid, Reason::BadName);
   if (c.name.size() == kMaxNameBytes) note(Rule::LayerNameLongest);
   // Decision: names are unique within the node (so that creases and bones,
   // which name layers, are unambiguous). A clash with another layer is
@@ -516,28 +524,42 @@ Reason Node::apply_one(const cmd::BoneCreate& c) {
     note(Rule::BoneEmptyWeightDestroys);
     return apply_one(cmd::BoneDestroy{c.bone_id});
   }
-  if (!valid_name(c.weight) || !valid_name(c.reference) || !valid_name(c.pos_label) ||
-      !valid_name(c.rot_label))
-    return refuse(Rule::BoneNameInvalid, Reason::BadName);
+  const bool bad_name =
+      !valid_name(c.weight) || !valid_name(c.reference) || !valid_name(c.pos_label) || !valid_name(c.rot_label);
+  const bool bad_value = !all_finite(c.pos.data(), 3) || !all_finite(c.rot.data(), 4) ||
+                         (c.rot[0] == 0 && c.rot[1] == 0 && c.rot[2] == 0 && c.rot[3] == 0);
+  const Layer* w = find_layer_by_name(c.weight);
+  const bool bad_weight = !w || (w->type != LayerType::VertexUint32 && w->type != LayerType::VertexReal);
+  const Layer* ref = c.reference.empty() ? nullptr : find_layer_by_name(c.reference);
+  const bool bad_reference = !c.reference.empty() && (!ref || ref->type != LayerType::VertexUint32);
+  if (bad_name) {
+    const Reason r = refuse(Rule::BoneNameInvalid, Reason::BadName);
+    also_refusing({{Rule::BoneValueInvalid, bad_value},
+                   {Rule::BoneWeightInvalid, bad_weight},
+                   {Rule::BoneReferenceInvalid, bad_reference}});
+    return r;
+  }
   for (const std::string* s : {&c.weight, &c.reference, &c.pos_label, &c.rot_label})
     if (s->size() == kMaxNameBytes) note(Rule::BoneNameLongest);
   // Decision: position and rotation must be finite and the rotation
   // quaternion non-zero, so that every bone has a well-defined pose.
-  if (!all_finite(c.pos.data(), 3) || !all_finite(c.rot.data(), 4))
-    return refuse(Rule::BoneValueInvalid, Reason::BadValue);
-  if (c.rot[0] == 0 && c.rot[1] == 0 && c.rot[2] == 0 && c.rot[3] == 0)
-    return refuse(Rule::BoneValueInvalid, Reason::BadValue);
+  // Decision: position and rotation must be finite and the rotation
+  // quaternion non-zero, so that every bone has a well-defined pose.
+  if (bad_value) {
+    const Reason r = refuse(Rule::BoneValueInvalid, Reason::BadValue);
+    also_refusing({{Rule::BoneWeightInvalid, bad_weight}, {Rule::BoneReferenceInvalid, bad_reference}});
+    return r;
+  }
   // 2.6.3: weight layers "must be of type VN_G_LAYER_VERTEX_UINT32 or
   // VN_G_LAYER_VERTEX_REAL". Decision: checked when the bone is created; a
   // later destroy or re-type of that layer is allowed (the bone keeps the name).
-  const Layer* w = find_layer_by_name(c.weight);
-  if (!w || (w->type != LayerType::VertexUint32 && w->type != LayerType::VertexReal))
-    return refuse(Rule::BoneWeightInvalid, Reason::BadWeightLayer);
-  // 2.6.3: the reference field names "a VN_G_LAYER_VERTEX_UINT32 layer".
-  if (!c.reference.empty()) {
-    const Layer* r = find_layer_by_name(c.reference);
-    if (!r || r->type != LayerType::VertexUint32) return refuse(Rule::BoneReferenceInvalid, Reason::BadReferenceLayer);
+  if (bad_weight) {
+    const Reason r = refuse(Rule::BoneWeightInvalid, Reason::BadWeightLayer);
+    also_refusing({{Rule::BoneReferenceInvalid, bad_reference}});
+    return r;
   }
+  // 2.6.3: the reference field names "a VN_G_LAYER_VERTEX_UINT32 layer".
+  if (bad_reference) return refuse(Rule::BoneReferenceInvalid, Reason::BadReferenceLayer);
   std::uint16_t id = c.bone_id;
   if (id == kNone16) {
     auto free = lowest_free(bones_, std::uint16_t{0}, std::uint16_t{0xFFFE});

@@ -16,6 +16,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <initializer_list>
 #include <map>
 #include <optional>
 #include <string>
@@ -83,7 +84,9 @@ class Node {
   // Applies `c` completely and returns Reason::Ok, or changes nothing and
   // returns why not. Never throws for any command value. When `trace` is
   // not null it receives the rules the command applied (rule.h), in order:
-  // for a refusal, the guard that refused it (and any alias read first).
+  // for a refusal, the guard that refused it (after any alias read first),
+  // then every later guard of layer_create / bone_create that would refuse
+  // it too.
   // Every element the command writes records the rule and step() (Written).
   Reason apply(const Command& c, RuleTrace* trace = nullptr);
   // How many commands apply() has been given (the step a Written refers to).
@@ -143,6 +146,14 @@ class Node {
   Reason refuse(Rule r, Reason why) {
     note(r);
     return why;
+  }
+  // After a refusal, when tracing: records every other guard whose
+  // condition also holds, so that a refused command names every rule that
+  // refuses it (the first recorded decides the reason).
+  void also_refusing(std::initializer_list<std::pair<Rule, bool>> guards) {
+    if (!trace_) return;
+    for (const auto& [rule, holds] : guards)
+      if (holds) note(rule);
   }
   Written written(Rule r) const { return {r, step_}; }
 

@@ -36,6 +36,11 @@ TEST(NodeRules, ARefusalRecordsItsGuardAndThatNothingChanged) {
                                Rule::RejectedChangesNothing}));
   EXPECT_EQ(rules_of(n, "layer_create 1 \"x\" VERTEX_UINT32 0 0"),
             (std::vector<Rule>{Rule::LayerCreateBaseId, Rule::RejectedChangesNothing}));
+  // Every guard that refuses it is named, the deciding one first: a 16-byte
+  // name with a type that is no layer type (the r6 case of issue 17).
+  EXPECT_EQ(rules_of(n, "layer_create 3 \"abcdefghijklmnop\" 77 0 0", &r),
+            (std::vector<Rule>{Rule::LayerTypeUnknown, Rule::LayerNameInvalid, Rule::RejectedChangesNothing}));
+  EXPECT_EQ(r, Reason::BadLayerType);
 }
 
 TEST(NodeRules, EachLineKnowsTheRuleThatLastWroteIt) {

@@ -361,6 +361,11 @@ FaultyAnswer FaultyNode::apply_breaking(const Command& c, Rule broken) {
   };
   switch (info.role) {
     case RuleRole::Guard:  // claims to apply what the guard refuses, and changes nothing
+      for (Rule x : t)  // only where it decides: the first guard recorded
+        if (rule_info(x).role == RuleRole::Guard) {
+          if (x != broken) return answer(r);
+          break;
+        }
       node_ = before;
       return {true, ""};
     case RuleRole::Alias:
