@@ -1,240 +1,225 @@
 // attribution.cpp — see attribution.h.
 #include "attribution.h"
 
-#include <cfloat>
+#include <algorithm>
+#include <map>
 #include <sstream>
-#include <type_traits>
+
+#include "clause.h"
+#include "command_text.h"
+#include "rule_clauses.h"
+#include "snapshot.h"
 
 namespace vgc {
 namespace {
 
-template <class... F> struct Overloaded : F... { using F::operator()...; };
-template <class... F> Overloaded(F...) -> Overloaded<F...>;
+const Clause* clause_of(Rule r) { return find_clause(rule_clause(r)); }
 
-constexpr std::uint32_t kLargeId = 1u << 24;  // ids this large test ID-BOUND-1
-
-bool is_xyz_delete(const cmd::VertexSetXyzReal32& c) { return c.x == FLT_MAX || c.y == FLT_MAX || c.z == FLT_MAX; }
-bool is_xyz_delete(const cmd::VertexSetXyzReal64& c) { return c.x == DBL_MAX || c.y == DBL_MAX || c.z == DBL_MAX; }
-
-bool vertex_in_use(const Node& n, std::uint32_t v) {
-  for (const auto& [pid, slot] : n.polygons())
-    for (std::uint32_t c : slot.u)
-      if (c == v) return true;
-  return false;
+int strictness(Rule r) {
+  const Clause* c = clause_of(r);
+  return c ? clause_strictness(c->level) : 0;
 }
 
-// The clause of a value write (LAYER-VALUE-1 and its real forms).
-template <class C> std::string_view value_clause(const C&) {
-  using T = std::decay_t<C>;
-  if constexpr (std::is_same_v<T, cmd::VertexSetReal64> || std::is_same_v<T, cmd::PolygonSetCornerReal64> ||
-                std::is_same_v<T, cmd::PolygonSetFaceReal64>)
-    return "REAL-STORAGE-1";
-  else if constexpr (std::is_same_v<T, cmd::VertexSetReal32> || std::is_same_v<T, cmd::PolygonSetCornerReal32> ||
-                     std::is_same_v<T, cmd::PolygonSetFaceReal32> || std::is_same_v<T, cmd::VertexSetXyzReal32>)
-    return "REAL-32BIT-1";
-  else
-    return "LAYER-VALUE-1";
+// "rule vertex.move.keeps_slots (VERTEX-SET-1, MUST)"
+std::string rule_label(Rule r) {
+  const Clause* c = clause_of(r);
+  return "rule " + std::string(rule_name(r)) + " (" + std::string(rule_clause(r)) +
+         (c ? ", " + std::string(clause_level_name(c->level)) : "") + ")";
 }
 
-std::string_view crease_clause(const Node& n, const std::string& name, LayerType required) {
-  if (name.empty()) return "CREASE-DEFAULT-1";
-  const Layer* l = n.find_layer_by_name(name);
-  if (!l || l->type != required) return "CREASE-LAYER-MISSING-1";
-  return required == LayerType::VertexUint32 ? "CREASE-VERTEX-LAYER-1" : "CREASE-EDGE-LAYER-1";
+// The blame for `candidates` (in the order they explain the difference
+// best), with `what` saying what the two sides did. The strictest level
+// goes first; ties keep their order.
+Blame make_blame(std::vector<Rule> candidates, const std::string& what) {
+  std::vector<Rule> rules;
+  for (Rule r : candidates)
+    if (std::find(rules.begin(), rules.end(), r) == rules.end()) rules.push_back(r);
+  if (rules.empty()) rules.push_back(Rule::None);
+  std::stable_sort(rules.begin(), rules.end(), [](Rule a, Rule b) { return strictness(a) > strictness(b); });
+  Blame b;
+  b.rules = rules;
+  b.clause = std::string(rule_clause(rules[0]));
+  b.explanation = what + " Blamed on " + rule_label(rules[0]) + ": " + std::string(rule_info(rules[0]).says) + ".";
+  if (rules.size() > 1) {
+    b.explanation += " Also explained by";
+    for (std::size_t i = 1; i < rules.size(); ++i)
+      b.explanation += (i == 1 ? " " : "; ") + rule_label(rules[i]) + ": " + std::string(rule_info(rules[i]).says);
+    b.explanation += "; the strictest level is the one reported.";
+  }
+  return b;
 }
 
-// A name of exactly the longest length a name may have (15 bytes, 16 with
-// the NUL: docs/spec_facts.md 2). When a command carrying one is refused, or
-// its name is stored wrongly, the rule broken is taken to be the
-// name-length rule (LAYER-NAME-1, CREASE-NAME-1, BONE-NAME-1), the boundary
-// an implementation most often gets wrong (a 16-byte buffer without room for
-// the NUL), not the command's general one. Any other fault on such a
-// command is still reported, under the name clause.
-bool name_at_limit(const std::string& name) { return name.size() == kMaxNameBytes; }
+template <class Pred> std::vector<Rule> select(const RuleTrace& trace, Pred pred) {
+  std::vector<Rule> out;
+  for (Rule r : trace)
+    if (pred(rule_info(r))) out.push_back(r);
+  return out;
+}
 
-std::string_view vertex_set_acceptance(std::uint16_t layer, std::uint32_t id, bool is_delete, const Node& before) {
-  if (is_delete) return vertex_in_use(before, id) ? "POLY-VERTEX-DELETE-1" : "VERTEX-DELETE-1";
-  if (layer != Node::kVertexLayer) return "LAYER-WRITE-1";
-  if (id == kNone32) return "VERTEX-ID-PICK-1";
-  if (id >= kLargeId) return "ID-BOUND-1";
-  return "VERTEX-SET-1";
+std::vector<Rule> with_role(const RuleTrace& trace, RuleRole role, std::uint8_t line) {
+  return select(trace, [&](const RuleInfo& i) { return i.role == role && (i.lines & line); });
+}
+
+// The rules an applied command applied that change state (not its guards,
+// not what it keeps): what an implementation refusing it goes against.
+std::vector<Rule> effects(const RuleTrace& trace) {
+  return select(trace, [](const RuleInfo& i) {
+    return i.role != RuleRole::Guard && i.role != RuleRole::Keep && i.role != RuleRole::Accept;
+  });
+}
+
+std::string first_word(const std::string& line) { return line.substr(0, line.find(' ')); }
+
+std::map<std::string, std::string> lines_by_key(const std::string& doc) {
+  std::map<std::string, std::string> out;
+  for (auto& l : split_lines(doc))
+    if (!l.empty()) out.emplace(line_key(l), l);
+  return out;
+}
+
+std::string quoted(const std::string& line) { return "\"" + line + "\""; }
+
+std::string written_by(const std::optional<Written>& w) {
+  if (!w || w->rule == Rule::None) return "";
+  return " (last written by rule " + std::string(rule_name(w->rule)) +
+         (w->step == 0 ? " on the fresh node)" : " at command " + std::to_string(w->step) + ")");
 }
 
 }  // namespace
 
-std::string_view clause_for_rejection(const Command& c, Reason why, const Node& /*before*/) {
-  switch (why) {
-    case Reason::Ok: return "ACCEPT-1";
-    case Reason::BaseLayer: return "LAYER-BASE-2";
-    case Reason::BadLayerType: return "LAYER-TYPE-1";
-    case Reason::NameInUse: return "LAYER-NAME-2";
-    case Reason::WrongLayerType: return "LAYER-WRITE-1";
-    case Reason::BadRealFormat: return "LAYER-SUBSCRIBE-1";
-    case Reason::NoSuchBone: return "BONE-DESTROY-1";
-    case Reason::BoneCycle: return "BONE-FOREST-1";
-    case Reason::BadWeightLayer: return "BONE-WEIGHT-1";
-    case Reason::BadReferenceLayer: return "BONE-REFERENCE-1";
-    case Reason::Limit: return "ID-BOUND-1";
-    default: break;
+std::string line_key(const std::string& line) {
+  const std::string kind = first_word(line);
+  std::size_t words = 2;
+  if (kind == "slot" || kind == "edge_crease") words = 3;
+  if (kind == "crease_vertex" || kind == "crease_edge") words = 1;
+  std::size_t pos = 0;
+  for (std::size_t w = 0; w < words; ++w) {
+    pos = line.find(' ', w == 0 ? 0 : pos + 1);
+    if (pos == std::string::npos) return line;
   }
-  return std::visit(
-      Overloaded{
-          [&](const cmd::LayerCreate&) -> std::string_view {
-            return why == Reason::NoFreeId ? "LAYER-ID-PICK-1" : "LAYER-NAME-1";
-          },
-          [&](const cmd::LayerDestroy&) -> std::string_view { return "LAYER-DESTROY-1"; },
-          [&](const cmd::LayerSubscribe&) -> std::string_view { return "LAYER-SUBSCRIBE-1"; },
-          [&](const cmd::LayerUnsubscribe&) -> std::string_view { return "LAYER-SUBSCRIBE-1"; },
-          [&](const cmd::VertexSetXyzReal32& x) -> std::string_view {
-            if (is_xyz_delete(x)) return "VERTEX-DELETE-1";
-            if (why == Reason::BadValue) return "VERTEX-FINITE-1";
-            if (why == Reason::NoFreeId) return "VERTEX-ID-PICK-1";
-            return "LAYER-WRITE-1";
-          },
-          [&](const cmd::VertexSetXyzReal64& x) -> std::string_view {
-            if (is_xyz_delete(x)) return "VERTEX-DELETE-1";
-            if (why == Reason::BadValue) return "VERTEX-FINITE-1";
-            if (why == Reason::NoFreeId) return "VERTEX-ID-PICK-1";
-            return "LAYER-WRITE-1";
-          },
-          [&](const cmd::VertexDelete&) -> std::string_view { return "VERTEX-DELETE-1"; },
-          [&](const cmd::PolygonSetCornerUint32& x) -> std::string_view {
-            if (x.layer_id != Node::kPolygonLayer) return "LAYER-WRITE-1";
-            if (x.v[0] == kNone32) return "POLY-DELETE-1";
-            if (why == Reason::BadPolygon)
-              return (x.v[1] == kNone32 || x.v[2] == kNone32) ? "POLY-CORNERS-1" : "POLY-DISTINCT-1";
-            if (why == Reason::NoSuchVertex) return "POLY-VERTEX-REF-1";
-            if (why == Reason::NoFreeId) return "VERTEX-ID-PICK-1";
-            return "POLY-TRIANGLE-1";
-          },
-          [&](const cmd::PolygonDelete&) -> std::string_view { return "POLY-DELETE-1"; },
-          [&](const cmd::CreaseSetVertex&) -> std::string_view { return "CREASE-NAME-1"; },
-          [&](const cmd::CreaseSetEdge&) -> std::string_view { return "CREASE-NAME-1"; },
-          [&](const cmd::BoneCreate&) -> std::string_view {
-            if (why == Reason::BadName) return "BONE-NAME-1";
-            if (why == Reason::BadValue) return "BONE-VALUE-1";
-            if (why == Reason::NoFreeId) return "BONE-ID-PICK-1";
-            return "BONE-CREATE-1";
-          },
-          [&](const cmd::BoneDestroy&) -> std::string_view { return "BONE-DESTROY-1"; },
-          [&](const auto&) -> std::string_view { return "LAYER-WRITE-1"; },  // value writes
-      },
-      c);
+  return line.substr(0, pos);
 }
 
-std::string_view clause_for_acceptance(const Command& c, const Node& before) {
-  return std::visit(
-      Overloaded{
-          [&](const cmd::LayerCreate& x) -> std::string_view {
-            if (x.name.empty()) return "LAYER-DESTROY-1";
-            if (name_at_limit(x.name)) return "LAYER-NAME-1";
-            if (x.layer_id == kNone16) return "LAYER-ID-PICK-1";
-            if (before.find_layer(x.layer_id)) return "LAYER-RECREATE-1";
-            return "LAYER-CREATE-1";
-          },
-          [&](const cmd::LayerDestroy&) -> std::string_view { return "LAYER-DESTROY-1"; },
-          [&](const cmd::LayerSubscribe&) -> std::string_view { return "LAYER-SUBSCRIBE-1"; },
-          [&](const cmd::LayerUnsubscribe&) -> std::string_view { return "LAYER-SUBSCRIBE-1"; },
-          [&](const cmd::VertexSetXyzReal32& x) -> std::string_view {
-            return vertex_set_acceptance(x.layer_id, x.vertex_id, is_xyz_delete(x), before);
-          },
-          [&](const cmd::VertexSetXyzReal64& x) -> std::string_view {
-            return vertex_set_acceptance(x.layer_id, x.vertex_id, is_xyz_delete(x), before);
-          },
-          [&](const cmd::VertexDelete& x) -> std::string_view {
-            return vertex_set_acceptance(0, x.vertex_id, true, before);
-          },
-          [&](const cmd::PolygonSetCornerUint32& x) -> std::string_view {
-            if (x.layer_id != Node::kPolygonLayer) return "LAYER-WRITE-1";
-            if (x.v[0] == kNone32) return "POLY-DELETE-1";
-            if (x.polygon_id == kNone32) return "VERTEX-ID-PICK-1";
-            if (x.polygon_id >= kLargeId) return "ID-BOUND-1";
-            return "POLY-TRIANGLE-1";
-          },
-          [&](const cmd::PolygonDelete&) -> std::string_view { return "POLY-DELETE-1"; },
-          [&](const cmd::CreaseSetVertex& x) -> std::string_view {
-            if (name_at_limit(x.layer)) return "CREASE-NAME-1";
-            return crease_clause(before, x.layer, LayerType::VertexUint32);
-          },
-          [&](const cmd::CreaseSetEdge& x) -> std::string_view {
-            if (name_at_limit(x.layer)) return "CREASE-NAME-1";
-            return crease_clause(before, x.layer, LayerType::PolygonCornerUint32);
-          },
-          [&](const cmd::BoneCreate& x) -> std::string_view {
-            if (x.weight.empty()) return "BONE-DESTROY-1";
-            if (name_at_limit(x.weight) || name_at_limit(x.reference) || name_at_limit(x.pos_label) ||
-                name_at_limit(x.rot_label))
-              return "BONE-NAME-1";
-            if (x.bone_id == kNone16) return "BONE-ID-PICK-1";
-            if (!before.bones().count(x.parent)) return "BONE-PARENT-1";
-            return "BONE-CREATE-1";
-          },
-          [&](const cmd::BoneDestroy&) -> std::string_view { return "BONE-DESTROY-1"; },
-          [&](const auto&) -> std::string_view { return "LAYER-WRITE-1"; },  // value writes
-      },
-      c);
+Blame blame_verdict(const Command& c, Reason expected, const RuleTrace& trace) {
+  const std::string cmd = "`" + print_command(c) + "`";
+  if (expected != Reason::Ok) {
+    // Every guard that refuses it: the one that decided, then any other
+    // that would have refused it too (Node::apply).
+    auto guards = select(trace, [](const RuleInfo& i) { return i.role == RuleRole::Guard; });
+    return make_blame(guards, "The model refused " + cmd + " (" + std::string(reason_name(expected)) +
+                                  "); the implementation applied it.");
+  }
+  std::string applied;
+  for (Rule r : trace) applied += (applied.empty() ? "" : ", ") + std::string(rule_name(r));
+  // A value accepted at a guard's boundary (a 15-byte name) is the likeliest
+  // reason to refuse it: those rules first, then everything it changes.
+  auto cands = select(trace, [](const RuleInfo& i) { return i.role == RuleRole::Accept; });
+  const auto changes = effects(trace);
+  cands.insert(cands.end(), changes.begin(), changes.end());
+  return make_blame(cands, "The model applied " + cmd + " by the rules " + applied + "; the implementation did not.");
 }
 
-std::string_view clause_for_snapshot(const Command& c, const Node& before, const Node& after,
-                                     std::string_view kind, bool missing_or_extra) {
-  (void)after;
-  const bool slot = kind == "slot";
-  return std::visit(
-      Overloaded{
-          [&](const cmd::LayerCreate& x) -> std::string_view {
-            if (x.name.empty()) return "LAYER-DESTROY-1";
-            if (x.layer_id == kNone16 && kind == "layer") return "LAYER-ID-PICK-1";
-            if (kind == "layer" && name_at_limit(x.name)) return "LAYER-NAME-1";
-            if (x.layer_id != kNone16 && before.find_layer(x.layer_id)) return "LAYER-RECREATE-1";
-            if (slot) return missing_or_extra ? "LAYER-STACK-1" : "LAYER-DEFAULT-1";
-            return "LAYER-CREATE-1";
-          },
-          [&](const cmd::LayerDestroy&) -> std::string_view { return "LAYER-DESTROY-1"; },
-          [&](const cmd::LayerSubscribe&) -> std::string_view { return "LAYER-SUBSCRIBE-1"; },
-          [&](const cmd::LayerUnsubscribe&) -> std::string_view { return "LAYER-SUBSCRIBE-1"; },
-          [&](const cmd::VertexSetXyzReal32& x) -> std::string_view {
-            if (is_xyz_delete(x))
-              return kind == "polygon" ? "POLY-VERTEX-DELETE-1" : slot ? "LAYER-SIZE-1" : "VERTEX-DELETE-1";
-            if (slot && x.layer_id == Node::kVertexLayer) return missing_or_extra ? "LAYER-SIZE-1" : "LAYER-DEFAULT-1";
-            if (x.layer_id != Node::kVertexLayer) return "REAL-32BIT-1";
-            return x.vertex_id == kNone32 ? "VERTEX-ID-PICK-1" : "REAL-32BIT-1";
-          },
-          [&](const cmd::VertexSetXyzReal64& x) -> std::string_view {
-            if (is_xyz_delete(x))
-              return kind == "polygon" ? "POLY-VERTEX-DELETE-1" : slot ? "LAYER-SIZE-1" : "VERTEX-DELETE-1";
-            if (slot && x.layer_id == Node::kVertexLayer) return missing_or_extra ? "LAYER-SIZE-1" : "LAYER-DEFAULT-1";
-            if (x.layer_id != Node::kVertexLayer) return "REAL-STORAGE-1";
-            return x.vertex_id == kNone32 ? "VERTEX-ID-PICK-1" : "VERTEX-SET-1";
-          },
-          [&](const cmd::VertexDelete&) -> std::string_view {
-            return kind == "polygon" ? "POLY-VERTEX-DELETE-1" : slot ? "LAYER-SIZE-1" : "VERTEX-DELETE-1";
-          },
-          [&](const cmd::PolygonSetCornerUint32& x) -> std::string_view {
-            if (x.layer_id != Node::kPolygonLayer) return "LAYER-VALUE-1";
-            if (x.v[0] == kNone32) return slot ? "LAYER-SIZE-1" : "POLY-DELETE-1";
-            if (slot) return missing_or_extra ? "LAYER-SIZE-1" : "LAYER-DEFAULT-1";
-            return x.polygon_id == kNone32 ? "VERTEX-ID-PICK-1" : "POLY-TRIANGLE-1";
-          },
-          [&](const cmd::PolygonDelete&) -> std::string_view { return slot ? "LAYER-SIZE-1" : "POLY-DELETE-1"; },
-          [&](const cmd::CreaseSetVertex& x) -> std::string_view {
-            if (name_at_limit(x.layer)) return "CREASE-NAME-1";
-            return x.layer.empty() ? "CREASE-DEFAULT-1" : "CREASE-VERTEX-LAYER-1";
-          },
-          [&](const cmd::CreaseSetEdge& x) -> std::string_view {
-            if (name_at_limit(x.layer)) return "CREASE-NAME-1";
-            return x.layer.empty() ? "CREASE-DEFAULT-1" : "CREASE-EDGE-LAYER-1";
-          },
-          [&](const cmd::BoneCreate& x) -> std::string_view {
-            if (x.weight.empty()) return "BONE-DESTROY-1";
-            if (kind == "bone" && (name_at_limit(x.weight) || name_at_limit(x.reference) ||
-                                   name_at_limit(x.pos_label) || name_at_limit(x.rot_label)))
-              return "BONE-NAME-1";
-            return x.bone_id == kNone16 ? "BONE-ID-PICK-1" : "BONE-CREATE-1";
-          },
-          [&](const cmd::BoneDestroy&) -> std::string_view { return "BONE-DESTROY-1"; },
-          [&](const auto& x) -> std::string_view { return value_clause(x); },
-      },
-      c);
+Blame blame_snapshot(const Node& before, const Node& after, Reason expected, const RuleTrace& trace,
+                     const DocumentDifference& d, const std::string& observed) {
+  if (expected != Reason::Ok) {
+    std::vector<Rule> guards = select(trace, [](const RuleInfo& i) { return i.role == RuleRole::Guard; });
+    const std::string guard = guards.empty() ? std::string("?") : std::string(rule_name(guards.back()));
+    return make_blame({Rule::RejectedChangesNothing},
+                      "The model refused the command (rule " + guard + ") and changed nothing; the implementation " +
+                          (d.expected_line.empty() ? "added " + quoted(d.observed_line)
+                           : d.observed_line.empty() ? "removed " + quoted(d.expected_line)
+                                                     : "changed " + quoted(d.expected_line) + " to " +
+                                                           quoted(d.observed_line)) +
+                          ".");
+  }
+  const auto before_lines = lines_by_key(print_snapshot(before));
+  const auto after_lines = lines_by_key(print_snapshot(after));
+  const auto observed_lines = lines_by_key(observed);
+  std::string e = d.expected_line, o = d.observed_line;
+  // The first difference pairs lines by their first two words; a line's
+  // identity may be one word (crease_vertex) or three (slot <layer> <id>):
+  // a line missing on one side whose identity the other side has is a
+  // changed line.
+  if (o.empty() && !e.empty()) {
+    if (auto it = observed_lines.find(line_key(e)); it != observed_lines.end()) o = it->second;
+  } else if (e.empty() && !o.empty()) {
+    if (auto it = after_lines.find(line_key(o)); it != after_lines.end()) e = it->second;
+  }
+  const std::string ke = e.empty() ? "" : line_key(e), ko = o.empty() ? "" : line_key(o);
+  const std::uint32_t now = after.step();
+
+  std::vector<Rule> cands;
+  std::string what;
+  const auto add = [&cands](const std::vector<Rule>& rs) { cands.insert(cands.end(), rs.begin(), rs.end()); };
+
+  if (!e.empty() && !o.empty() && ke == ko) {  // the same line, other values
+    const std::uint8_t bit = line_kind_bit(first_word(e));
+    const auto w = line_written(after, e);
+    if (w && w->step == now && w->rule != Rule::None) {
+      add(with_role(trace, RuleRole::Accept, bit));  // a 15-byte name stored cut
+      cands.push_back(w->rule);
+      what = "The model wrote " + quoted(e) + " by rule " + std::string(rule_name(w->rule)) +
+             "; the implementation shows " + quoted(o) + ".";
+    } else {
+      add(with_role(trace, RuleRole::Keep, bit));
+      what = "The command leaves " + quoted(e) + " as it was" + written_by(w) + "; the implementation changed it to " +
+             quoted(o) + ".";
+    }
+  } else {
+    if (!e.empty()) {  // the implementation lacks the model's line `ke`
+      const std::uint8_t bit = line_kind_bit(first_word(e));
+      const auto w = line_written(after, e);
+      if (before_lines.count(ke)) {
+        add(with_role(trace, RuleRole::Keep, bit));
+        if (w && w->step == now) {  // the command re-placed and re-wrote it (a re-typed layer's slot)
+          add(with_role(trace, RuleRole::Place, bit));
+          cands.push_back(w->rule);
+        }
+        what = "The model keeps " + quoted(e) + written_by(w) + "; the implementation has no line `" + ke + "`.";
+      } else {
+        const auto place = with_role(trace, RuleRole::Place, bit);
+        // Did the implementation put a line of this kind at another id?
+        std::string elsewhere;
+        for (const auto& [k, l] : observed_lines)
+          if (first_word(l) == first_word(e) && !after_lines.count(k) && !before_lines.count(k)) {
+            elsewhere = l;
+            break;
+          }
+        if (!elsewhere.empty() && !place.empty()) {
+          add(place);
+        } else {
+          add(place);
+          if (w && w->step == now && !(bit == kLineSlot && !place.empty())) cands.push_back(w->rule);
+        }
+        what = "The model created " + quoted(e) + written_by(w) + "; the implementation " +
+               (elsewhere.empty() ? "has no line `" + ke + "`."
+                                  : "created `" + line_key(elsewhere) + "` instead (" + quoted(elsewhere) + "): the "
+                                        "command asked for `" + ke + "`.");
+      }
+    }
+    if (!o.empty()) {  // the implementation has a line `ko` the model does not
+      const std::uint8_t bit = line_kind_bit(first_word(o));
+      std::string extra;
+      if (auto it = before_lines.find(ko); it != before_lines.end()) {
+        add(with_role(trace, RuleRole::Remove, bit));
+        extra = "The model removed " + quoted(it->second) + "; the implementation still has " + quoted(o) + ".";
+      } else {
+        add(with_role(trace, RuleRole::Place, bit));
+        add(with_role(trace, RuleRole::Value, bit));
+        extra = "The implementation has " + quoted(o) + ", a line the model does not create.";
+      }
+      what += (what.empty() ? "" : " ") + extra;
+    }
+  }
+  if (cands.empty()) add(effects(trace));
+  return make_blame(cands, what);
+}
+
+static std::string_view crease_clause(const Node& n, const std::string& name, LayerType required) {
+  if (name.empty()) return "CREASE-DEFAULT-1";
+  const Layer* l = n.find_layer_by_name(name);
+  if (!l || l->type != required) return "CREASE-LAYER-MISSING-1";
+  return required == LayerType::VertexUint32 ? "CREASE-VERTEX-LAYER-1" : "CREASE-EDGE-LAYER-1";
 }
 
 std::string_view clause_for_derived(const Node& after, std::string_view kind, long bone_id) {
@@ -263,13 +248,7 @@ std::string_view clause_for_derived(const Node& after, const DocumentDifference&
     // corner) when they disagree on how many corners a polygon has, i.e.
     // whether its fourth corner is a vertex reference: POLY-TRIANGLE-1.
     // Only a different crease on the same edge is about creases.
-    const auto edge = [](const std::string& line) {
-      std::istringstream in(line);
-      std::string kind, polygon, corner;
-      in >> kind >> polygon >> corner;
-      return polygon + " " + corner;
-    };
-    if (d.expected_line.empty() || d.observed_line.empty() || edge(d.expected_line) != edge(d.observed_line))
+    if (d.expected_line.empty() || d.observed_line.empty() || line_key(d.expected_line) != line_key(d.observed_line))
       return "POLY-TRIANGLE-1";
   }
   return clause_for_derived(after, d.kind, bone_id);

@@ -1,39 +1,56 @@
-// attribution.h — which clause a divergence from the reference breaks.
+// attribution.h — which rule, and so which clause, a divergence from the
+// reference breaks.
 //
-// Spec: the clause catalog (clause.h), which cites 000 section 2.6.
+// Spec: the clause catalog (clause.h), reached through the node's rules
+// (reference/node/rule.h) and their clauses (rule_clauses.h).
 //
-// Rationale: a differential check knows *that* an implementation differs
-// from the reference after a command; a person needs to know *which rule*
-// it broke. These functions answer that from the command, the reference's
-// verdict on it and the state before it, by the same rules node.cpp
-// applies. Each returns a clause id that exists in the catalog (a test
-// checks this for every command kind and reason).
+// Rationale: the reference node records which of its rules decided each
+// verdict (RuleTrace) and which rule last wrote each snapshot line
+// (Written), so a difference is blamed by provenance, not guessed from its
+// shape: a divergent verdict on the rule that decided it (a refusal's
+// guard; for an applied command, the rules it applied); a divergent line
+// on the rule that wrote it in this command, or, for a line the command
+// left alone, the rule that keeps it; a line the implementation lacks on
+// the rule that placed it; a line it has and the model does not on the
+// rule that removed it or, for a line nobody removed, the rule that placed
+// it. Where several rules could explain one difference, all are named and
+// the blame goes to the strictest level among them (MUST, then
+// IMPLEMENTATION-DEFINED, then SHOULD): a MUST rule is never hidden behind
+// a weaker one.
+//
+// What remains of the old shape-based attribution is clause_for_derived:
+// the derived document (effective creases, bone world poses) is computed by
+// reference/geometry from the stored state, not decided by a node rule, so
+// a derived line is blamed on the geometry clause of its kind.
 #pragma once
 
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "command.h"
 #include "document_diff.h"
 #include "node.h"
 #include "reason.h"
+#include "rule.h"
 
 namespace vgc {
 
-// The reference rejected `c` with `why`; the implementation applied it.
-std::string_view clause_for_rejection(const Command& c, Reason why, const Node& before);
+struct Blame {
+  std::vector<Rule> rules;  // every rule that could explain it; rules[0] is blamed
+  std::string clause;       // rules[0]'s clause (the strictest level among them)
+  std::string explanation;  // names the rules, what the model did and why
+};
 
-// The reference applied `c`; the implementation rejected it (or crashed,
+// The verdicts differ: the reference gave `expected` on `c` with the rules
+// `trace` (Node::apply), the implementation the other verdict (or crashed,
 // or timed out on it).
-std::string_view clause_for_acceptance(const Command& c, const Node& before);
+Blame blame_verdict(const Command& c, Reason expected, const RuleTrace& trace);
 
-// Both applied `c` but the implementation's snapshot differs from the
-// reference's at a line whose first word is `line_kind` ("layer", "slot",
-// "vertex", "polygon", "crease_vertex", "crease_edge", "bone", ...).
-// `missing_or_extra` is true when a line is absent on one side rather than
-// changed.
-std::string_view clause_for_snapshot(const Command& c, const Node& before, const Node& after,
-                                     std::string_view line_kind, bool missing_or_extra);
+// The reference's snapshot after `c` (state `after`, rules `trace`, from
+// `before`) differs from the implementation's `observed` snapshot at `d`.
+Blame blame_snapshot(const Node& before, const Node& after, Reason expected, const RuleTrace& trace,
+                     const DocumentDifference& d, const std::string& observed);
 
 // The derived documents differ at a line of `line_kind` ("vertex_crease",
 // "edge_crease", "bone_pose") in the state `after`; `bone_id` is the bone
@@ -48,5 +65,9 @@ std::string_view clause_for_derived(const Node& after, const DocumentDifference&
 
 // The bone id of a derived document's "bone_pose <id> ..." line, or -1.
 long bone_id_of(const std::string& line);
+
+// The identity of a snapshot or derived line: its kind and the ids after
+// it ("slot 3 17", "edge_crease 4 2", "vertex 5", "crease_vertex").
+std::string line_key(const std::string& line);
 
 }  // namespace vgc

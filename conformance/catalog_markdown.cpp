@@ -5,6 +5,7 @@
 
 #include "clause.h"
 #include "property.h"
+#include "rule_clauses.h"
 #include "runner.h"
 
 namespace vgc {
@@ -16,6 +17,29 @@ std::string properties_of(std::string_view clause) {
     for (auto c : p.clauses)
       if (c == clause) out += (out.empty() ? "" : ", ") + std::string(p.id);
   return out;
+}
+
+// The node rules of a clause (rule_clauses.h), one Markdown bullet each,
+// with the seeded fault that certifies a MUST clause's rule (the fault
+// matrix, tests/conformance/fault_matrix_test.cpp) or why it has none.
+std::string rules_markdown(const Clause& c) {
+  const auto rules = rules_of_clause(c.id);
+  if (rules.empty())
+    return "Rules: none of the node's (judged on the derived document, a capability or the adapter "
+           "contract).\n\n";
+  std::string out = "Rules (reference/node/rule.h):\n\n";
+  for (Rule r : rules) {
+    const RuleInfo& info = rule_info(r);
+    out += fmt::format("- `{}` ({}): {}.", info.name, rule_role_name(info.role), info.says);
+    if (c.level == ClauseLevel::Must) {
+      const auto exempt = rule_fault_exemption(r);
+      out += exempt.empty()
+                 ? fmt::format(" Fault matrix: `rule:{}` is blamed on {} alone at seeds 1, 2, 3.", info.name, c.id)
+                 : fmt::format(" Fault matrix: no seeded fault ({}).", exempt);
+    }
+    out += "\n";
+  }
+  return out + "\n";
 }
 
 }  // namespace
@@ -41,8 +65,9 @@ std::string clause_catalog_markdown(std::string_view glob) {
   for (const Clause& c : clause_catalog()) {
     if (!clause_selected(std::string(glob), c.id)) continue;
     if (c.group != group) out += fmt::format("## {}\n\n", c.group);
-    out += fmt::format("### {} — {}\n\nSource: {}\n\n> {}\n\nReading: {}\n\nChecked by: {}\n\n", c.id,
-                       clause_level_name(c.level), c.source, c.text, c.reading, properties_of(c.id));
+    out += fmt::format("### {} — {}\n\nSource: {}\n\n> {}\n\nReading: {}\n\nChecked by: {}\n\n{}", c.id,
+                       clause_level_name(c.level), c.source, c.text, c.reading, properties_of(c.id),
+                       rules_markdown(c));
     group = std::string(c.group);
   }
   return out;

@@ -44,15 +44,18 @@ StepResult check_step(const Node& before, const Command& c, Implementation& sut,
                       bool follow_choices) {
   StepResult result;
   *after = before;
-  const Reason expected = after->apply(c);
+  const Reason expected = after->apply(c, &result.rules);
   result.expected = expected;
   const std::string text = print_command(c);
 
   const Answer answer = sut.apply(c);
   if (answer.status != CallStatus::Ok) {
-    const auto clause = expected == Reason::Ok ? clause_for_acceptance(c, before)
-                                               : clause_for_rejection(c, expected, before);
-    result.failure = call_failure(clause, answer.status, "applying `" + text + "`", answer.detail);
+    const Blame blame = blame_verdict(c, expected, result.rules);
+    result.failure = call_failure(blame.clause, answer.status, "applying `" + text + "`", answer.detail);
+    if (answer.status != CallStatus::ProtocolError) {
+      result.failure->rules = blame.rules;
+      result.failure->message += ". " + blame.explanation;
+    }
     return result;
   }
   if (answer.not_sent) {  // the route cannot carry it: both sides stay at `before`
@@ -104,9 +107,11 @@ StepResult check_step(const Node& before, const Command& c, Implementation& sut,
   }
   if (applied != (expected == Reason::Ok)) {
     Finding f;
-    f.clause = std::string(expected == Reason::Ok ? clause_for_acceptance(c, before)
-                                                  : clause_for_rejection(c, expected, before));
-    f.message = "`" + text + "`: expected " + expected_answer + ", observed " + observed_answer;
+    const Blame blame = blame_verdict(c, expected, result.rules);
+    f.clause = blame.clause;
+    f.rules = blame.rules;
+    f.message = "`" + text + "`: expected " + expected_answer + ", observed " + observed_answer + ". " +
+                blame.explanation;
     result.failure = f;
     return result;
   }
@@ -134,11 +139,10 @@ StepResult check_step(const Node& before, const Command& c, Implementation& sut,
   }
   if (d) {
     Finding f;
-    const bool missing_or_extra = d->expected_line.empty() || d->observed_line.empty();
-    f.clause = expected == Reason::Ok
-                   ? std::string(clause_for_snapshot(c, before, *after, d->kind, missing_or_extra))
-                   : "ATOMIC-1";
-    f.message = "after `" + text + "` (" + observed_answer + "), snapshot: " + d->describe();
+    const Blame blame = blame_snapshot(before, *after, expected, result.rules, *d, comparable(snap.text));
+    f.clause = blame.clause;
+    f.rules = blame.rules;
+    f.message = "after `" + text + "` (" + observed_answer + "), snapshot: " + d->describe() + ". " + blame.explanation;
     f.shown_by = "snapshot";
     f.observed_document = snap.text;
     f.expected_line = d->expected_line;

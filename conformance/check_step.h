@@ -52,6 +52,10 @@ struct Finding {
   std::string shown_by;
   std::string observed_document;
   std::string expected_line, observed_line;
+  // The reference node's rules the finding is blamed on (attribution.h),
+  // the blamed one first; empty for a finding no node rule decided (a
+  // derived line, a capability check, a fresh node).
+  std::vector<Rule> rules;
 };
 
 struct StepResult {
@@ -61,6 +65,7 @@ struct StepResult {
   // check goes on.
   std::vector<Finding> notes;
   Reason expected = Reason::Ok;  // the reference's verdict on the command
+  RuleTrace rules;               // the rules the reference applied to it (rule.h)
   // false when the implementation answered `done` (Answer::verdict_reported):
   // applied or rejected was read from its state, and REASON-1 (reason codes)
   // could not be judged on this step: the runner reports it "not-applicable"

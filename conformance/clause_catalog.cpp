@@ -117,7 +117,8 @@ const std::vector<Clause>& clause_catalog() {
       {"VERTEX-SET-1", "vertices", MUST, "000 2.6.1",
        "As vertices ... are created, the defining data (the XYZ coordinates ...) are placed in a slot in the "
        "base layer.",
-       "vertex_set_xyz_real32/64 on layer 0 creates the vertex at a new id and moves a live one."},
+       "vertex_set_xyz_real32/64 on layer 0 creates the vertex at a new id and moves a live one; a moved vertex "
+       "keeps its slot values in every other vertex-stack layer (docs/commands.md 4.5 step 4)."},
       {"VERTEX-DELETE-1", "vertices", MUST, "README (r6 protocol)",
        "x, y or z equal to FLT_MAX means g_vertex_delete_real32(vertex_id); DBL_MAX means "
        "g_vertex_delete_real64(vertex_id).",
@@ -149,7 +150,8 @@ const std::vector<Clause>& clause_catalog() {
        "There is always storage reserved for four corners for a given polygon; if the three first references "
        "are valid and the fourth unused, the polygon is a triangle. If also the fourth reference is to a valid "
        "vertex, it is a quadrilateral.",
-       "Triangles (fourth corner 0xFFFFFFFF) and quads are created and re-defined with the corners as sent."},
+       "Triangles (fourth corner 0xFFFFFFFF) and quads are created and re-defined with the corners as sent; a "
+       "re-defined polygon keeps its slot values in every other polygon-stack layer (docs/commands.md 4.5 step 5)."},
       {"POLY-VERTEX-REF-1", "polygons", MUST, "000 2.6",
        "... polygons are created by referencing the vertices. All polygons have exactly three or four corners "
        "(vertex references) ... if the three first references are valid and the fourth unused, the polygon is "

@@ -150,7 +150,7 @@ Gen<std::uint32_t> element_id(const std::vector<std::uint32_t>& live) {
     if (id == next) ++next;
   const auto others = gen::weightedOneOf<std::uint32_t>({
       {5, uniform<std::uint32_t>(0, 10)},
-      {1, gen::just(std::uint32_t(kNone32))},
+      {4, gen::just(std::uint32_t(kNone32))},  // pick a free id (vertex/polygon.create.pick_id)
       {8, magnitude<std::uint32_t>()},
   });
   if (live.empty()) return gen::weightedOneOf<std::uint32_t>({{3, gen::just(next)}, {1, others}});
@@ -267,6 +267,8 @@ Gen<Command> destroy_layer(const View& v) {
   return gen::exec([pv = std::make_shared<const View>(v)] {
     const View& v = *pv;  // one copy, shared by the copies RapidCheck makes of this lambda
     if (*uniform(0, 4) == 0) return Command{cmd::LayerCreate{*layer_id(v), "", 0, 0, 0.0}};  // wire alias
+    // The base layers, which no destroy may remove (layer.destroy.base_id).
+    if (*uniform(0, 7) == 0) return Command{cmd::LayerDestroy{*uniform<std::uint16_t>(0, 1)}};
     return Command{cmd::LayerDestroy{*layer_id(v)}};
   });
 }
@@ -275,7 +277,9 @@ Gen<Command> subscribe(const View& v) {
   return gen::exec([pv = std::make_shared<const View>(v)] {
     const View& v = *pv;  // one copy, shared by the copies RapidCheck makes of this lambda
     if (*uniform(0, 2) == 0) return Command{cmd::LayerUnsubscribe{*layer_id(v)}};
-    return Command{cmd::LayerSubscribe{*layer_id(v), *gen::weightedElement<std::uint8_t>({{5, 0}, {5, 1}, {1, 2}})}};
+    // A format above REAL64 is the wire's unsubscribe (alias.layer_subscribe.format).
+    return Command{cmd::LayerSubscribe{
+        *layer_id(v), *gen::weightedElement<std::uint8_t>({{5, 0}, {5, 1}, {3, 2}, {1, 255}})}};
   });
 }
 
@@ -711,7 +715,8 @@ Gen<Command> create_bone(const View& v) {
                                                  {{3, gen::elementOf(std::vector<std::uint16_t>{kNone16, 9, 0})},
                                                   {1, magnitude<std::uint16_t>()}}));
     for (auto& x : c.pos) x = *unit_component();
-    c.pos_label = *gen::elementOf(std::vector<std::string>{"", "curve_x", "sixteen_bytes_xx"});
+    // Labels at the limit: 15 bytes is a name, 16 is not (BONE-NAME-1).
+    c.pos_label = *gen::elementOf(std::vector<std::string>{"", "curve_x", "fifteen_bytes_x", "sixteen_bytes_xx"});
     // Rotations: identity, quarter turns about an axis, or anything.
     c.rot = *gen::weightedOneOf<std::array<double, 4>>({
         {2, gen::just<std::array<double, 4>>({0, 0, 0, 1})},
@@ -785,7 +790,7 @@ Gen<Command> gen_command(const Node& model, Focus focus) {
   using W = std::pair<std::size_t, Gen<Command>>;
   switch (focus) {
     case Focus::Layers:
-      return rc::gen::weightedOneOf<Command>({W{6, L(create_layer)}, W{3, L(destroy_layer)}, W{2, L(subscribe)},
+      return rc::gen::weightedOneOf<Command>({W{6, L(create_layer)}, W{3, L(destroy_layer)}, W{3, L(subscribe)},
                                           W{4, L(set_vertex)}, W{v.vertex_xyz_layers.empty() ? 2u : 5u, L(delete_vertex)},
                                           W{3, L(build_polygon)}, W{1, L(delete_polygon)}, W{2, L(value_step)},
                                           W{1, L(write_dead)}});

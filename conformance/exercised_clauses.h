@@ -1,16 +1,17 @@
 // exercised_clauses.h — which clauses a judged step decided.
 //
-// Spec: every clause of the catalog (clause.h); the attribution rules of
-// attribution.h decide which.
+// Spec: every clause of the catalog (clause.h), through the node's rules
+// (rule.h) and their clauses (rule_clauses.h).
 //
 // Rationale: a clause may only be reported `pass` when something in the run
 // could have shown it failing (issue 9, item 1). A step that was run on the
-// model and on the implementation and found equal "exercised" each clause
-// that attribution would have blamed had that step diverged: the clause of
-// its verdict (acceptance or rejection), and for an applied command the
-// clause of every kind of snapshot or derived line it changed, whether
-// changed, added or removed. A rejected command exercises ATOMIC-1 (nothing
-// changed) and, when the implementation reported its verdict, REASON-1.
+// model and on the implementation and found equal "exercised" the clause of
+// every rule the reference applied to it (its RuleTrace: the guard of a
+// refusal, which includes command.rejected.changes_nothing, ATOMIC-1; every
+// alias, placement, write, keep and removal of an applied command), since
+// attribution blames a divergence on exactly those rules; and the clause of
+// every kind of derived line it changed. A rejected command whose verdict
+// the implementation reported also exercises REASON-1.
 // Every judged step exercises ACCEPT-1 (it read the canonical line) and
 // STABLE-1 (it answered). The runner counts these per clause.
 #pragma once
@@ -26,7 +27,7 @@
 namespace vgc {
 
 // Appends to *out the clauses that the step `c`, taking `before` to `after`
-// with the reference's verdict `expected`, decided (duplicates removed).
+// with the reference's verdict `expected` by the rules `rules`, decided (duplicates removed).
 // `verdict_reported` is false when the implementation answered `done`
 // (REASON-1 is then not exercised). Precondition: `after` is `before` with
 // `c` applied by the reference.
@@ -37,8 +38,8 @@ namespace vgc {
 // *derived_only instead of *out (a clause the step also decided otherwise
 // stays in *out only). The runner reports a clause that only such steps
 // reached as not judgeable on that route.
-void exercised_clauses(const Node& before, const Command& c, Reason expected, const Node& after,
-                       bool verdict_reported, std::vector<std::string_view>* out,
+void exercised_clauses(const Node& before, const Command& c, Reason expected, const RuleTrace& rules,
+                       const Node& after, bool verdict_reported, std::vector<std::string_view>* out,
                        std::vector<std::string_view>* derived_only = nullptr);
 
 // The clauses a fresh-node check decides (LAYER-BASE-1, CREASE-INITIAL-1,

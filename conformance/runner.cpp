@@ -70,6 +70,7 @@ struct CaseContext {
   const std::vector<std::string_view>* declared = nullptr;  // the property's clauses
   std::map<std::string, long>* derived_only = nullptr;  // route without a derived document
   std::map<std::string, CommandKindCount>* kinds = nullptr;
+  std::map<std::string, long>* rule_uses = nullptr;
   long* unreported = nullptr;
 };
 
@@ -210,9 +211,10 @@ struct Step final : rc::state::Command<Node, Implementation> {
     }
     if (!r.failure && !c.shrinking && r.not_judged.empty()) {
       std::vector<std::string_view> decided, derived_only;
-      exercised_clauses(before, command, r.expected, after, r.verdict_reported, &decided,
+      exercised_clauses(before, command, r.expected, r.rules, after, r.verdict_reported, &decided,
                         r.derived_judged ? nullptr : &derived_only);
       count_exercised(decided);
+      for (Rule rule : r.rules) ++(*c.rule_uses)[std::string(rule_name(rule))];
       for (auto clause : derived_only) ++(*c.derived_only)[std::string(clause)];
       CommandKindCount& k = (*c.kinds)[command_kind(command)];
       ++k.sent;
@@ -371,6 +373,7 @@ PropertyOutcome run_property(const PropertySpec& spec, Implementation& sut, cons
   ctx.declared = &spec.clauses;
   ctx.derived_only = &out.derived_only;
   ctx.kinds = &run->command_kinds;
+  ctx.rule_uses = &run->rule_uses;
   ctx.unreported = &run->unreported_verdicts;
   out.cases_target = ctx.target;
   g_context = &ctx;
@@ -407,7 +410,10 @@ PropertyOutcome run_property(const PropertySpec& spec, Implementation& sut, cons
     if (auto f = check_fresh(*c.sut)) {
       if (!fail_case(*f)) return;
     }
-    if (!c.shrinking) count_exercised(fresh_node_clauses());
+    if (!c.shrinking) {
+      count_exercised(fresh_node_clauses());
+      for (Rule rule : {Rule::BaseLayers, Rule::InitialCreases}) ++(*c.rule_uses)[std::string(rule_name(rule))];
+    }
     // A capability case starts from a small open surface, so that its
     // random commands edit a mesh rather than mostly build nothing.
     Node start;
@@ -588,6 +594,7 @@ RunResult run_certification(Implementation& sut, const RunOptions& o) {
   RunResult run;
   run.implementation = sut.name();
   run.options = o;
+  for (std::size_t i = 1; i < kRuleCount; ++i) run.rule_uses[std::string(rule_name(static_cast<Rule>(i)))] = 0;
   const auto start = Clock::now();
   const auto deadline = start + std::chrono::duration_cast<Clock::duration>(
                                     std::chrono::duration<double>(o.budget_seconds));

@@ -165,6 +165,11 @@ struct RunResult {
   std::vector<PropertyOutcome> properties;  // property catalog order
   std::vector<ClauseOutcome> clauses;  // catalog order; selected clauses and any clause with a finding
   std::map<std::string, CommandKindCount> command_kinds;
+  // Rule name (reference/node/rule.h) -> judged uses: judged steps whose
+  // reference trace applied the rule, and fresh-node checks for the fresh
+  // node's rules. Counted outside shrinking; every rule is listed, 0 when
+  // unused. The measure of the generators' reach (issue 17 item 3).
+  std::map<std::string, long> rule_uses;
   long unreported_verdicts = 0;  // steps the implementation answered `done` to
   std::string route;  // RouteLimits::route of the implementation: empty, or the route whose limits apply
   // Set when the implementation could not even show a fresh node (it

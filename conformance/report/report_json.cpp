@@ -107,6 +107,9 @@ std::string render_report_json(const RunResult& run, const Verdict& v, const Rep
   for (const auto& [kind, k] : run.command_kinds)
     kinds[kind] = {{"sent", k.sent}, {"applied", k.applied}, {"rejected", k.rejected}};
   j["command_kinds"] = kinds;
+  json rules = json::object();
+  for (const auto& [rule, n] : run.rule_uses) rules[rule] = n;
+  j["rule_uses"] = rules;
   return j.dump(2) + "\n";
 }
 

@@ -8,6 +8,7 @@
 #include "command_text.h"
 #include "program_text.h"
 #include "report.h"
+#include "rule_clauses.h"
 
 namespace vgc {
 
@@ -100,6 +101,15 @@ std::string render_summary(const RunResult& run, const Verdict& v, const ReportC
     std::string rej;
     for (const auto& [reason, n] : k.rejected) rej += fmt::format("{}{} {}", rej.empty() ? "" : ", ", n, reason);
     out += fmt::format("| {} | {} | {} | {} |\n", kind, k.sent, k.applied, rej.empty() ? "-" : rej);
+  }
+  if (!run.rule_uses.empty()) {
+    out += "\n## Rules used\n\nJudged uses of each rule of the reference node (docs/clauses.md lists a clause's "
+           "rules): how often a judged step reached it.\n\n| rule | clause | judged uses |\n|---|---|---|\n";
+    for (const auto& [rule, n] : run.rule_uses) {
+      Rule r = Rule::None;
+      parse_rule_name(rule, &r);
+      out += fmt::format("| {} | {} | {} |\n", rule, rule_clause(r), n);
+    }
   }
   return out;
 }

@@ -16,12 +16,14 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <initializer_list>
 #include <map>
 #include <optional>
 #include <string>
 
 #include "command.h"
 #include "reason.h"
+#include "rule.h"
 
 namespace vgc {
 
@@ -30,6 +32,7 @@ namespace vgc {
 struct Slot {
   std::array<std::uint32_t, 4> u{};
   std::array<double, 4> r{};
+  Written written;  // the rule that last wrote this slot's values (rule.h)
 };
 
 struct Layer {
@@ -40,11 +43,13 @@ struct Layer {
   double def_real = 0.0;
   std::optional<RealFormat> subscription;  // layer_subscribe / unsubscribe
   std::map<std::uint32_t, Slot> slots;     // one per live vertex or polygon of its stack
+  Written written;                         // the rule that last wrote the layer's own line
 };
 
 struct CreaseSetting {  // 2.6.2: a constant, or a named layer
   std::string layer;    // empty: the constant applies everywhere
   std::uint32_t def_crease = 0;
+  Written written{Rule::InitialCreases, 0};
 };
 
 struct Bone {  // 2.6.3
@@ -56,6 +61,7 @@ struct Bone {  // 2.6.3
   std::string pos_label;
   std::array<double, 4> rot{0, 0, 0, 1};
   std::string rot_label;
+  Written written;
 };
 
 // The bone a bone_create stores under `id` (the command's id, or the one
@@ -76,8 +82,15 @@ class Node {
   explicit Node(NodeLimits limits = {});
 
   // Applies `c` completely and returns Reason::Ok, or changes nothing and
-  // returns why not. Never throws for any command value.
-  Reason apply(const Command& c);
+  // returns why not. Never throws for any command value. When `trace` is
+  // not null it receives the rules the command applied (rule.h), in order:
+  // for a refusal, the guard that refused it (after any alias read first),
+  // then every later guard of layer_create / bone_create that would refuse
+  // it too.
+  // Every element the command writes records the rule and step() (Written).
+  Reason apply(const Command& c, RuleTrace* trace = nullptr);
+  // How many commands apply() has been given (the step a Written refers to).
+  std::uint32_t step() const { return step_; }
 
   const std::map<std::uint16_t, Layer>& layers() const { return layers_; }
   const Layer* find_layer(std::uint16_t id) const;
@@ -112,7 +125,8 @@ class Node {
   Reason apply_one(const cmd::BoneCreate& c);
   Reason apply_one(const cmd::BoneDestroy& c);
 
-  Reason set_xyz(std::uint16_t layer_id, std::uint32_t vertex_id, std::array<double, 3> xyz);
+  // `value_rule`: the rule of a write to a non-base XYZ layer (real32 or real64).
+  Reason set_xyz(std::uint16_t layer_id, std::uint32_t vertex_id, std::array<double, 3> xyz, Rule value_rule);
   Reason set_corners(std::uint16_t layer_id, std::uint32_t polygon_id, std::array<std::uint32_t, 4> v);
   // Finds a layer of `type` holding a live element `id`; writes the layer
   // to *out, or returns the first rule that fails.
@@ -120,8 +134,32 @@ class Node {
   Reason new_element(std::uint16_t base_layer, std::uint32_t id, const Slot& base_value);
   void erase_element(bool vertex_stack, std::uint32_t id);
   std::size_t layers_in_stack(bool vertex_stack) const;
+  // The rule of a crease setting naming `layer`: `constant` for no name,
+  // `named` when it names a layer of `type`, else CreaseLayerUnresolved.
+  Rule crease_rule(const std::string& layer, LayerType type, Rule constant, Rule named) const;
+
+  // Records `r` in the current command's trace, if any.
+  void note(Rule r) {
+    if (trace_) trace_->add(r);
+  }
+  // Records the guard `r` and returns its reason.
+  Reason refuse(Rule r, Reason why) {
+    note(r);
+    return why;
+  }
+  // After a refusal, when tracing: records every other guard whose
+  // condition also holds, so that a refused command names every rule that
+  // refuses it (the first recorded decides the reason).
+  void also_refusing(std::initializer_list<std::pair<Rule, bool>> guards) {
+    if (!trace_) return;
+    for (const auto& [rule, holds] : guards)
+      if (holds) note(rule);
+  }
+  Written written(Rule r) const { return {r, step_}; }
 
   NodeLimits limits_;
+  RuleTrace* trace_ = nullptr;
+  std::uint32_t step_ = 0;
   std::map<std::uint16_t, Layer> layers_;
   CreaseSetting vertex_crease_;
   CreaseSetting edge_crease_;

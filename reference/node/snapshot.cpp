@@ -1,6 +1,9 @@
 // snapshot.cpp — see snapshot.h.
 #include "snapshot.h"
 
+#include <algorithm>
+#include <vector>
+
 #include "number_text.h"
 
 namespace vgc {
@@ -54,6 +57,34 @@ UsedDefaults used_defaults(std::uint16_t layer_id, LayerType type) {
     case LayerType::PolygonFaceReal: used.def_real = true; break;
   }
   return used;
+}
+
+std::optional<Written> line_written(const Node& node, const std::string& line) {
+  std::vector<std::string> w;
+  for (std::size_t i = 0; i < line.size() && w.size() < 3;) {
+    const std::size_t j = std::min(line.find(' ', i), line.size());
+    w.push_back(line.substr(i, j - i));
+    i = j + 1;
+  }
+  if (w.empty()) return std::nullopt;
+  if (w[0] == "crease_vertex") return node.vertex_crease().written;
+  if (w[0] == "crease_edge") return node.edge_crease().written;
+  std::uint32_t a = 0, b = 0;
+  if (w.size() < 2 || !parse_uint(w[1], 32, &a)) return std::nullopt;
+  const auto in = [](const auto& map, auto id) -> std::optional<Written> {
+    const auto it = map.find(id);
+    if (it == map.end()) return std::nullopt;
+    return it->second.written;
+  };
+  if (w[0] == "layer") return a > 0xFFFF ? std::nullopt : in(node.layers(), static_cast<std::uint16_t>(a));
+  if (w[0] == "vertex") return in(node.vertices(), a);
+  if (w[0] == "polygon") return in(node.polygons(), a);
+  if (w[0] == "bone") return a > 0xFFFF ? std::nullopt : in(node.bones(), static_cast<std::uint16_t>(a));
+  if (w[0] == "slot" && w.size() >= 3 && a <= 0xFFFF && parse_uint(w[2], 32, &b)) {
+    const Layer* layer = node.find_layer(static_cast<std::uint16_t>(a));
+    return layer ? in(layer->slots, b) : std::nullopt;
+  }
+  return std::nullopt;
 }
 
 std::string print_snapshot(const Node& node) {

@@ -12,6 +12,7 @@
 // geometry: reference/geometry/derived_document.h.
 #pragma once
 
+#include <optional>
 #include <string>
 
 #include "node.h"
@@ -19,6 +20,12 @@
 namespace vgc {
 
 std::string print_snapshot(const Node& node);
+
+// Which rule last wrote the snapshot line `line` (or a line with the same
+// identity: its kind and ids, e.g. "slot 3 17", "layer 2", "crease_edge"),
+// and at which step (rule.h Written); nullopt when the node prints no line
+// with that identity. The printed header and "end" lines have none.
+std::optional<Written> line_written(const Node& node, const std::string& line);
 
 // The parts of a node's state the snapshot prints, held anywhere: a client
 // that rebuilds a node from what a host sends (conformance/adapter/

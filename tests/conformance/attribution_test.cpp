@@ -174,5 +174,54 @@ TEST(Attribution, SameEdgeDifferentCreaseAndShortNamesKeepTheirClauses) {
       << message;
 }
 
+// Issue 17: a host that ignores the layer id asked for and creates the layer
+// at the lowest free id (as r6 does) is blamed on layer.create
+// (LAYER-CREATE-1), not on the name or the id pick, and the finding says
+// where the layer went and where it was asked for.
+TEST(Attribution, LayerCreatedAtAnotherIdNamesTheRuleAndBothLines) {
+  OneFault sut;
+  sut.edit_snapshot = [](const std::string& text) {
+    std::string out = text;
+    for (const std::string from : {"layer 3 ", "slot 3 "}) {
+      const std::string to = from == "layer 3 " ? "layer 2 " : "slot 2 ";
+      for (std::size_t at; (at = out.find(from)) != std::string::npos;) out.replace(at, from.size(), to);
+    }
+    return out;
+  };
+  std::string message;
+  EXPECT_EQ(first_failure(sut, {"layer_create 3 \"abcdefghijklmno\" VERTEX_UINT32 0 0"}, &message), "LAYER-CREATE-1")
+      << message;
+  EXPECT_NE(message.find("rule layer.create (LAYER-CREATE-1, MUST)"), std::string::npos) << message;
+  EXPECT_NE(message.find("created `layer 2` instead"), std::string::npos) << message;
+  EXPECT_NE(message.find("the command asked for `layer 3`"), std::string::npos) << message;
+}
+
+// Issue 17: a host that resets a moved vertex's slots is blamed on the
+// rule that keeps them (VERTEX-SET-1, MUST), not on the default it shows
+// (LAYER-DEFAULT-1, SHOULD).
+TEST(Attribution, MovedVertexSlotResetIsTheKeepRuleNotTheDefault) {
+  OneFault sut;
+  bool moved = false;
+  sut.edit_snapshot = [&moved](const std::string& text) {
+    std::string out = text;
+    const auto at = out.find("slot 2 0 7\n");
+    if (moved && at != std::string::npos) out.replace(at, 11, "slot 2 0 5\n");  // 5: the layer's default
+    return out;
+  };
+  sut.refuse = [&moved](const Command& c) {
+    if (auto* x = std::get_if<cmd::VertexSetXyzReal64>(&c); x && x->vertex_id == 0 && x->x == 9) moved = true;
+    return false;
+  };
+  std::string message;
+  EXPECT_EQ(first_failure(sut, {"vertex_set_xyz_real64 0 0 0 0 0", "layer_create 2 \"u\" VERTEX_UINT32 5 0",
+                                "vertex_set_uint32 2 0 7", "vertex_set_xyz_real64 0 0 9 9 9"},
+                          &message),
+            "VERTEX-SET-1")
+      << message;
+  EXPECT_NE(message.find("vertex.move.keeps_slots"), std::string::npos) << message;
+  EXPECT_NE(message.find("\"slot 2 0 7\""), std::string::npos) << message;
+  EXPECT_NE(message.find("\"slot 2 0 5\""), std::string::npos) << message;
+}
+
 }  // namespace
 }  // namespace vgc

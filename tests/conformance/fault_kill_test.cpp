@@ -75,6 +75,7 @@ TEST(FaultKill, EveryFaultIsRejectedNamingItsClause) {
   const auto& catalog = faults::fault_catalog();
   int killed = 0, total = 0;
   for (std::size_t f = 1; f < catalog.size(); ++f) {
+    if (catalog[f].generated) continue;  // the "rule:<name>" faults: fault_matrix_test.cpp
     const Outcome o = certify_fault(static_cast<int>(f));
     ++total;
     killed += o.killed;

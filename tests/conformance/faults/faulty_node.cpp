@@ -20,8 +20,9 @@
 
 namespace vgc::faults {
 
-const std::vector<FaultInfo>& fault_catalog() {
-  static const std::vector<FaultInfo> catalog = {
+namespace {
+std::vector<FaultInfo> build_catalog() {
+  std::vector<FaultInfo> catalog = {
       {"none", "", "", "the reference, unchanged"},
       {"base-layer-destroyable", "LAYER-BASE-2", "fail", "answers ok to destroying layer 0 or 1"},
       {"layer-type-unchecked", "LAYER-TYPE-1", "fail", "creates a layer with an unknown type as VERTEX_UINT32"},
@@ -32,7 +33,10 @@ const std::vector<FaultInfo>& fault_catalog() {
       {"missing-corner-vertices-created", "POLY-VERTEX-REF-1", "fail",
        "a corner naming no vertex creates that vertex at the origin"},
       {"duplicate-corners-accepted", "POLY-DISTINCT-1", "fail", "a repeated corner is dropped, making a triangle"},
-      {"vertex-delete-refused-when-used", "POLY-VERTEX-DELETE-1", "fail",
+      // Refusing the delete breaks vertex.delete (VERTEX-DELETE-1, MUST) as
+      // much as the cascade (POLY-VERTEX-DELETE-1, IMPLEMENTATION-DEFINED):
+      // blamed on the strictest of the rules the refused command applies.
+      {"vertex-delete-refused-when-used", "VERTEX-DELETE-1", "fail",
        "refuses to delete a vertex that polygons use"},
       {"edge-crease-off-by-one", "CREASE-EDGE-LAYER-1", "fail",
        "reports the crease of corner i+1 for the edge starting at corner i"},
@@ -64,7 +68,30 @@ const std::vector<FaultInfo>& fault_catalog() {
        "storage bound)"},
       {"vertex-delete-alias-layer-0-only", "VERTEX-DELETE-1", "fail",
        "treats FLT_MAX / DBL_MAX in a coordinate as a delete only on layer 0; elsewhere it is a plain write"},
+      // The three MUST bugs of issue 17, each breaking one node rule alone.
+      {"moved-vertex-slots-reset", "VERTEX-SET-1", "fail",
+       "a moved vertex's slots in the other vertex layers are reset to their defaults", Rule::VertexMoveKeepsSlots},
+      {"redefined-polygon-slots-reset", "POLY-TRIANGLE-1", "fail",
+       "a re-defined polygon's slots in the other polygon layers are reset to their defaults",
+       Rule::PolygonRedefineKeepsSlots},
+      {"retype-other-stack-no-slots", "LAYER-STACK-1", "fail",
+       "a layer re-typed into the other stack has no slots for that stack's live elements",
+       Rule::LayerSlotsForStack},
   };
+  // One generated fault per rule: "rule:<name>" (faulty_node.h).
+  static std::vector<std::string> names;
+  names.reserve(kRuleCount);
+  for (std::size_t i = 1; i < kRuleCount; ++i) names.push_back("rule:" + std::string(rule_name(static_cast<Rule>(i))));
+  for (std::size_t i = 1; i < kRuleCount; ++i) {
+    const Rule r = static_cast<Rule>(i);
+    catalog.push_back({names[i - 1], "", "fail", rule_info(r).says, r, true});
+  }
+  return catalog;
+}
+}  // namespace
+
+const std::vector<FaultInfo>& fault_catalog() {
+  static const std::vector<FaultInfo> catalog = build_catalog();
   return catalog;
 }
 
@@ -139,6 +166,9 @@ bool is_vertex_delete_alias(const Command& c) {
 }  // namespace
 
 FaultyAnswer FaultyNode::apply(const Command& original) {
+  for (int f : faults_)
+    if (fault_catalog()[static_cast<std::size_t>(f)].breaks != Rule::None)
+      return apply_breaking(original, fault_catalog()[static_cast<std::size_t>(f)].breaks);
   Command c = original;
   const Node before = node_;
 
@@ -301,7 +331,164 @@ FaultyAnswer FaultyNode::apply(const Command& original) {
   return answer(r);
 }
 
-std::string FaultyNode::snapshot() const { return print_snapshot(node_); }
+namespace {
+
+// A snapshot line's identity: its kind and ids ("slot 3 5", "layer 2",
+// "crease_edge").
+std::string key_of(const std::string& line) {
+  std::size_t words = 2;
+  if (line.rfind("slot ", 0) == 0) words = 3;
+  if (line.rfind("crease_", 0) == 0) words = 1;
+  std::size_t pos = 0;
+  for (std::size_t w = 0; w < words; ++w) {
+    pos = line.find(' ', w == 0 ? 0 : pos + 1);
+    if (pos == std::string::npos) return line;
+  }
+  return line.substr(0, pos);
+}
+
+std::vector<std::string> lines_of(const std::string& text) {
+  std::vector<std::string> out;
+  std::istringstream in(text);
+  for (std::string l; std::getline(in, l);) out.push_back(l);
+  return out;
+}
+
+// The line with one value changed: a layer's name gets a 'Z' in front, any
+// other line a different last word.
+std::string corrupt(const std::string& line) {
+  if (line.rfind("layer ", 0) == 0) {
+    const auto q = line.find('"');
+    return q == std::string::npos ? line + " Z" : line.substr(0, q + 1) + "Z" + line.substr(q + 1);
+  }
+  const auto sp = line.rfind(' ');
+  const std::string last = line.substr(sp + 1);
+  return line.substr(0, sp + 1) + (last == "12345" ? "54321" : "12345");
+}
+
+bool info_role_needs_ok(Rule r) {
+  return rule_info(r).role == RuleRole::Alias || rule_info(r).role == RuleRole::Accept;
+}
+
+bool uses_other_stack(const Node& before, const Node& after, const RuleTrace& t, const Command& c) {
+  const auto* x = std::get_if<cmd::LayerCreate>(&c);
+  if (!x || !t.has(Rule::LayerRetype)) return false;
+  const Layer* a = before.find_layer(x->layer_id);
+  const Layer* b = after.find_layer(x->layer_id);
+  return a && b && is_vertex_layer_type(a->type) != is_vertex_layer_type(b->type);
+}
+
+// The element a vertex move or polygon re-definition names.
+std::uint32_t target_element(const Command& c) {
+  if (auto* x = std::get_if<cmd::VertexSetXyzReal64>(&c)) return x->vertex_id;
+  if (auto* x = std::get_if<cmd::VertexSetXyzReal32>(&c)) return x->vertex_id;
+  if (auto* x = std::get_if<cmd::PolygonSetCornerUint32>(&c)) return x->polygon_id;
+  return kNone32;
+}
+
+}  // namespace
+
+FaultyAnswer FaultyNode::apply_breaking(const Command& c, Rule broken) {
+  const Node before = node_;
+  RuleTrace t;
+  const Reason r = node_.apply(c, &t);
+  if (!t.has(broken)) return answer(r);
+  // An alias or acceptance also appears in a refused command's trace (the
+  // alias read, then a guard refused): only an applied one is broken.
+  const bool applied_only = info_role_needs_ok(broken);
+  if (applied_only && r != Reason::Ok) return answer(r);
+  const RuleInfo& info = rule_info(broken);
+  const std::uint32_t now = node_.step();
+  bool accepts = false;  // a 15-byte name in the command: left alone, so that only `broken` is broken
+  for (Rule x : t) accepts = accepts || (rule_info(x).role == RuleRole::Accept && x != broken);
+  // Every line the command wrote by `rule`, by identity.
+  const auto written_by = [&](Rule rule, std::map<std::string, std::uint32_t>* into) {
+    for (const auto& l : lines_of(print_snapshot(node_)))
+      if (auto w = line_written(node_, l); w && w->rule == rule && w->step == now) (*into)[key_of(l)] = now;
+  };
+  switch (info.role) {
+    case RuleRole::Guard:  // claims to apply what the guard refuses, and changes nothing
+      for (Rule x : t)  // only where it decides: the first guard recorded
+        if (rule_info(x).role == RuleRole::Guard) {
+          if (x != broken) return answer(r);
+          break;
+        }
+      node_ = before;
+      return {true, ""};
+    case RuleRole::Alias:
+    case RuleRole::Accept:  // refuses what the rule lets through
+      node_ = before;
+      return {false, "REJECTED"};
+    case RuleRole::Place:
+      if (broken == Rule::ElementIdSparse) {  // drops a large id, as a dense array would
+        node_ = before;
+        return {false, "LIMIT"};
+      }
+      if (broken == Rule::LayerSlotsForStack) {
+        if (is("retype-other-stack-no-slots") && !uses_other_stack(before, node_, t, c)) break;
+        written_by(Rule::LayerNewSlotDefault, &hidden_);
+        written_by(Rule::LayerRetypeResetsSlots, &hidden_);
+      }
+      if (broken == Rule::ElementGrowsLayers) written_by(Rule::ElementNewSlotDefault, &hidden_);
+      break;
+    case RuleRole::Value:
+      if (!accepts) written_by(broken, &corrupted_);
+      break;
+    case RuleRole::Keep:
+      if (broken == Rule::RejectedChangesNothing) {  // a refused command still changes the vertex crease
+        node_.apply(cmd::CreaseSetVertex{node_.vertex_crease().layer, node_.vertex_crease().def_crease + 1});
+        return answer(r);
+      }
+      for (const auto& [lid, layer] : node_.layers()) {
+        if (lid < 2) continue;
+        const bool vertex_layer = is_vertex_layer_type(layer.type);
+        Layer& l = const_cast<Layer&>(layer);  // test-only: reach into the node's storage
+        if (broken == Rule::LayerRecreateKeepsSlots) {
+          if (auto* x = std::get_if<cmd::LayerCreate>(&c); x && x->layer_id == lid)
+            for (auto& [eid, slot] : l.slots) slot = default_slot(l);
+          continue;
+        }
+        if (vertex_layer != (broken == Rule::VertexMoveKeepsSlots)) continue;
+        if (auto it = l.slots.find(target_element(c)); it != l.slots.end()) it->second = default_slot(l);
+      }
+      break;
+    case RuleRole::Remove: {  // still shows the lines the rule removed
+      const auto now_lines = lines_of(print_snapshot(node_));
+      std::map<std::string, bool> present;
+      for (const auto& l : now_lines) present[key_of(l)] = true;
+      for (const auto& l : lines_of(print_snapshot(before))) {
+        const std::string kind = l.substr(0, l.find(' '));
+        if ((line_kind_bit(kind) & info.lines) && !present.count(key_of(l))) ghosts_[key_of(l)] = l;
+      }
+      break;
+    }
+  }
+  return answer(r);
+}
+
+std::string FaultyNode::rule_fault_snapshot(std::string text) const {
+  if (corrupted_.empty() && hidden_.empty() && ghosts_.empty()) return text;
+  std::string out;
+  std::map<std::string, bool> present;
+  for (const auto& l : lines_of(text)) {
+    const std::string k = key_of(l);
+    present[k] = true;
+    const auto w = line_written(node_, l);
+    if (l == "end") {
+      for (const auto& [gk, g] : ghosts_)
+        if (!present.count(gk)) out += g + "\n";
+    }
+    if (auto it = hidden_.find(k); it != hidden_.end() && w && w->step == it->second) continue;
+    if (auto it = corrupted_.find(k); it != corrupted_.end() && w && w->step == it->second) {
+      out += corrupt(l) + "\n";
+      continue;
+    }
+    out += l + "\n";
+  }
+  return out;
+}
+
+std::string FaultyNode::snapshot() const { return rule_fault_snapshot(print_snapshot(node_)); }
 
 std::string FaultyNode::request(const std::string& line) const {
   CapabilityDocumentFaults f;

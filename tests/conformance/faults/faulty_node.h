@@ -11,6 +11,7 @@
 // show from outside. The reference itself stays free of test code.
 #pragma once
 
+#include <map>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -25,9 +26,17 @@ struct FaultInfo {
   std::string_view expected_clause; // the clause certification must name
   std::string_view expected_status; // "fail", "crash", "timeout"
   std::string_view description;
+  // The node rule the fault breaks (rule.h), for the faults that break one
+  // rule alone: the named bug kinds of issue 17 and one generated fault
+  // "rule:<rule name>" per rule (its expected clause is the rule's clause,
+  // conformance/rule_clauses.h: empty here, as reference/ and this library
+  // stay free of the catalog mapping). Rule::None for the others.
+  Rule breaks = Rule::None;
+  bool generated = false;  // a "rule:<name>" fault
 };
 
-// Every fault, by index. Index 0 is "none" (the plain reference).
+// Every fault, by index. Index 0 is "none" (the plain reference); the
+// generated "rule:<name>" faults come last.
 const std::vector<FaultInfo>& fault_catalog();
 // Index of `name` in fault_catalog(), or -1.
 int find_fault(std::string_view name);
@@ -56,9 +65,19 @@ class FaultyNode {
 
  private:
   bool is(std::string_view name) const;
+  // The rule-breaking faults (FaultInfo::breaks): apply `c` and misbehave
+  // exactly where the node applied the broken rule.
+  FaultyAnswer apply_breaking(const Command& c, Rule broken);
+  std::string rule_fault_snapshot(std::string text) const;
   FaultyAnswer answer(Reason r) const;
   std::vector<int> faults_;  // indexes into fault_catalog(); every one is active
   Node node_;
+  // Rule-breaking faults' lasting effects on the printed snapshot, by line
+  // identity ("slot 3 5"): a line shown changed, or hidden, while the node's
+  // line still has the step recorded; a removed line still shown while the
+  // node has no line with its identity.
+  std::map<std::string, std::uint32_t> corrupted_, hidden_;
+  std::map<std::string, std::string> ghosts_;
 };
 
 }  // namespace vgc::faults

@@ -1,0 +1,118 @@
+// fault_matrix_test.cpp — every rule of a MUST clause has a seeded fault
+// that breaks it alone ("rule:<name>", tests/conformance/faults/
+// faulty_node.h), and certification blames that fault on the rule's own
+// clause at seeds 1, 2 and 3, with no other clause failing (issue 17,
+// item 4). One test per rule, so ctest runs them in parallel.
+//
+// Also the three MUST bug kinds issue 17 found certified conformant: a
+// moved vertex's slots reset, a re-defined polygon's slots reset, a layer
+// re-typed into the other stack left without slots. Each must give a
+// non-conformant verdict (exit 1) naming its MUST clause at every seed.
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "faulty_implementation.h"
+#include "rule_clauses.h"
+#include "runner.h"
+#include "verdict.h"
+
+namespace vgc {
+namespace {
+
+// The run is restricted to the properties that declare the rule's clause
+// (RunOptions::clause_glob), to keep 53 rules x 3 seeds within CI's time:
+// those properties still judge every step against the whole catalog, and a
+// finding in any other clause is still reported by the run (RunResult
+// lists every clause with a finding) and fails the test.
+RunOptions matrix_options(std::uint64_t seed, const std::string& glob) {
+  RunOptions o;
+  o.seed = seed;
+  o.cases = 100;
+  o.budget_seconds = 120;
+  o.clause_glob = glob;
+  return o;
+}
+
+struct SeedOutcome {
+  bool blamed = false;       // the expected clause failed
+  std::string others;        // any other clause with a finding
+  int exit_code = 0;
+  std::string first_message;
+};
+
+SeedOutcome certify_once(int fault, const std::string& clause, std::uint64_t seed, const std::string& glob) {
+  faults::FaultyImplementation impl(fault);
+  const RunResult run = run_certification(impl, matrix_options(seed, glob));
+  SeedOutcome out;
+  for (const auto& co : run.clauses) {
+    if (!co.finding) continue;
+    if (co.clause->id == clause && co.status == "fail") {
+      out.blamed = true;
+      out.first_message = co.finding->message;
+    } else {
+      out.others += std::string(co.clause->id) + "(" + co.status + ") ";
+      if (out.first_message.empty()) out.first_message = co.finding->message;
+    }
+  }
+  out.exit_code = judge(run, nullptr).exit_code;
+  return out;
+}
+
+// Restricted to the clause's properties first; where those do not reach the
+// rule at this seed (a rule the generators draw rarely, e.g. a 15-byte bone
+// label), the whole catalog, as a default run would.
+SeedOutcome certify(int fault, const std::string& clause, std::uint64_t seed) {
+  SeedOutcome o = certify_once(fault, clause, seed, clause);
+  if (!o.blamed && o.others.empty()) o = certify_once(fault, clause, seed, "*");
+  return o;
+}
+
+class FaultMatrix : public ::testing::TestWithParam<Rule> {};
+
+TEST_P(FaultMatrix, TheRulesFaultIsBlamedOnItsClauseAtThreeSeeds) {
+  const Rule rule = GetParam();
+  const std::string clause(rule_clause(rule));
+  const int fault = faults::find_fault("rule:" + std::string(rule_name(rule)));
+  ASSERT_GE(fault, 0) << rule_name(rule);
+  for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+    const SeedOutcome o = certify(fault, clause, seed);
+    std::printf("%-36s seed %llu: %s %s  others: %s\n", std::string(rule_name(rule)).c_str(),
+                static_cast<unsigned long long>(seed), clause.c_str(), o.blamed ? "BLAMED" : "MISSED",
+                o.others.c_str());
+    EXPECT_TRUE(o.blamed) << rule_name(rule) << " seed " << seed << ": " << clause
+                          << " did not fail; others: " << o.others << "\n" << o.first_message;
+    EXPECT_TRUE(o.others.empty()) << rule_name(rule) << " seed " << seed << ": other clauses failed: " << o.others
+                                  << "\n" << o.first_message;
+    EXPECT_EQ(o.exit_code, 1) << rule_name(rule) << " seed " << seed;
+  }
+}
+
+std::string rule_test_name(const ::testing::TestParamInfo<Rule>& info) {
+  std::string n(rule_name(info.param));
+  for (char& ch : n)
+    if (ch == '.') ch = '_';
+  return n;
+}
+
+INSTANTIATE_TEST_SUITE_P(MustRules, FaultMatrix, ::testing::ValuesIn(fault_matrix_rules()), rule_test_name);
+
+TEST(FaultMatrix, TheThreeMustBugKindsFailAtEverySeed) {
+  for (const char* name : {"moved-vertex-slots-reset", "redefined-polygon-slots-reset", "retype-other-stack-no-slots"}) {
+    const int fault = faults::find_fault(name);
+    ASSERT_GE(fault, 0) << name;
+    const std::string clause(faults::fault_catalog()[static_cast<std::size_t>(fault)].expected_clause);
+    ASSERT_EQ(find_clause(clause)->level, ClauseLevel::Must) << name;
+    for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+      const SeedOutcome o = certify_once(fault, clause, seed, "*");  // a default run, the whole catalog
+      EXPECT_TRUE(o.blamed) << name << " seed " << seed << ": others " << o.others << "\n" << o.first_message;
+      EXPECT_EQ(o.exit_code, 1) << name << " seed " << seed;
+      std::printf("%-30s seed %llu: %s  exit %d  others: %s\n", name, static_cast<unsigned long long>(seed),
+                  o.blamed ? "BLAMED" : "MISSED", o.exit_code, o.others.c_str());
+    }
+  }
+}
+
+}  // namespace
+}  // namespace vgc
