@@ -191,11 +191,8 @@ int run(const Options& o) {
   const RunResult result = run_certification(*sut, ro);
   line.finish();
   const Verdict verdict = judge(result, ctx.baseline, o.strict);
-  ctx.run_dir = default_run_dir(o.reports, result, ctx);
   std::string error;
-  std::error_code ec;
-  std::filesystem::create_directories(std::filesystem::path(ctx.run_dir).parent_path(), ec);
-  if (!write_report(o.reports, result, verdict, ctx, &error)) {
+  if (!claim_run_dir(o.reports, result, &ctx, &error) || !write_report(o.reports, result, verdict, ctx, &error)) {
     fmt::print(stderr, "vgc certify: {}: no report was written (verdict {}); free space or give --reports a "
                        "directory you can write, then run again: {}\n", error, verdict.name, ctx.command_line);
     return 2;
