@@ -170,6 +170,15 @@ bool ExecImplementation::spawn(std::string* error) {
     close_all();
     return false;
   }
+  if (std::string why; !guard_.watch(pid, &why)) {
+    kill(-pid, SIGKILL);
+    kill(pid, SIGKILL);
+    while (waitpid(pid, nullptr, 0) < 0 && errno == EINTR) {
+    }
+    *error = why;
+    close_all();
+    return false;
+  }
   pid_ = pid;
   in_fd_ = in[1];
   out_fd_ = out[0];
@@ -348,6 +357,7 @@ std::string ExecImplementation::kill_and_reap(std::chrono::milliseconds grace) {
   }
   kill(-pid_, SIGKILL);  // its whole process group, children included
   kill(pid_, SIGKILL);   // and itself, should it have left the group
+  guard_.release();      // before the reap, while the group id is still ours
   int status = 0;
   while (waitpid(pid_, &status, 0) < 0 && errno == EINTR) {
   }
