@@ -2,8 +2,12 @@
 // clause catalog and write reports/<implementation>/<run>/.
 //
 // Exit codes (verdict.h): 0 conformant, 1 not conformant, 2 usage or
-// infrastructure error or an incomplete run.
+// infrastructure error or an incomplete run; 128 + the signal (130 SIGINT,
+// 143 SIGTERM) for a cancelled run, after its report (verdict
+// "incomplete", every finding so far) is written. A second SIGINT or
+// SIGTERM exits at once with that code, writing nothing more.
 #include <fmt/core.h>
+#include <signal.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -15,6 +19,7 @@
 #include <sstream>
 
 #include "baseline.h"
+#include "cancel.h"
 #include "clause.h"
 #include "exec_implementation.h"  // shell_quote
 #include "implementation.h"
@@ -103,6 +108,31 @@ bool reports_writable(const std::string& dir, std::string* why) {
   return true;
 }
 
+// SIGINT / SIGTERM (a cancelled CI job, Ctrl-C): the first asks the run to
+// stop (cancel.h) so that the report of what was found is written; a second
+// one exits at once. Only async-signal-safe calls here.
+extern "C" void on_cancel_signal(int sig) {
+  if (cancel_signal()) {
+    const char msg[] = "\nvgc certify: second signal: exiting at once, no report\n";
+    [[maybe_unused]] const ssize_t n = ::write(2, msg, sizeof msg - 1);
+    _exit(128 + sig);
+  }
+  request_cancel(sig);
+  const char msg[] = "\nvgc certify: cancelled: stopping the implementation and writing an incomplete report "
+                     "(a second signal exits at once)\n";
+  [[maybe_unused]] const ssize_t n = ::write(2, msg, sizeof msg - 1);
+}
+
+void install_cancel_handlers() {
+  prepare_cancel();
+  struct sigaction sa {};
+  sa.sa_handler = on_cancel_signal;
+  sigemptyset(&sa.sa_mask);
+  sa.sa_flags = 0;  // no SA_RESTART: a blocking wait returns EINTR and sees the request
+  sigaction(SIGINT, &sa, nullptr);
+  sigaction(SIGTERM, &sa, nullptr);
+}
+
 std::string rerun_command(const Options& o) {
   std::string c = vgc_environment_prefix() + program_command() + " certify --impl " + shell_quote(o.impl) + " --seed " +
                   std::to_string(o.seed) + " --cases " + std::to_string(o.cases) + " --budget " +
@@ -150,8 +180,9 @@ int run(const Options& o) {
     }
     for (const auto& [id, why] : baseline.reasons) ro.tolerated.insert(id);
   }
+  install_cancel_handlers();
   auto sut = open_impl_or_report("certify", o.impl, o.timeout);
-  if (!sut) return 2;
+  if (!sut) return cancel_signal() ? 128 + cancel_signal() : 2;
 
   ReportContext ctx;
   ctx.implementation_spec = o.impl;
@@ -232,6 +263,11 @@ int run(const Options& o) {
                verdict.profile_differences.size());
   fmt::print("report: {}/summary.md\n", ctx.run_dir);
   fmt::print("re-run: {}\n", ctx.command_line);
+  if (cancel_signal()) {
+    fmt::print("cancelled by {}: the verdict is incomplete; the findings above are those found before\n",
+               cancel_signal_name());
+    return 128 + cancel_signal();
+  }
   return verdict.exit_code;
 }
 

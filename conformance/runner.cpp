@@ -17,6 +17,7 @@
 #include "capability.h"
 #include "exercised_clauses.h"
 #include "command_text.h"
+#include "cancel.h"
 #include "property.h"
 
 namespace vgc {
@@ -72,8 +73,10 @@ struct CaseContext {
 
 thread_local CaseContext* g_context = nullptr;
 
+// The budget ran out, or the run was cancelled (cancel.h): either way no
+// further case runs and the case under way is not judged.
 bool past_deadline() {
-  if (Clock::now() < g_context->deadline) return false;
+  if (Clock::now() < g_context->deadline && !cancel_signal()) return false;
   g_context->deadline_hit = true;
   return true;
 }
@@ -138,6 +141,10 @@ struct Step final : rc::state::Command<Node, Implementation> {
     const Node before = c.model;
     Node after;
     StepResult r = check_step(before, command, sut, &after, /*follow_choices=*/true);
+    if (cancel_signal()) {  // the step may have been cut short: it proves nothing
+      c.deadline_hit = true;
+      return;
+    }
     c.model = after;
     for (auto& note : r.notes) {
       auto it = c.notes.find(note.clause);
@@ -339,6 +346,7 @@ PropertyOutcome run_property(const PropertySpec& spec, Implementation& sut, cons
       }
     } tally{c, counted};
     if (auto f = check_fresh(*c.sut)) {
+      if (past_deadline()) return;  // cut short by a cancel: no finding
       if (!fail_case(*f)) return;
     }
     if (!c.shrinking) count_exercised(fresh_node_clauses());
@@ -350,6 +358,7 @@ PropertyOutcome run_property(const PropertySpec& spec, Implementation& sut, cons
         c.trace.push_back(cmd);
         Node after;
         StepResult r = check_step(start, cmd, *c.sut, &after);
+        if (r.failure && past_deadline()) return;
         if (r.failure) {
           fail_case(*r.failure);
           return;
@@ -372,6 +381,7 @@ PropertyOutcome run_property(const PropertySpec& spec, Implementation& sut, cons
       CapabilityRequest request{capability->capability, variant, std::nullopt};
       if (capability->check_drawn) request.draw = *rc::gen::arbitrary<std::uint32_t>();
       const auto f = run_capability_check(*capability, c.model, *c.sut, request);
+      if (f && past_deadline()) return;  // cut short by a cancel: no finding
       if (f && f->status != FindingStatus::NotJudged) {
         fail_case(*f, request);
       } else if (f) {  // run, and counted, but neither judged nor exercising anything
@@ -446,7 +456,10 @@ PropertyOutcome run_property(const PropertySpec& spec, Implementation& sut, cons
   out.not_judged = ctx.not_judged;
   std::set<std::string> tolerated_hits;
   for (const auto& [clause, pf] : ctx.tolerated_seen) tolerated_hits.insert(clause);
-  if (ctx.deadline_hit) {
+  if (ctx.deadline_hit && cancel_signal()) {
+    stop_note = std::string("cancelled by ") + cancel_signal_name() + " after " +
+                std::to_string(ctx.cases_done) + " of " + std::to_string(ctx.target) + " cases";
+  } else if (ctx.deadline_hit) {
     stop_note = "the budget ran out after " + std::to_string(ctx.cases_done) + " of " + std::to_string(ctx.target) +
                 " cases; raise --budget";
   } else if (ctx.dominated) {
@@ -544,7 +557,7 @@ RunResult run_certification(Implementation& sut, const RunOptions& o) {
                            d.detail);
       }
     }
-    run.preflight = f;
+    run.preflight = cancel_signal() ? std::nullopt : f;  // a cancel cut it short: no finding
   }
 
   const auto& props = property_catalog();
@@ -709,6 +722,10 @@ RunResult run_certification(Implementation& sut, const RunOptions& o) {
   }
   for (const auto& po : run.properties)
     if (po.status == "stopped") run.complete = false;
+  if (cancel_signal()) {
+    run.cancelled_by = cancel_signal_name();
+    run.complete = false;
+  }
   run.seconds = std::chrono::duration<double>(Clock::now() - start).count();
   return run;
 }

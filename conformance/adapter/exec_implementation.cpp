@@ -15,6 +15,7 @@
 #include <mutex>
 #include <thread>
 
+#include "cancel.h"
 #include "capability_documents.h"
 #include "command_text.h"
 #include "number_text.h"
@@ -232,9 +233,13 @@ std::string ExecImplementation::stderr_tail() const {
 bool ExecImplementation::pump(bool want_write, Clock::time_point dl, bool* can_write) {
   if (can_write) *can_write = false;
   for (;;) {
-    pollfd fds[3];
+    // A cancelled run (cancel.h) waits for no answer: the wait ends as a
+    // timeout, which the runner discards.
+    if (cancel_signal()) return false;
+    pollfd fds[4];
     int n = 0;
     int out_i = -1, err_i = -1, in_i = -1;
+    if (cancel_fd() >= 0) fds[n++] = {cancel_fd(), POLLIN, 0};
     // Stop reading stdout once it holds more than any acceptable answer.
     if (out_fd_ >= 0 && out_buf_.size() <= options_.max_answer_bytes) {
       out_i = n;

@@ -17,6 +17,7 @@ std::string render_report_json(const RunResult& run, const Verdict& v, const Rep
   j["implementation_name"] = run.implementation;
   j["verdict"] = v.name;
   j["exit_code"] = v.exit_code;
+  if (!run.cancelled_by.empty()) j["cancelled_by"] = run.cancelled_by;  // cancelled: what was found so far
   j["started"] = ctx.started;
   j["seconds"] = run.seconds;
   j["seed"] = run.options.seed;

@@ -1,10 +1,11 @@
 #!/usr/bin/env python3
-"""history_proxy.py VGC MODE N — an exec implementation that misbehaves
+"""history_proxy.py VGC MODE N [SERVE ARGS...] — an exec implementation that misbehaves
 after N commands since it started, whatever they were: a stand-in for a
 node with a leak or a counter (issue 19). It forwards every line to a child
 `VGC serve` (the reference) and relays the answers, counting the command
 lines it forwarded (requests starting with '?' are not counted). Once N
-commands have gone through, the next command gets, by MODE:
+commands have gone through, the next command gets, by MODE (SERVE ARGS,
+e.g. --impl plugin:PATH, go to `VGC serve`):
 
   crash    the proxy exits 1 (its child is left to the suite to stop)
   hang     no answer, ever (the proxy sleeps; the child stays alive)
@@ -20,7 +21,7 @@ import sys
 import time
 
 vgc, mode, limit = sys.argv[1], sys.argv[2], int(sys.argv[3])
-child = subprocess.Popen([vgc, "serve"], stdin=subprocess.PIPE, stdout=subprocess.PIPE, text=True, bufsize=1)
+child = subprocess.Popen([vgc, "serve"] + sys.argv[4:], stdin=subprocess.PIPE, stdout=subprocess.PIPE, text=True, bufsize=1)
 if os.environ.get("HISTORY_PROXY_PIDS"):
     with open(os.environ["HISTORY_PROXY_PIDS"], "a") as f:
         f.write(f"proxy {os.getpid()} child {child.pid}\n")
