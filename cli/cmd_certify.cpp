@@ -29,6 +29,7 @@
 #include "report.h"
 #include "runner.h"
 #include "subcommand.h"
+#include "terminal_text.h"
 #include "verdict.h"
 
 namespace vgc::cli {
@@ -69,7 +70,7 @@ bool parse_shard(const std::string& s, int* index, int* count) {
 }
 
 int usage(const std::string& message) {
-  fmt::print(stderr, "vgc certify: {}\n", message);
+  say(stderr, "vgc certify: {}\n", message);
   return 2;
 }
 
@@ -154,7 +155,7 @@ int run(const Options& o) {
   ro.budget_seconds = o.budget;
   ro.clause_glob = o.clauses;
   if (!parse_shard(o.shard, &ro.shard_index, &ro.shard_count)) {
-    fmt::print(stderr, "vgc certify: --shard takes I/N with 1 <= I <= N, got '{}': for example --shard 2/3 runs "
+    say(stderr, "vgc certify: --shard takes I/N with 1 <= I <= N, got '{}': for example --shard 2/3 runs "
                        "the second of three shards\n", o.shard);
     return 2;
   }
@@ -175,7 +176,7 @@ int run(const Options& o) {
   if (!o.baseline.empty()) {
     std::string error;
     if (!load_baseline(o.baseline, &baseline, &error)) {
-      fmt::print(stderr, "vgc certify: {}\n", error);
+      say(stderr, "vgc certify: {}\n", error);
       return 2;
     }
     for (const auto& [id, why] : baseline.reasons) ro.tolerated.insert(id);
@@ -192,7 +193,7 @@ int run(const Options& o) {
     ctx.baseline = &baseline;
     ctx.baseline_path = o.baseline;
   }
-  fmt::print(stderr, "vgc certify: {} (seed {}, {} cases per property, budget {:g} s, shard {})\n", o.impl, o.seed,
+  say(stderr, "vgc certify: {} (seed {}, {} cases per property, budget {:g} s, shard {})\n", o.impl, o.seed,
              o.cases, o.budget, o.shard);
 
   ProgressLine line(!o.quiet);
@@ -211,11 +212,11 @@ int run(const Options& o) {
     line.finish();
     std::string found;
     for (const auto& f : p.findings) found += (found.empty() ? "" : ", ") + f.finding.clause;
-    fmt::print(stderr, "[{}/{}] {:<20} {:<8} {}/{} cases ({} judged, {} set aside{}){}  {:.1f} s\n",
+    say(stderr, "[{}/{}] {:<20} {:<8} {}/{} cases ({} judged, {} set aside{}){}  {:.1f} s\n",
                at.property_index + 1, at.property_count, p.id, p.status, p.cases, p.cases_target, p.judged,
                p.set_aside, p.not_judged ? fmt::format(", {} not judged", p.not_judged) : "",
                found.empty() ? "" : "; found " + found, at.elapsed_seconds);
-    if (!p.note.empty() && p.status != "pass") fmt::print(stderr, "      {}\n", p.note);
+    if (!p.note.empty() && p.status != "pass") say(stderr, "      {}\n", p.note);
   };
   register_oracle_checks();  // the oracles judge the optional capabilities
   line.update("asking the implementation for a fresh node", true);
@@ -224,7 +225,7 @@ int run(const Options& o) {
   const Verdict verdict = judge(result, ctx.baseline, o.strict);
   std::string error;
   if (!claim_run_dir(o.reports, result, &ctx, &error) || !write_report(o.reports, result, verdict, ctx, &error)) {
-    fmt::print(stderr, "vgc certify: {}: no report was written (verdict {}); free space or give --reports a "
+    say(stderr, "vgc certify: {}: no report was written (verdict {}); free space or give --reports a "
                        "directory you can write, then run again: {}\n", error, verdict.name, ctx.command_line);
     return 2;
   }
@@ -234,10 +235,10 @@ int run(const Options& o) {
   std::string tally;
   for (const char* st : {"fail", "crash", "timeout", "unchecked", "not-applicable", "not-claimed", "skipped"})
     if (counts[st]) tally += fmt::format(", {} {}", counts[st], st);
-  fmt::print("{}: {} ({} of {} clauses pass{}; {:.1f} s)\n", o.impl, verdict.name, counts["pass"],
+  say("{}: {} ({} of {} clauses pass{}; {:.1f} s)\n", o.impl, verdict.name, counts["pass"],
              result.clauses.size(), tally, result.seconds);
   if (result.preflight)
-    fmt::print("  the implementation could not show a fresh node: {}: {}\n", result.preflight->clause,
+    say("  the implementation could not show a fresh node: {}: {}\n", result.preflight->clause,
                result.preflight->message);
   for (const auto& co : result.clauses) {
     if (!co.finding) continue;
@@ -247,24 +248,24 @@ int run(const Options& o) {
                       : known                                  ? "known"
                       : !finding_gates(co, o.strict)           ? "profile"
                                                                : co.status.c_str();
-    fmt::print("  {:<8} {:<24} {}\n", tag, co.clause->id, co.finding->message);
-    fmt::print("           replay: {}\n",
+    say("  {:<8} {:<24} {}\n", tag, co.clause->id, co.finding->message);
+    say("           replay: {}\n",
                replay_command((std::filesystem::path(ctx.run_dir) / counterexample_path(co)).string(), o.impl));
   }
   for (const auto& id : verdict.stale_baseline)
-    fmt::print("  stale    {:<24} in the baseline but no case diverged on it: remove it\n", id);
+    say("  stale    {:<24} in the baseline but no case diverged on it: remove it\n", id);
   for (const auto& p : result.properties)
-    if (p.status == "stopped") fmt::print("  stopped  {}: {}\n", p.id, p.note);
+    if (p.status == "stopped") say("  stopped  {}: {}\n", p.id, p.note);
   for (const auto& co : result.clauses)
-    if (co.status == "unchecked") fmt::print("  unchecked {:<23} {}\n", co.clause->id, co.note);
+    if (co.status == "unchecked") say("  unchecked {:<23} {}\n", co.clause->id, co.note);
   if (!verdict.profile_differences.empty() && !o.strict)
-    fmt::print("  ({} profile difference(s) from the suite's reading of silent points: reported, not gating; "
+    say("  ({} profile difference(s) from the suite's reading of silent points: reported, not gating; "
                "--strict gates on them)\n",
                verdict.profile_differences.size());
-  fmt::print("report: {}/summary.md\n", ctx.run_dir);
-  fmt::print("re-run: {}\n", ctx.command_line);
+  say("report: {}/summary.md\n", ctx.run_dir);
+  say("re-run: {}\n", ctx.command_line);
   if (cancel_signal()) {
-    fmt::print("cancelled by {}: the verdict is incomplete; the findings above are those found before\n",
+    say("cancelled by {}: the verdict is incomplete; the findings above are those found before\n",
                cancel_signal_name());
     return 128 + cancel_signal();
   }

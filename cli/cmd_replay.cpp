@@ -26,6 +26,7 @@
 #include "read_file.h"
 #include "runner.h"
 #include "subcommand.h"
+#include "terminal_text.h"
 
 namespace vgc::cli {
 namespace {
@@ -39,7 +40,7 @@ struct Options {
 int run(const Options& o) {
   std::string text;
   if (!read_file(o.file, &text)) {
-    fmt::print(stderr,
+    say(stderr,
                "vgc replay: cannot read {} ({}): give the path of a command file (docs/commands.md), e.g. "
                "reports/latest/counterexamples/<CLAUSE>.vgc\n",
                o.file, read_failure(o.file));
@@ -50,34 +51,34 @@ int run(const Options& o) {
   std::size_t directive_line = 0;
   TextError error;
   if (!parse_program(text, &program, &error, &lines, &directive_line)) {
-    fmt::print(stderr, "{}:{}:{}: error: {}\n", o.file, error.line, error.column, error.message);
+    say(stderr, "{}:{}:{}: error: {}\n", o.file, error.line, error.column, error.message);
     return 2;
   }
   auto sut = open_impl_or_report("replay", o.impl, o.timeout);
   if (!sut) return 2;
   register_oracle_checks();  // as certify: the oracles judge the capability checks
   const ReplayResult r = replay_program(program, *sut);
-  for (const auto& n : r.notes) fmt::print("note     {:<24} {}\n", n.clause, n.message);
+  for (const auto& n : r.notes) say("note     {:<24} {}\n", n.clause, n.message);
   if (!r.failure) {
-    fmt::print("{}: agrees with the reference on all {} commands of {}\n", o.impl, program.commands.size(), o.file);
+    say("{}: agrees with the reference on all {} commands of {}\n", o.impl, program.commands.size(), o.file);
     if (!program.request) return 0;
     if (!r.not_judged.empty()) {
-      fmt::print("{}:{}: cannot repeat the capability check: {}\n", o.file, directive_line, r.not_judged);
+      say("{}:{}: cannot repeat the capability check: {}\n", o.file, directive_line, r.not_judged);
       return 2;
     }
-    fmt::print("{}: passes the check of capability \"{}\" (variant {}) of {}\n", o.impl, program.request->capability,
+    say("{}: passes the check of capability \"{}\" (variant {}) of {}\n", o.impl, program.request->capability,
                program.request->variant, capability_clauses(program.request->capability));
     return 0;
   }
   const Clause* clause = find_clause(r.failure->clause);
   const auto at = static_cast<std::size_t>(r.failed_at);
   if (r.failed_at >= 0 && at < program.commands.size())
-    fmt::print("{}:{}: {}\n", o.file, lines[at], print_command(program.commands[at]));
+    say("{}:{}: {}\n", o.file, lines[at], print_command(program.commands[at]));
   else if (program.request && at == program.commands.size())
-    fmt::print("{}:{}: {}", o.file, directive_line, print_capability_directive(*program.request));
-  fmt::print("{} {} ({}): {}\n", finding_status_name(r.failure->status), r.failure->clause,
+    say("{}:{}: {}", o.file, directive_line, print_capability_directive(*program.request));
+  say("{} {} ({}): {}\n", finding_status_name(r.failure->status), r.failure->clause,
              clause ? clause_level_name(clause->level) : "?", r.failure->message);
-  if (clause) fmt::print("spec ({}): {}\n", clause->source, clause->text);
+  if (clause) say("spec ({}): {}\n", clause->source, clause->text);
   return 1;
 }
 

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "command_text.h"
+#include "display_text.h"
 #include "exec_implementation.h"  // shell_quote
 #include "finding_picture.h"
 #include "obj_writer.h"
@@ -147,7 +148,8 @@ bool write_report(const std::string& reports_root, const RunResult& run, const V
   std::string e;
   for (const ClauseOutcome& co : run.clauses) {
     if (!co.finding) continue;
-    if (!write_file(tmp_dir / counterexample_path(co), render_counterexample(co, ctx), &e)) return fail(e);
+    if (!write_file(tmp_dir / counterexample_path(co), escape_unprintable(render_counterexample(co, ctx)), &e))
+      return fail(e);
     const FindingPicture picture = picture_of_finding(co);
     if (picture.has_mesh &&
         !write_file(tmp_dir / counterexample_obj_path(co),
@@ -157,9 +159,10 @@ bool write_report(const std::string& reports_root, const RunResult& run, const V
       return fail(e);
   }
   if (!write_file(tmp_dir / "report.json", render_report_json(run, v, ctx), &e)) return fail(e);
-  if (!write_file(tmp_dir / "junit.xml", render_junit(run, v, ctx), &e)) return fail(e);
-  if (!write_file(tmp_dir / "summary.md", render_summary(run, v, ctx), &e)) return fail(e);
-  if (!write_file(tmp_dir / "report.html", render_report_html(run, v, ctx), &e)) return fail(e);
+  // What a person or a CI reads shows foreign bytes escaped (display_text.h).
+  if (!write_file(tmp_dir / "junit.xml", escape_unprintable(render_junit(run, v, ctx)), &e)) return fail(e);
+  if (!write_file(tmp_dir / "summary.md", escape_unprintable(render_summary(run, v, ctx)), &e)) return fail(e);
+  if (!write_file(tmp_dir / "report.html", escape_unprintable(render_report_html(run, v, ctx)), &e)) return fail(e);
   fs::rename(tmp_dir, final_dir, ec);  // replaces an empty directory, never a full one
   if (ec) return fail("cannot move the report into " + final_dir.string() + ": " + ec.message());
 

@@ -99,7 +99,8 @@ std::string render_report_json(const RunResult& run, const Verdict& v, const Rep
   for (const auto& [kind, k] : run.command_kinds)
     kinds[kind] = {{"sent", k.sent}, {"applied", k.applied}, {"rejected", k.rejected}};
   j["command_kinds"] = kinds;
-  return j.dump(2) + "\n";
+  // Invalid UTF-8 from an implementation becomes U+FFFD instead of an exception.
+  return j.dump(2, ' ', false, json::error_handler_t::replace) + "\n";
 }
 
 }  // namespace vgc

@@ -6,6 +6,7 @@
 #include <map>
 #include <sstream>
 
+#include "html_page.h"
 #include "report.h"
 
 namespace vgc {
@@ -84,6 +85,7 @@ std::string render_junit(const RunResult& run, const Verdict& v, const ReportCon
   suites.append_attribute("failures") = failures;
   suites.append_attribute("errors") = errors;
   suites.append_attribute("skipped") = skipped;
+  escape_unprintable_tree(doc);  // XML 1.0 has no way to write a control byte
   std::ostringstream out;
   doc.save(out, "  ");
   return out.str();
