@@ -7,6 +7,7 @@
 // "incomplete", every finding so far) is written. A second SIGINT or
 // SIGTERM exits at once with that code, writing nothing more.
 #include <fmt/core.h>
+#include <fcntl.h>
 #include <signal.h>
 #include <unistd.h>
 
@@ -17,6 +18,7 @@
 #include <map>
 #include <memory>
 #include <sstream>
+#include <vector>
 
 #include "baseline.h"
 #include "cancel.h"
@@ -90,23 +92,45 @@ std::string unmatched_pattern(const std::string& glob) {
   return any ? "" : glob;
 }
 
-// Whether runs can be written under `dir` (it or its nearest existing
-// parent is a directory we may write into), checked before a run that may
-// take long; nothing is created.
+// Whether runs can really be written under `dir`, checked before a run that
+// may take long: a file is created there and removed (access() says yes to
+// root under /proc, and on a read-only mount). Directories it had to create
+// for that are removed again (the run creates them when it writes), so a
+// usage error found later leaves nothing behind.
 bool reports_writable(const std::string& dir, std::string* why) {
   namespace fs = std::filesystem;
   std::error_code ec;
-  fs::path p = fs::absolute(dir.empty() ? "." : dir, ec);
-  while (!fs::exists(p, ec) && p.has_parent_path() && p != p.parent_path()) p = p.parent_path();
-  if (!fs::is_directory(p, ec)) {
-    *why = p.string() + " is not a directory";
-    return false;
+  const fs::path p = fs::absolute(dir.empty() ? fs::path(".") : fs::path(dir), ec);
+  std::vector<fs::path> created;  // deepest last
+  for (fs::path q = p; !q.empty() && !fs::exists(q, ec) && q != q.parent_path(); q = q.parent_path())
+    created.insert(created.begin(), q);
+  auto undo = [&] {
+    std::error_code ignored;  // only empty directories go: another run may be using one already
+    for (auto it = created.rbegin(); it != created.rend(); ++it) fs::remove(*it, ignored);
+  };
+  for (int attempt = 0;; ++attempt) {
+    fs::create_directories(p, ec);
+    if (ec || !fs::is_directory(p)) {
+      *why = ec ? ec.message() : "not a directory";
+      undo();
+      return false;
+    }
+    const fs::path probe = p / (".vgc-write-probe." + std::to_string(::getpid()));
+    const int fd = ::open(probe.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0600);
+    if (fd < 0 && errno == ENOENT && attempt < 3) continue;  // another run's undo removed it meanwhile
+    if (fd < 0) {
+      *why = std::string("cannot create a file there: ") + std::strerror(errno);
+      undo();
+      return false;
+    }
+    const bool wrote = ::write(fd, "x", 1) == 1;
+    const int saved = errno;
+    ::close(fd);
+    fs::remove(probe, ec);
+    undo();
+    if (!wrote) *why = std::string("cannot write a file there: ") + std::strerror(saved);
+    return wrote;
   }
-  if (::access(p.c_str(), W_OK | X_OK) != 0) {
-    *why = p.string() + ": " + std::strerror(errno);
-    return false;
-  }
-  return true;
 }
 
 // SIGINT / SIGTERM (a cancelled CI job, Ctrl-C): the first asks the run to
