@@ -17,6 +17,7 @@
 #include "capability.h"
 #include "exercised_clauses.h"
 #include "command_text.h"
+#include "confirm_finding.h"
 #include "cancel.h"
 #include "property.h"
 
@@ -62,6 +63,19 @@ struct CaseContext {
   bool shrinking = false;           // this round found its failure: cases now are shrink attempts
   int cases_done = 0, judged = 0, set_aside = 0, not_judged = 0, target = 0;
   bool dominated = false;           // set-aside cases dominate: stop
+  // What the instance had been sent since it started when the round's first
+  // call failure happened (confirm_finding.h), the failing case last.
+  HistoryRecorder* recorder = nullptr;
+  std::vector<std::vector<Command>> failure_history;
+  // Kinds of call failure ("crash", "timeout", "protocol-error") the run
+  // already found to depend on the implementation's history: another one
+  // whose case does not fail a fresh instance is set aside, not shrunk.
+  std::set<std::string> history_kinds;
+  // The round's first call failure: whether its case failed a fresh
+  // instance the same way, and that case (the fallback when shrinking, on
+  // an instance with a history of its own, ends on a program that does not).
+  bool failure_reproduced = false;
+  Program failure_program;
 
   // Tallies (outside shrinking): the property's exercised counts, the run's
   // command kinds and unreported verdicts.
@@ -109,7 +123,21 @@ bool fail_case(const Finding& f, std::optional<CapabilityRequest> request = std:
   }
   auto& sig = g_context->signature;
   if (sig && (sig->first != f.clause || sig->second != f.status)) return false;
+  if (!g_context->shrinking && is_call_failure(f) && g_context->recorder &&
+      g_context->history_kinds.count(call_failure_kind(f)) &&
+      !fails_fresh(*g_context->recorder, f, Program{g_context->trace, std::nullopt})) {
+    g_context->set_aside_case = true;  // the history-dependent failure again: already reported
+    return false;
+  }
   sig = std::make_pair(f.clause, f.status);
+  if (!g_context->shrinking && is_call_failure(f) && g_context->recorder) {
+    // Confirmed before shrinking: a failure that a fresh instance does not
+    // repeat is not shrunk (every attempt would only add to the history).
+    g_context->failure_history = g_context->recorder->history();
+    g_context->failure_program = Program{g_context->trace, std::nullopt};
+    g_context->failure_reproduced = fails_fresh(*g_context->recorder, f, g_context->failure_program);
+    if (!g_context->failure_reproduced) g_context->stop = true;
+  }
   g_context->shrinking = true;
   g_context->last_failure = f;
   g_context->last_program.commands = g_context->trace;
@@ -296,6 +324,28 @@ std::string join(const std::set<std::string>& s) {
   return out;
 }
 
+// A crash, timeout or protocol error stands only if its program does it
+// again on a fresh instance; otherwise it becomes a finding that depends on
+// the implementation's history (confirm_finding.h). Returns false when the
+// run already has that history-dependent finding (same clause and status):
+// this one is then not reported again.
+bool confirm_finding(PropertyFinding* pf, CaseContext& ctx, Clock::time_point deadline, const PropertyOutcome& out,
+                     const RunResult& run) {
+  const auto limit = std::min(deadline, Clock::now() + std::chrono::seconds(60));
+  if (confirm_call_failure(*ctx.recorder, pf, ctx.failure_history, limit)) return true;
+  ctx.history_kinds.insert(call_failure_kind(pf->finding));
+  auto same = [pf](const PropertyFinding& f) {
+    return f.finding.clause == pf->finding.clause && f.finding.status == pf->finding.status &&
+           depends_on_history(f.finding);
+  };
+  for (const auto& f : out.findings)
+    if (same(f)) return false;
+  for (const auto& p : run.properties)
+    for (const auto& f : p.findings)
+      if (same(f)) return false;
+  return true;
+}
+
 PropertyOutcome run_property(const PropertySpec& spec, Implementation& sut, const RunOptions& o,
                              Clock::time_point deadline, RunProgress* progress, Clock::time_point run_start,
                              RunResult* run) {
@@ -306,6 +356,10 @@ PropertyOutcome run_property(const PropertySpec& spec, Implementation& sut, cons
 
   CaseContext ctx;
   ctx.sut = &sut;
+  ctx.recorder = dynamic_cast<HistoryRecorder*>(&sut);
+  for (const auto& p : run->properties)  // history-dependent failures earlier properties found
+    for (const auto& f : p.findings)
+      if (depends_on_history(f.finding)) ctx.history_kinds.insert(call_failure_kind(f.finding));
   ctx.deadline = deadline;
   ctx.tolerated = o.tolerated;
   ctx.baseline = o.tolerated;
@@ -399,6 +453,7 @@ PropertyOutcome run_property(const PropertySpec& spec, Implementation& sut, cons
     ctx.shrinking = false;
     ctx.stop = false;
     ctx.signature.reset();
+    ctx.failure_reproduced = false;
     ctx.last_failure.reset();
     ctx.last_program = Program{};
     progress->shrinking = false;
@@ -428,6 +483,13 @@ PropertyOutcome run_property(const PropertySpec& spec, Implementation& sut, cons
         pf.finding = Finding{"STABLE-1", FindingStatus::Fail, failure.description};
       }
       ++ctx.cases_done;  // the failing case
+      if (is_call_failure(pf.finding) && ctx.recorder) {
+        if (!ctx.failure_reproduced) {
+          if (!confirm_finding(&pf, ctx, deadline, out, *run)) continue;  // reported once already
+        } else if (!fails_fresh(*ctx.recorder, pf.finding, pf.program)) {
+          pf.program = ctx.failure_program;  // shrinking was misled by the instance's history
+        }
+      }
       ctx.tolerated.insert(pf.finding.clause);
       out.findings.push_back(std::move(pf));
       progress->failures = static_cast<int>(out.findings.size());
@@ -529,8 +591,12 @@ std::uint64_t property_seed(std::uint64_t run_seed, std::string_view property_id
   return z ^ (z >> 31);
 }
 
-RunResult run_certification(Implementation& sut, const RunOptions& o) {
+RunResult run_certification(Implementation& implementation, const RunOptions& o) {
   load_rapidcheck_configuration_quietly();
+  // Every call goes through the recorder: a call failure's history since the
+  // instance started is then at hand to confirm it (confirm_finding.h).
+  HistoryRecorder recorder(implementation);
+  Implementation& sut = recorder;
   RunResult run;
   run.implementation = sut.name();
   run.options = o;

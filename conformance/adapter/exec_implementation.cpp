@@ -181,6 +181,7 @@ bool ExecImplementation::spawn(std::string* error) {
     return false;
   }
   pid_ = pid;
+  ++starts_;
   in_fd_ = in[1];
   out_fd_ = out[0];
   err_fd_ = err[0];
@@ -461,6 +462,13 @@ Answer ExecImplementation::start() {
   a.status = failed_;
   a.detail = failed_detail_;
   return a;
+}
+
+Answer ExecImplementation::restart() {
+  if (pid_ > 0) kill_and_reap(std::chrono::milliseconds(0));
+  failed_ = CallStatus::Crash;
+  failed_detail_ = "restarted";
+  return reset();  // starts it (a failed or stopped program is started by reset)
 }
 
 Answer ExecImplementation::reset() {

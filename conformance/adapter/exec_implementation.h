@@ -45,6 +45,9 @@ class ExecImplementation final : public Implementation {
   std::string name() const override { return display_name_; }
   std::string identity() const override { return hello_name_.empty() ? display_name_ : hello_name_; }
   Answer reset() override;
+  // Kills the program (whatever state it is in) and starts it again.
+  Answer restart() override;
+  std::uint64_t instance() const override { return starts_; }
   Answer apply(const Command& c) override;
   Document snapshot() override;
   Document derived() override;
@@ -91,6 +94,7 @@ class ExecImplementation final : public Implementation {
   std::string display_name_;
   std::string hello_name_;
   pid_t pid_ = -1;
+  std::uint64_t starts_ = 0;  // programs started so far
   ProcessGroupGuard guard_;  // kills the program's group if vgc ends first, however
   int in_fd_ = -1;   // the program's stdin
   int out_fd_ = -1;  // its stdout
