@@ -1,0 +1,32 @@
+// readme_facts_test.cpp — the README's figures that the code can count stay
+// true: "N faults across ..." (README "Does it have teeth?") is the number
+// of seeded faults in tests/conformance/faults/ (faults::fault_catalog()),
+// computed here, so adding a fault without updating the README fails.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <regex>
+#include <sstream>
+#include <string>
+
+#include "faulty_node.h"
+
+namespace vgc {
+namespace {
+
+TEST(ReadmeFacts, TheFaultCountIsTheFaultCatalogs) {
+  std::ifstream in(std::string(VGC_SOURCE_DIR) + "/README.md");
+  ASSERT_TRUE(in) << "cannot read README.md";
+  std::stringstream ss;
+  ss << in.rdbuf();
+  const std::string text = ss.str();
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(text, m, std::regex(R"((\d+) faults across)")))
+      << "README.md no longer says \"N faults across ...\": update this test with it";
+  EXPECT_EQ(std::stoul(m[1].str()), faults::fault_catalog().size())
+      << "README.md says " << m[1].str() << " faults; tests/conformance/faults/ has "
+      << faults::fault_catalog().size() << ": update the README";
+}
+
+}  // namespace
+}  // namespace vgc
