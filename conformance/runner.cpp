@@ -486,7 +486,8 @@ PropertyOutcome run_property(const PropertySpec& spec, Implementation& sut, cons
       if (is_call_failure(pf.finding) && ctx.recorder) {
         if (!ctx.failure_reproduced) {
           if (!confirm_finding(&pf, ctx, deadline, out, *run)) continue;  // reported once already
-        } else if (!fails_fresh(*ctx.recorder, pf.finding, pf.program)) {
+        } else if (pf.program.commands.size() < ctx.failure_program.commands.size() &&
+                   !fails_fresh(*ctx.recorder, pf.finding, pf.program)) {
           pf.program = ctx.failure_program;  // shrinking was misled by the instance's history
         }
       }
