@@ -23,6 +23,11 @@
 #                          relative paths in exec: commands and plugin: paths work
 #   INPUT_ARTIFACT_NAME    the artifact's name (default vgc-report, or
 #                          vgc-report-shard-I-of-N for a shard)
+#   INPUT_MERGE            a directory holding the run directories of every
+#                          shard of one run (the shards' artifacts, downloaded):
+#                          instead of certifying, `vgc merge` them into one run
+#                          with the unsharded verdict (the matrix's final job);
+#                          impl is then ignored
 # and the runner's: GITHUB_WORKSPACE, GITHUB_STEP_SUMMARY, GITHUB_OUTPUT,
 # RUNNER_TEMP, GITHUB_ACTION_PATH (the action's checkout).
 #
@@ -53,7 +58,8 @@ fail() {  # fail MESSAGE: a problem with the action's own inputs or environment
 for v in GITHUB_WORKSPACE GITHUB_STEP_SUMMARY GITHUB_OUTPUT RUNNER_TEMP; do
   [ -n "${!v:-}" ] || fail "$v is not set: run this script as a step of a GitHub Actions job (action.yml), or set it to a file or directory to run it by hand"
 done
-[ -n "${INPUT_IMPL:-}" ] || fail "the input 'impl' is required: reference, exec:'./my-host --vgc' or plugin:path/to/libmy_node.so (docs/adapters.md)"
+merge_from=${INPUT_MERGE:-}
+[ -n "$merge_from" ] || [ -n "${INPUT_IMPL:-}" ] || fail "the input 'impl' is required: reference, exec:'./my-host --vgc' or plugin:path/to/libmy_node.so (docs/adapters.md)"
 
 action_dir=${GITHUB_ACTION_PATH:-$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)}
 workdir=${INPUT_WORKING_DIRECTORY:-$GITHUB_WORKSPACE}
@@ -76,7 +82,7 @@ fi
 [ -x "$vgc" ] || fail "the vgc program '$vgc' (input 'vgc') is not an executable file: leave the input empty to build vgc, or give the path of an installed one"
 
 # 2. The options.
-args=(certify --impl "$INPUT_IMPL")
+args=(certify --impl "${INPUT_IMPL:-}")
 if [ -n "${INPUT_BASELINE:-}" ]; then
   baseline=$INPUT_BASELINE
   case "$baseline" in /*) ;; *) baseline=$GITHUB_WORKSPACE/$baseline ;; esac
@@ -98,6 +104,14 @@ reports=${INPUT_REPORTS:-$RUNNER_TEMP/vgc-reports}
 case "$reports" in /*) ;; *) reports=$GITHUB_WORKSPACE/$reports ;; esac
 args+=(--reports "$reports")
 
+if [ -n "$merge_from" ]; then  # the final job of a sharded run: merge, do not certify
+  case "$merge_from" in /*) ;; *) merge_from=$GITHUB_WORKSPACE/$merge_from ;; esac
+  mapfile -t shard_dirs < <(find "$merge_from" -name report.json -printf '%h\n' | sort)
+  [ ${#shard_dirs[@]} -gt 0 ] || fail "the input 'merge' is '$merge_from', which holds no run directory (no report.json): download the shards' artifacts into it first"
+  args=(merge "${shard_dirs[@]}" --reports "$reports")
+  shard=1/1
+fi
+
 artifact=${INPUT_ARTIFACT_NAME:-}
 if [ -z "$artifact" ]; then
   artifact=vgc-report
@@ -108,7 +122,7 @@ fi
 # stdout is kept to find the run directory vgc names ("report: DIR/summary.md").
 out=$RUNNER_TEMP/vgc-certify-stdout.$$
 err=$RUNNER_TEMP/vgc-certify-stderr.$$
-echo "vgc certify in $workdir:"
+echo "vgc ${args[0]} in $workdir:"
 printf ' %q' "$vgc" "${args[@]}"
 echo
 (cd "$workdir" && "$vgc" "${args[@]}" 2>&1 >"$out") | tee "$err"

@@ -15,6 +15,7 @@
 #include "read_file.h"
 #include "snapshot.h"
 #include "subcommand.h"
+#include "terminal_text.h"
 
 namespace vgc::cli {
 namespace {
@@ -30,7 +31,7 @@ int run_apply(const ApplyOptions& o) {
   if (o.file == "-") {
     read_stdin(&text);
   } else if (!read_file(o.file, &text)) {
-    fmt::print(stderr,
+    say(stderr,
                "vgc apply: cannot read {} ({}): give the path of a command file (docs/commands.md), or - for "
                "standard input\n",
                o.file, read_failure(o.file));
@@ -40,7 +41,7 @@ int run_apply(const ApplyOptions& o) {
   std::vector<std::size_t> lines;
   TextError error;
   if (!parse_commands(text, &commands, &error, &lines)) {
-    fmt::print(stderr, "{}:{}:{}: error: {}\n", o.file, error.line, error.column, error.message);
+    say(stderr, "{}:{}:{}: error: {}\n", o.file, error.line, error.column, error.message);
     return 2;
   }
   Node node;
@@ -48,16 +49,16 @@ int run_apply(const ApplyOptions& o) {
   for (std::size_t i = 0; i < commands.size(); ++i) {
     const Reason r = node.apply(commands[i]);
     if (r == Reason::Ok) {
-      fmt::print("{:>5}: ok                   {}\n", lines[i], print_command(commands[i]));
+      say("{:>5}: ok                   {}\n", lines[i], print_command(commands[i]));
     } else {
       ++rejected;
-      fmt::print("{:>5}: rejected {:<19} {}\n", lines[i], reason_name(r), print_command(commands[i]));
+      say("{:>5}: rejected {:<19} {}\n", lines[i], reason_name(r), print_command(commands[i]));
     }
   }
-  fmt::print("# {} commands, {} applied, {} rejected\n", commands.size(), commands.size() - rejected,
+  say("# {} commands, {} applied, {} rejected\n", commands.size(), commands.size() - rejected,
              rejected);
-  fmt::print("{}", print_snapshot(node));
-  if (o.derived) fmt::print("{}", print_derived(node));
+  say("{}", print_snapshot(node));
+  if (o.derived) say("{}", print_derived(node));
   return o.strict && rejected > 0 ? 1 : 0;
 }
 

@@ -2,8 +2,13 @@
 // clause catalog and write reports/<implementation>/<run>/.
 //
 // Exit codes (verdict.h): 0 conformant, 1 not conformant, 2 usage or
-// infrastructure error or an incomplete run.
+// infrastructure error or an incomplete run; 128 + the signal (130 SIGINT,
+// 143 SIGTERM) for a cancelled run, after its report (verdict
+// "incomplete", every finding so far) is written. A second SIGINT or
+// SIGTERM exits at once with that code, writing nothing more.
 #include <fmt/core.h>
+#include <fcntl.h>
+#include <signal.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -13,8 +18,10 @@
 #include <map>
 #include <memory>
 #include <sstream>
+#include <vector>
 
 #include "baseline.h"
+#include "cancel.h"
 #include "clause.h"
 #include "exec_implementation.h"  // shell_quote
 #include "implementation.h"
@@ -24,6 +31,7 @@
 #include "report.h"
 #include "runner.h"
 #include "subcommand.h"
+#include "terminal_text.h"
 #include "verdict.h"
 
 namespace vgc::cli {
@@ -65,7 +73,7 @@ bool parse_shard(const std::string& s, int* index, int* count) {
 }
 
 int usage(const std::string& message) {
-  fmt::print(stderr, "vgc certify: {}\n", message);
+  say(stderr, "vgc certify: {}\n", message);
   return 2;
 }
 
@@ -85,23 +93,70 @@ std::string unmatched_pattern(const std::string& glob) {
   return any ? "" : glob;
 }
 
-// Whether runs can be written under `dir` (it or its nearest existing
-// parent is a directory we may write into), checked before a run that may
-// take long; nothing is created.
+// Whether runs can really be written under `dir`, checked before a run that
+// may take long: a file is created there and removed (access() says yes to
+// root under /proc, and on a read-only mount). Directories it had to create
+// for that are removed again (the run creates them when it writes), so a
+// usage error found later leaves nothing behind.
 bool reports_writable(const std::string& dir, std::string* why) {
   namespace fs = std::filesystem;
   std::error_code ec;
-  fs::path p = fs::absolute(dir.empty() ? "." : dir, ec);
-  while (!fs::exists(p, ec) && p.has_parent_path() && p != p.parent_path()) p = p.parent_path();
-  if (!fs::is_directory(p, ec)) {
-    *why = p.string() + " is not a directory";
-    return false;
+  const fs::path p = fs::absolute(dir.empty() ? fs::path(".") : fs::path(dir), ec);
+  std::vector<fs::path> created;  // deepest last
+  for (fs::path q = p; !q.empty() && !fs::exists(q, ec) && q != q.parent_path(); q = q.parent_path())
+    created.insert(created.begin(), q);
+  auto undo = [&] {
+    std::error_code ignored;  // only empty directories go: another run may be using one already
+    for (auto it = created.rbegin(); it != created.rend(); ++it) fs::remove(*it, ignored);
+  };
+  for (int attempt = 0;; ++attempt) {
+    fs::create_directories(p, ec);
+    if (ec || !fs::is_directory(p)) {
+      *why = ec ? ec.message() : "not a directory";
+      undo();
+      return false;
+    }
+    const fs::path probe = p / (".vgc-write-probe." + std::to_string(::getpid()));
+    const int fd = ::open(probe.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0600);
+    if (fd < 0 && errno == ENOENT && attempt < 3) continue;  // another run's undo removed it meanwhile
+    if (fd < 0) {
+      *why = std::string("cannot create a file there: ") + std::strerror(errno);
+      undo();
+      return false;
+    }
+    const bool wrote = ::write(fd, "x", 1) == 1;
+    const int saved = errno;
+    ::close(fd);
+    fs::remove(probe, ec);
+    undo();
+    if (!wrote) *why = std::string("cannot write a file there: ") + std::strerror(saved);
+    return wrote;
   }
-  if (::access(p.c_str(), W_OK | X_OK) != 0) {
-    *why = p.string() + ": " + std::strerror(errno);
-    return false;
+}
+
+// SIGINT / SIGTERM (a cancelled CI job, Ctrl-C): the first asks the run to
+// stop (cancel.h) so that the report of what was found is written; a second
+// one exits at once. Only async-signal-safe calls here.
+extern "C" void on_cancel_signal(int sig) {
+  if (cancel_signal()) {
+    const char msg[] = "\nvgc certify: second signal: exiting at once, no report\n";
+    [[maybe_unused]] const ssize_t n = ::write(2, msg, sizeof msg - 1);
+    _exit(128 + sig);
   }
-  return true;
+  request_cancel(sig);
+  const char msg[] = "\nvgc certify: cancelled: stopping the implementation and writing an incomplete report "
+                     "(a second signal exits at once)\n";
+  [[maybe_unused]] const ssize_t n = ::write(2, msg, sizeof msg - 1);
+}
+
+void install_cancel_handlers() {
+  prepare_cancel();
+  struct sigaction sa {};
+  sa.sa_handler = on_cancel_signal;
+  sigemptyset(&sa.sa_mask);
+  sa.sa_flags = 0;  // no SA_RESTART: a blocking wait returns EINTR and sees the request
+  sigaction(SIGINT, &sa, nullptr);
+  sigaction(SIGTERM, &sa, nullptr);
 }
 
 std::string rerun_command(const Options& o) {
@@ -126,7 +181,7 @@ int run(const Options& o) {
   ro.budget_seconds = o.budget;
   ro.clause_glob = o.clauses;
   if (!parse_shard(o.shard, &ro.shard_index, &ro.shard_count)) {
-    fmt::print(stderr, "vgc certify: --shard takes I/N with 1 <= I <= N, got '{}': for example --shard 2/3 runs "
+    say(stderr, "vgc certify: --shard takes I/N with 1 <= I <= N, got '{}': for example --shard 2/3 runs "
                        "the second of three shards\n", o.shard);
     return 2;
   }
@@ -147,13 +202,14 @@ int run(const Options& o) {
   if (!o.baseline.empty()) {
     std::string error;
     if (!load_baseline(o.baseline, &baseline, &error)) {
-      fmt::print(stderr, "vgc certify: {}\n", error);
+      say(stderr, "vgc certify: {}\n", error);
       return 2;
     }
     for (const auto& [id, why] : baseline.reasons) ro.tolerated.insert(id);
   }
+  install_cancel_handlers();
   auto sut = open_impl_or_report("certify", o.impl, o.timeout, o.verse_bone_form);
-  if (!sut) return 2;
+  if (!sut) return cancel_signal() ? 128 + cancel_signal() : 2;
 
   ReportContext ctx;
   ctx.implementation_spec = o.impl;
@@ -164,9 +220,9 @@ int run(const Options& o) {
     ctx.baseline = &baseline;
     ctx.baseline_path = o.baseline;
   }
-  fmt::print(stderr, "vgc certify: {} (seed {}, {} cases per property, budget {:g} s, shard {})\n", o.impl, o.seed,
+  say(stderr, "vgc certify: {} (seed {}, {} cases per property, budget {:g} s, shard {})\n", o.impl, o.seed,
              o.cases, o.budget, o.shard);
-  if (!ctx.implementation_identity.empty()) fmt::print(stderr, "vgc certify: {}\n", ctx.implementation_identity);
+  if (!ctx.implementation_identity.empty()) say(stderr, "vgc certify: {}\n", ctx.implementation_identity);
 
   ProgressLine line(!o.quiet);
   ro.progress = [&line](const RunProgress& p) {
@@ -184,23 +240,20 @@ int run(const Options& o) {
     line.finish();
     std::string found;
     for (const auto& f : p.findings) found += (found.empty() ? "" : ", ") + f.finding.clause;
-    fmt::print(stderr, "[{}/{}] {:<20} {:<8} {}/{} cases ({} judged, {} set aside{}){}  {:.1f} s\n",
+    say(stderr, "[{}/{}] {:<20} {:<8} {}/{} cases ({} judged, {} set aside{}){}  {:.1f} s\n",
                at.property_index + 1, at.property_count, p.id, p.status, p.cases, p.cases_target, p.judged,
                p.set_aside, p.not_judged ? fmt::format(", {} not judged", p.not_judged) : "",
                found.empty() ? "" : "; found " + found, at.elapsed_seconds);
-    if (!p.note.empty() && p.status != "pass") fmt::print(stderr, "      {}\n", p.note);
+    if (!p.note.empty() && p.status != "pass") say(stderr, "      {}\n", p.note);
   };
   register_oracle_checks();  // the oracles judge the optional capabilities
   line.update("asking the implementation for a fresh node", true);
   const RunResult result = run_certification(*sut, ro);
   line.finish();
   const Verdict verdict = judge(result, ctx.baseline, o.strict);
-  ctx.run_dir = default_run_dir(o.reports, result, ctx);
   std::string error;
-  std::error_code ec;
-  std::filesystem::create_directories(std::filesystem::path(ctx.run_dir).parent_path(), ec);
-  if (!write_report(o.reports, result, verdict, ctx, &error)) {
-    fmt::print(stderr, "vgc certify: {}: no report was written (verdict {}); free space or give --reports a "
+  if (!claim_run_dir(o.reports, result, &ctx, &error) || !write_report(o.reports, result, verdict, ctx, &error)) {
+    say(stderr, "vgc certify: {}: no report was written (verdict {}); free space or give --reports a "
                        "directory you can write, then run again: {}\n", error, verdict.name, ctx.command_line);
     return 2;
   }
@@ -213,10 +266,10 @@ int run(const Options& o) {
     if (status == "pass") passed = n;
     else tally += fmt::format(", {} {}", n, status);
   }
-  fmt::print("{}: {} ({} of {} clauses pass{}; {:.1f} s)\n", o.impl, verdict.name, passed, result.clauses.size(),
+  say("{}: {} ({} of {} clauses pass{}; {:.1f} s)\n", o.impl, verdict.name, passed, result.clauses.size(),
              tally, result.seconds);
   if (result.preflight)
-    fmt::print("  the implementation could not show a fresh node: {}: {}\n", result.preflight->clause,
+    say("  the implementation could not show a fresh node: {}: {}\n", result.preflight->clause,
                result.preflight->message);
   for (const auto& co : result.clauses) {
     if (!co.finding) continue;
@@ -226,22 +279,27 @@ int run(const Options& o) {
                       : known                                  ? "known"
                       : !finding_gates(co, o.strict)           ? "profile"
                                                                : co.status.c_str();
-    fmt::print("  {:<8} {:<24} {}\n", tag, co.clause->id, co.finding->message);
-    fmt::print("           replay: {}\n",
+    say("  {:<8} {:<24} {}\n", tag, co.clause->id, co.finding->message);
+    say("           replay: {}\n",
                replay_command((std::filesystem::path(ctx.run_dir) / counterexample_path(co)).string(), o.impl));
   }
   for (const auto& id : verdict.stale_baseline)
-    fmt::print("  stale    {:<24} in the baseline but no case diverged on it: remove it\n", id);
+    say("  stale    {:<24} in the baseline but no case diverged on it: remove it\n", id);
   for (const auto& p : result.properties)
-    if (p.status == "stopped") fmt::print("  stopped  {}: {}\n", p.id, p.note);
+    if (p.status == "stopped") say("  stopped  {}: {}\n", p.id, p.note);
   for (const auto& co : result.clauses)
-    if (co.status == "unchecked") fmt::print("  unchecked {:<23} {}\n", co.clause->id, co.note);
+    if (co.status == "unchecked") say("  unchecked {:<23} {}\n", co.clause->id, co.note);
   if (!verdict.profile_differences.empty() && !o.strict)
-    fmt::print("  ({} profile difference(s) from the suite's reading of silent points: reported, not gating; "
+    say("  ({} profile difference(s) from the suite's reading of silent points: reported, not gating; "
                "--strict gates on them)\n",
                verdict.profile_differences.size());
-  fmt::print("report: {}/summary.md\n", ctx.run_dir);
-  fmt::print("re-run: {}\n", ctx.command_line);
+  say("report: {}/summary.md\n", ctx.run_dir);
+  say("re-run: {}\n", ctx.command_line);
+  if (cancel_signal()) {
+    say("cancelled by {}: the verdict is incomplete; the findings above are those found before\n",
+               cancel_signal_name());
+    return 128 + cancel_signal();
+  }
   return verdict.exit_code;
 }
 

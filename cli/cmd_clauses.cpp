@@ -6,6 +6,7 @@
 
 #include "catalog_markdown.h"
 #include "subcommand.h"
+#include "terminal_text.h"
 
 namespace vgc::cli {
 namespace {

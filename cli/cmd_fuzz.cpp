@@ -23,6 +23,7 @@
 #include "progress_line.h"
 #include "read_file.h"
 #include "subcommand.h"
+#include "terminal_text.h"
 
 namespace vgc::cli {
 namespace {
@@ -42,14 +43,14 @@ int run_fuzz(const FuzzArgs& a) {
   if (!a.to_text.empty()) {
     std::string bytes;
     if (!read_file(a.to_text, &bytes)) {
-      fmt::print(stderr, "vgc fuzz: cannot read {}\n", a.to_text);
+      say(stderr, "vgc fuzz: cannot read {}\n", a.to_text);
       return 2;
     }
     const std::string text = fuzz::stream_to_text(bytes);
     if (a.output.empty()) {
-      fmt::print("{}", text);
+      say("{}", text);
     } else if (!write_file(a.output, text)) {
-      fmt::print(stderr, "vgc fuzz: cannot write {}\n", a.output);
+      say(stderr, "vgc fuzz: cannot write {}\n", a.output);
       return 2;
     }
     return 0;
@@ -57,29 +58,29 @@ int run_fuzz(const FuzzArgs& a) {
   if (!a.to_binary.empty()) {
     std::string text;
     if (!read_file(a.to_binary, &text)) {
-      fmt::print(stderr, "vgc fuzz: cannot read {}\n", a.to_binary);
+      say(stderr, "vgc fuzz: cannot read {}\n", a.to_binary);
       return 2;
     }
     std::vector<Command> cs;
     TextError e;
     if (!parse_commands(text, &cs, &e)) {
-      fmt::print(stderr, "{}:{}:{}: error: {}\n", a.to_binary, e.line, e.column, e.message);
+      say(stderr, "{}:{}:{}: error: {}\n", a.to_binary, e.line, e.column, e.message);
       return 2;
     }
     std::string bytes;
     for (const Command& c : cs)
       if (!encode_command(c, &bytes)) {
-        fmt::print(stderr, "vgc fuzz: a name is too long to encode: {}\n", print_command(c));
+        say(stderr, "vgc fuzz: a name is too long to encode: {}\n", print_command(c));
         return 2;
       }
     if (a.output.empty()) {
-      fmt::print(stderr, "vgc fuzz: --to-binary needs -o OUT\n");
+      say(stderr, "vgc fuzz: --to-binary needs -o OUT\n");
       return 2;
     }
     return write_file(a.output, bytes) ? 0 : 2;
   }
   if (a.campaign.target.empty()) {
-    fmt::print(stderr, "vgc fuzz: name a target (stream, text, differential, verse_packet, mesh_manifold, mesh_subdivision, "
+    say(stderr, "vgc fuzz: name a target (stream, text, differential, verse_packet, mesh_manifold, mesh_subdivision, "
                        "property_<group>) or use --to-text / --to-binary\n");
     return 2;
   }

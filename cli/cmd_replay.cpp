@@ -32,6 +32,7 @@
 #include "runner.h"
 #include "subcommand.h"
 #include "verdict.h"
+#include "terminal_text.h"
 
 namespace vgc::cli {
 namespace {
@@ -47,7 +48,7 @@ struct Options {
 int run(const Options& o) {
   std::string text;
   if (!read_file(o.file, &text)) {
-    fmt::print(stderr,
+    say(stderr,
                "vgc replay: cannot read {} ({}): give the path of a command file (docs/commands.md), e.g. "
                "reports/latest/counterexamples/<CLAUSE>.vgc\n",
                o.file, read_failure(o.file));
@@ -58,7 +59,7 @@ int run(const Options& o) {
   std::size_t directive_line = 0;
   TextError error;
   if (!parse_program(text, &program, &error, &lines, &directive_line)) {
-    fmt::print(stderr, "{}:{}:{}: error: {}\n", o.file, error.line, error.column, error.message);
+    say(stderr, "{}:{}:{}: error: {}\n", o.file, error.line, error.column, error.message);
     return 2;
   }
   auto sut = open_impl_or_report("replay", o.impl, o.timeout, o.verse_bone_form);
@@ -72,42 +73,42 @@ int run(const Options& o) {
     const Clause* nc = find_clause(n.clause);
     if (nc && nc->level == ClauseLevel::Should) {
       ++should_not_met;
-      fmt::print("fail (SHOULD) {} (SHOULD): {}\n", n.clause, n.message);
-      fmt::print("verdict: a SHOULD clause not met: certify reports it as \"fail (SHOULD)\" and the verdict "
+      say("fail (SHOULD) {} (SHOULD): {}\n", n.clause, n.message);
+      say("verdict: a SHOULD clause not met: certify reports it as \"fail (SHOULD)\" and the verdict "
                  "stands (not gating)\n");
     } else {
-      fmt::print("note     {:<24} {}\n", n.clause, n.message);
+      say("note     {:<24} {}\n", n.clause, n.message);
     }
   }
   if (!r.failure) {
     if (should_not_met)
-      fmt::print("{}: agrees with the reference on all {} commands of {} but for {} SHOULD clause(s) not met "
+      say("{}: agrees with the reference on all {} commands of {} but for {} SHOULD clause(s) not met "
                  "(above; the verdict stands)\n",
                  o.impl, program.commands.size(), o.file, should_not_met);
     else
-      fmt::print("{}: agrees with the reference on all {} commands of {}\n", o.impl, program.commands.size(),
+      say("{}: agrees with the reference on all {} commands of {}\n", o.impl, program.commands.size(),
                  o.file);
     if (!program.request) return 0;
     if (!r.not_judged.empty()) {
-      fmt::print("{}:{}: cannot repeat the capability check: {}\n", o.file, directive_line, r.not_judged);
+      say("{}:{}: cannot repeat the capability check: {}\n", o.file, directive_line, r.not_judged);
       return 2;
     }
-    fmt::print("{}: passes the check of capability \"{}\" (variant {}) of {}\n", o.impl, program.request->capability,
+    say("{}: passes the check of capability \"{}\" (variant {}) of {}\n", o.impl, program.request->capability,
                program.request->variant, capability_clauses(program.request->capability));
     return 0;
   }
   const Clause* clause = find_clause(r.failure->clause);
   const auto at = static_cast<std::size_t>(r.failed_at);
   if (r.failed_at >= 0 && at < program.commands.size())
-    fmt::print("{}:{}: {}\n", o.file, lines[at], print_command(program.commands[at]));
+    say("{}:{}: {}\n", o.file, lines[at], print_command(program.commands[at]));
   else if (program.request && at == program.commands.size())
-    fmt::print("{}:{}: {}", o.file, directive_line, print_capability_directive(*program.request));
+    say("{}:{}: {}", o.file, directive_line, print_capability_directive(*program.request));
   // The finding in certify's words (verdict.h): its shown status, level,
   // and what it does to the verdict. The exit code says the divergence
   // reproduced (1), whatever the level: scripts and `vgc fuzz` rely on it.
   const std::string status = finding_status_name(r.failure->status);
   if (!clause) {
-    fmt::print("{} {} (?): {}\n", status, r.failure->clause, r.failure->message);
+    say("{} {} (?): {}\n", status, r.failure->clause, r.failure->message);
     return 1;
   }
   ClauseOutcome co;
@@ -118,16 +119,16 @@ int run(const Options& o) {
   const std::string shown = clause->level == ClauseLevel::Should ? status + " (SHOULD)"
                             : gates                              ? status
                                                                  : std::string("profile difference");
-  fmt::print("{} {} ({}): {}\n", shown, r.failure->clause, clause_level_name(clause->level), r.failure->message);
-  fmt::print("spec ({}): {}\n", clause->source, clause->text);
+  say("{} {} ({}): {}\n", shown, r.failure->clause, clause_level_name(clause->level), r.failure->message);
+  say("spec ({}): {}\n", clause->source, clause->text);
   if (clause->level == ClauseLevel::Should)
-    fmt::print("verdict: a SHOULD clause not met: certify reports it as \"{}\" and the verdict stands (not "
+    say("verdict: a SHOULD clause not met: certify reports it as \"{}\" and the verdict stands (not "
                "gating)\n", shown);
   else if (!gates)
-    fmt::print("verdict: an IMPLEMENTATION-DEFINED reading not followed: certify reports it as a profile "
+    say("verdict: an IMPLEMENTATION-DEFINED reading not followed: certify reports it as a profile "
                "difference, not gating; with --strict it gates (not-conformant)\n");
   else
-    fmt::print("verdict: certify reports it as \"{}\" and the run is not-conformant (gating{})\n", shown,
+    say("verdict: certify reports it as \"{}\" and the run is not-conformant (gating{})\n", shown,
                clause->level == ClauseLevel::ImplementationDefined && r.failure->status == FindingStatus::Fail
                    ? ", --strict"
                    : "");

@@ -1,5 +1,6 @@
 // open_impl.cpp — see open_impl.h.
 #include "open_impl.h"
+#include "terminal_text.h"
 
 #include <fmt/core.h>
 
@@ -44,7 +45,7 @@ std::unique_ptr<Implementation> open_impl_or_report(const char* subcommand, cons
     const std::filesystem::path path = spec.substr(7);
     std::error_code ec;
     if (!std::filesystem::is_regular_file(path, ec)) {
-      fmt::print(stderr,
+      say(stderr,
                  "vgc {}: {}: {} is {}: give the path of your plugin's shared library (relative to the directory vgc "
                  "runs in, {}), e.g. plugin:./build/libmy_node.so\n",
                  subcommand, spec, path.string(),
@@ -59,9 +60,9 @@ std::unique_ptr<Implementation> open_impl_or_report(const char* subcommand, cons
   std::string error;
   auto sut = open_implementation(spec, open, &error);
   if (!sut) {
-    fmt::print(stderr, "vgc {}: {}\n", subcommand, error);
+    say(stderr, "vgc {}: {}\n", subcommand, error);
     if (const std::string fix = what_to_do(spec, error); !fix.empty())
-      fmt::print(stderr, "vgc {}: what to do: {}\n", subcommand, fix);
+      say(stderr, "vgc {}: what to do: {}\n", subcommand, fix);
   }
   return sut;
 }

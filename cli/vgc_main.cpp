@@ -11,6 +11,7 @@
 
 #include "program_command.h"
 #include "subcommand.h"
+#include "terminal_text.h"
 #include "version.h"
 
 namespace vgc::cli {
@@ -53,7 +54,7 @@ int main(int argc, char** argv) {
       known = known || sub->get_name() == argv[1];
     }
     if (!known) {
-      fmt::print(stderr, "vgc: unknown command '{}': use one of {} (vgc --help says what each does)\n", argv[1],
+      vgc::cli::say(stderr, "vgc: unknown command '{}': use one of {} (vgc --help says what each does)\n", argv[1],
                  names);
       return 2;
     }

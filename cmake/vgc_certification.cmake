@@ -1,24 +1,37 @@
 # vgc_certification.cmake — installed as vgcCertification.cmake and included
-# by vgcConfig.cmake: vgc_add_certification(), which registers a CTest test
-# that certifies an implementation with the imported vgc::vgc program.
+# by vgcConfig.cmake: vgc_add_certification(), which registers CTest tests
+# that certify an implementation with the imported vgc::vgc program: one
+# certify run, and one test per clause that reads its report.
 #
 #   vgc_add_certification(NAME <test name> IMPL <implementation>
 #                         [BASELINE <file>] [CLAUSES <globs>] [CASES <n>]
 #                         [SEED <n>] [TIMEOUT <seconds>] [STRICT]
 #                         [ENVIRONMENT <var=value>...])
 #
-# The test runs
+# The test <NAME> runs
 #   vgc certify --impl <IMPL> --reports <build dir>/vgc_reports/<NAME> --quiet
 #               [--baseline <abs file>] [--clauses <globs>] [--cases <n>]
 #               [--seed <n>] [--timeout <s>] [--strict]
-# in CMAKE_CURRENT_BINARY_DIR. vgc's exit code is the test's result: 0
-# (conformant) passes; 1 (not conformant) and 2 (usage or infrastructure
-# error, incomplete run) fail. vgc's verdict, findings and errors are the
-# test's output (ctest --output-on-failure shows them).
+# in CMAKE_CURRENT_BINARY_DIR, once. It passes when vgc wrote its report
+# (whatever the verdict) and fails when it could not (bad options, an
+# implementation that cannot be started): it is the FIXTURES_SETUP of
+# fixture <NAME>. Then one test per clause of the catalog that CLAUSES
+# selects, <NAME>.<CLAUSE-ID> (e.g. my_node.LAYER-NAME-1), requires that
+# fixture and runs `vgc result <reports>/latest <CLAUSE-ID>`: it passes when
+# the clause passes (or its finding does not gate the verdict: SHOULD, a
+# profile difference, a known deviation; not-applicable, not-claimed),
+# fails on a gating finding or when the clause is unchecked (an incomplete
+# run), and is skipped when the run did not judge it. So `ctest` fails
+# exactly when the verdict is not conformant or incomplete,
+# `ctest -R LAYER-NAME-1` certifies once and shows that clause (CTest runs
+# the fixture's setup test first), and each clause has a history of its
+# own in CDash or a CI's test view. The per-clause tests are listed when
+# ctest starts (`vgc clauses`), like gtest_discover_tests does.
 #
 # IMPL is passed as one argument and may hold generator expressions, e.g.
 # plugin:$<TARGET_FILE:my_node>. A relative BASELINE is relative to
-# CMAKE_CURRENT_SOURCE_DIR. ENVIRONMENT sets the test's ENVIRONMENT property.
+# CMAKE_CURRENT_SOURCE_DIR. ENVIRONMENT sets the certify test's ENVIRONMENT
+# property. All the tests carry the label vgc_certification.
 
 if(CMAKE_VERSION VERSION_LESS 3.20)
   message(FATAL_ERROR "vgcCertification.cmake needs CMake 3.20 or newer (cmake_path); this is ${CMAKE_VERSION}")
@@ -66,8 +79,35 @@ function(vgc_add_certification)
   endif()
 
   add_test(NAME "${arg_NAME}" COMMAND ${command} WORKING_DIRECTORY "${CMAKE_CURRENT_BINARY_DIR}")
-  set_tests_properties("${arg_NAME}" PROPERTIES LABELS vgc_certification)
+  # Passes when the report was written ("report: <dir>/summary.md"), whatever
+  # the verdict: the clauses' tests judge it.
+  set_tests_properties("${arg_NAME}" PROPERTIES LABELS vgc_certification FIXTURES_SETUP "${arg_NAME}"
+                       PASS_REGULAR_EXPRESSION "report: [^\n]*summary\\.md")
   if(arg_ENVIRONMENT)
     set_tests_properties("${arg_NAME}" PROPERTIES ENVIRONMENT "${arg_ENVIRONMENT}")
   endif()
+
+  # One test per clause, listed when ctest starts (the vgc program may not
+  # exist yet at configure time).
+  set(clauses "*")
+  if(DEFINED arg_CLAUSES)
+    set(clauses "${arg_CLAUSES}")
+  endif()
+  set(include_file "${CMAKE_CURRENT_BINARY_DIR}/vgc_certification_${arg_NAME}_clauses.cmake")
+  set(run_dir "${CMAKE_CURRENT_BINARY_DIR}/vgc_reports/${arg_NAME}/latest")
+  file(GENERATE OUTPUT "${include_file}" CONTENT "\
+execute_process(COMMAND \"$<TARGET_FILE:vgc::vgc>\" clauses --clauses \"${clauses}\"
+                OUTPUT_VARIABLE vgc_clauses RESULT_VARIABLE vgc_rc)
+if(NOT vgc_rc EQUAL 0)
+  message(WARNING \"vgc_add_certification(${arg_NAME}): `vgc clauses` failed (\${vgc_rc}): no per-clause tests\")
+endif()
+string(REGEX MATCHALL \"(^|\\n)[A-Z0-9]+(-[A-Z0-9]+)+\" vgc_ids \"\${vgc_clauses}\")
+foreach(vgc_id IN LISTS vgc_ids)
+  string(STRIP \"\${vgc_id}\" vgc_id)
+  add_test(\"${arg_NAME}.\${vgc_id}\" \"$<TARGET_FILE:vgc::vgc>\" result \"${run_dir}\" \"\${vgc_id}\")
+  set_tests_properties(\"${arg_NAME}.\${vgc_id}\" PROPERTIES FIXTURES_REQUIRED \"${arg_NAME}\"
+                       SKIP_RETURN_CODE 77 LABELS vgc_certification)
+endforeach()
+")
+  set_property(DIRECTORY APPEND PROPERTY TEST_INCLUDE_FILES "${include_file}")
 endfunction()

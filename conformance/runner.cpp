@@ -17,6 +17,8 @@
 #include "capability.h"
 #include "exercised_clauses.h"
 #include "command_text.h"
+#include "confirm_finding.h"
+#include "cancel.h"
 #include "property.h"
 
 namespace vgc {
@@ -63,6 +65,19 @@ struct CaseContext {
   bool shrinking = false;           // this round found its failure: cases now are shrink attempts
   int cases_done = 0, judged = 0, set_aside = 0, not_judged = 0, target = 0;
   bool dominated = false;           // set-aside cases dominate: stop
+  // What the instance had been sent since it started when the round's first
+  // call failure happened (confirm_finding.h), the failing case last.
+  HistoryRecorder* recorder = nullptr;
+  std::vector<std::vector<Command>> failure_history;
+  // Kinds of call failure ("crash", "timeout", "protocol-error") the run
+  // already found to depend on the implementation's history: another one
+  // whose case does not fail a fresh instance is set aside, not shrunk.
+  std::set<std::string> history_kinds;
+  // The round's first call failure: whether its case failed a fresh
+  // instance the same way, and that case (the fallback when shrinking, on
+  // an instance with a history of its own, ends on a program that does not).
+  bool failure_reproduced = false;
+  Program failure_program;
 
   // Tallies (outside shrinking): the property's exercised counts, the run's
   // command kinds and unreported verdicts.
@@ -76,8 +91,10 @@ struct CaseContext {
 
 thread_local CaseContext* g_context = nullptr;
 
+// The budget ran out, or the run was cancelled (cancel.h): either way no
+// further case runs and the case under way is not judged.
 bool past_deadline() {
-  if (Clock::now() < g_context->deadline) return false;
+  if (Clock::now() < g_context->deadline && !cancel_signal()) return false;
   g_context->deadline_hit = true;
   return true;
 }
@@ -170,7 +187,21 @@ bool fail_case(const Finding& f, std::optional<CapabilityRequest> request = std:
   }
   auto& sig = g_context->signature;
   if (sig && (sig->first != f.clause || sig->second != f.status)) return false;
+  if (!g_context->shrinking && is_call_failure(f) && g_context->recorder &&
+      g_context->history_kinds.count(call_failure_kind(f)) &&
+      !fails_fresh(*g_context->recorder, f, Program{g_context->trace, std::nullopt})) {
+    g_context->set_aside_case = true;  // the history-dependent failure again: already reported
+    return false;
+  }
   sig = std::make_pair(f.clause, f.status);
+  if (!g_context->shrinking && is_call_failure(f) && g_context->recorder) {
+    // Confirmed before shrinking: a failure that a fresh instance does not
+    // repeat is not shrunk (every attempt would only add to the history).
+    g_context->failure_history = g_context->recorder->history();
+    g_context->failure_program = Program{g_context->trace, std::nullopt};
+    g_context->failure_reproduced = fails_fresh(*g_context->recorder, f, g_context->failure_program);
+    if (!g_context->failure_reproduced) g_context->stop = true;
+  }
   g_context->shrinking = true;
   g_context->last_failure = f;
   g_context->last_program.commands = g_context->trace;
@@ -202,6 +233,10 @@ struct Step final : rc::state::Command<Node, Implementation> {
     const Node before = c.model;
     Node after;
     StepResult r = check_step(before, command, sut, &after, /*follow_choices=*/true);
+    if (cancel_signal()) {  // the step may have been cut short: it proves nothing
+      c.deadline_hit = true;
+      return;
+    }
     if (r.failure && c.tolerated.count(r.failure->clause) && take_step_out(r, before)) return;
     c.model = after;
     for (auto& note : r.notes) {
@@ -355,6 +390,28 @@ std::string join(const std::set<std::string>& s) {
   return out;
 }
 
+// A crash, timeout or protocol error stands only if its program does it
+// again on a fresh instance; otherwise it becomes a finding that depends on
+// the implementation's history (confirm_finding.h). Returns false when the
+// run already has that history-dependent finding (same clause and status):
+// this one is then not reported again.
+bool confirm_finding(PropertyFinding* pf, CaseContext& ctx, Clock::time_point deadline, const PropertyOutcome& out,
+                     const RunResult& run) {
+  const auto limit = std::min(deadline, Clock::now() + std::chrono::seconds(60));
+  if (confirm_call_failure(*ctx.recorder, pf, ctx.failure_history, limit)) return true;
+  ctx.history_kinds.insert(call_failure_kind(pf->finding));
+  auto same = [pf](const PropertyFinding& f) {
+    return f.finding.clause == pf->finding.clause && f.finding.status == pf->finding.status &&
+           depends_on_history(f.finding);
+  };
+  for (const auto& f : out.findings)
+    if (same(f)) return false;
+  for (const auto& p : run.properties)
+    for (const auto& f : p.findings)
+      if (same(f)) return false;
+  return true;
+}
+
 PropertyOutcome run_property(const PropertySpec& spec, Implementation& sut, const RunOptions& o,
                              Clock::time_point deadline, RunProgress* progress, Clock::time_point run_start,
                              RunResult* run) {
@@ -365,6 +422,10 @@ PropertyOutcome run_property(const PropertySpec& spec, Implementation& sut, cons
 
   CaseContext ctx;
   ctx.sut = &sut;
+  ctx.recorder = dynamic_cast<HistoryRecorder*>(&sut);
+  for (const auto& p : run->properties)  // history-dependent failures earlier properties found
+    for (const auto& f : p.findings)
+      if (depends_on_history(f.finding)) ctx.history_kinds.insert(call_failure_kind(f.finding));
   ctx.deadline = deadline;
   ctx.tolerated = o.tolerated;
   ctx.baseline = o.tolerated;
@@ -408,6 +469,7 @@ PropertyOutcome run_property(const PropertySpec& spec, Implementation& sut, cons
       }
     } tally{c, counted};
     if (auto f = check_fresh(*c.sut)) {
+      if (past_deadline()) return;  // cut short by a cancel: no finding
       if (!fail_case(*f)) return;
     }
     if (!c.shrinking) {
@@ -422,6 +484,7 @@ PropertyOutcome run_property(const PropertySpec& spec, Implementation& sut, cons
         c.trace.push_back(cmd);
         Node after;
         StepResult r = check_step(start, cmd, *c.sut, &after);
+        if (r.failure && past_deadline()) return;
         if (r.failure) {
           fail_case(*r.failure);
           return;
@@ -444,6 +507,7 @@ PropertyOutcome run_property(const PropertySpec& spec, Implementation& sut, cons
       CapabilityRequest request{capability->capability, variant, std::nullopt};
       if (capability->check_drawn) request.draw = *rc::gen::arbitrary<std::uint32_t>();
       const auto f = run_capability_check(*capability, c.model, *c.sut, request);
+      if (f && past_deadline()) return;  // cut short by a cancel: no finding
       if (f && f->status != FindingStatus::NotJudged) {
         fail_case(*f, request);
       } else if (f) {  // run, and counted, but neither judged nor exercising anything
@@ -461,6 +525,7 @@ PropertyOutcome run_property(const PropertySpec& spec, Implementation& sut, cons
     ctx.shrinking = false;
     ctx.stop = false;
     ctx.signature.reset();
+    ctx.failure_reproduced = false;
     ctx.last_failure.reset();
     ctx.last_program = Program{};
     progress->shrinking = false;
@@ -490,6 +555,14 @@ PropertyOutcome run_property(const PropertySpec& spec, Implementation& sut, cons
         pf.finding = Finding{"STABLE-1", FindingStatus::Fail, failure.description};
       }
       ++ctx.cases_done;  // the failing case
+      if (is_call_failure(pf.finding) && ctx.recorder) {
+        if (!ctx.failure_reproduced) {
+          if (!confirm_finding(&pf, ctx, deadline, out, *run)) continue;  // reported once already
+        } else if (pf.program.commands.size() < ctx.failure_program.commands.size() &&
+                   !fails_fresh(*ctx.recorder, pf.finding, pf.program)) {
+          pf.program = ctx.failure_program;  // shrinking was misled by the instance's history
+        }
+      }
       ctx.tolerated.insert(pf.finding.clause);
       out.findings.push_back(std::move(pf));
       progress->failures = static_cast<int>(out.findings.size());
@@ -519,7 +592,10 @@ PropertyOutcome run_property(const PropertySpec& spec, Implementation& sut, cons
   out.not_judged = ctx.not_judged;
   std::set<std::string> tolerated_hits;
   for (const auto& [clause, pf] : ctx.tolerated_seen) tolerated_hits.insert(clause);
-  if (ctx.deadline_hit) {
+  if (ctx.deadline_hit && cancel_signal()) {
+    stop_note = std::string("cancelled by ") + cancel_signal_name() + " after " +
+                std::to_string(ctx.cases_done) + " of " + std::to_string(ctx.target) + " cases";
+  } else if (ctx.deadline_hit) {
     stop_note = "the budget ran out after " + std::to_string(ctx.cases_done) + " of " + std::to_string(ctx.target) +
                 " cases; raise --budget";
   } else if (ctx.dominated) {
@@ -589,8 +665,12 @@ std::uint64_t property_seed(std::uint64_t run_seed, std::string_view property_id
   return z ^ (z >> 31);
 }
 
-RunResult run_certification(Implementation& sut, const RunOptions& o) {
+RunResult run_certification(Implementation& implementation, const RunOptions& o) {
   load_rapidcheck_configuration_quietly();
+  // Every call goes through the recorder: a call failure's history since the
+  // instance started is then at hand to confirm it (confirm_finding.h).
+  HistoryRecorder recorder(implementation);
+  Implementation& sut = recorder;
   RunResult run;
   run.implementation = sut.name();
   run.options = o;
@@ -618,7 +698,7 @@ RunResult run_certification(Implementation& sut, const RunOptions& o) {
                            d.detail);
       }
     }
-    run.preflight = f;
+    run.preflight = cancel_signal() ? std::nullopt : f;  // a cancel cut it short: no finding
   }
 
   const auto& props = property_catalog();
@@ -783,6 +863,10 @@ RunResult run_certification(Implementation& sut, const RunOptions& o) {
   }
   for (const auto& po : run.properties)
     if (po.status == "stopped") run.complete = false;
+  if (cancel_signal()) {
+    run.cancelled_by = cancel_signal_name();
+    run.complete = false;
+  }
   run.seconds = std::chrono::duration<double>(Clock::now() - start).count();
   return run;
 }

@@ -178,6 +178,9 @@ struct RunResult {
   std::optional<Finding> preflight;
   bool conformant = false;  // no MUST clause failed, crashed or timed out (before any baseline)
   bool complete = false;    // every selected clause was judged (none unchecked, no property stopped)
+  // "SIGTERM", "SIGINT": the run was cancelled (cancel.h) and stopped early;
+  // its verdict is "incomplete" whatever it found. Empty otherwise.
+  std::string cancelled_by;
   double seconds = 0;
 };
 

@@ -1,5 +1,6 @@
 // campaign.cpp — see campaign.h.
 #include "campaign.h"
+
 #include "campaign_html.h"
 
 #include <fmt/core.h>
@@ -28,6 +29,7 @@
 #include "command_text.h"
 #include "program_command.h"
 #include "exec_implementation.h"
+#include "minimize_finding.h"
 
 namespace vgc::fuzz {
 namespace {
@@ -261,6 +263,12 @@ CrashSignature crash_signature(const std::string& output) {
     if (auto at = line.find("vgc-fuzz: FINDING in "); at != std::string::npos) {
       std::string s = line.substr(at + 10);
       s = s.substr(0, s.find('"'));
+      // A finding named by its clause is grouped by the target, the clause
+      // and its status ("CLAUSE (LEVEL, status)"), not by the message: one
+      // bug shown with other values or commands is one finding.
+      static const std::regex named(R"(^(.*?: [A-Z][A-Z0-9]*(?:-[A-Z0-9]+)*-[0-9]+ \([A-Z-]+, [a-z-]+\)): )");
+      std::smatch m;
+      if (std::regex_search(s, m, named)) return {std::regex_replace(m[1].str(), digits, "N"), fold_digits_keep_clauses(s)};
       return {std::regex_replace(s, digits, "N"), fold_digits_keep_clauses(s)};
     }
     if (auto at = line.find("runtime error: "); at != std::string::npos) {
@@ -646,6 +654,13 @@ int run_campaign(const CampaignOptions& o, CampaignSummary* out) {
       if (printed != g.printed.end()) body = printed->second;
       else if (property) body = "# the target printed no command file (a sanitizer finding): replay the input\n";
       else body = stream_to_text(bytes);
+      if (!c.clause.empty() && clock::now() < sign_until) {
+        // Minimized as certify shrinks, before it is written (minimize_finding.h).
+        const Minimized min = minimize_finding(body, c.clause, impl_spec, sign_until);
+        if (min.reproduced && min.after < min.before)
+          body = fmt::format("# minimized from {} to {} commands ({} replays); the input replays the original\n",
+                             min.before, min.after, min.replays) + min.text;
+      }
       auto write_cex = [&] {
         write_file(cex_file, "# vgc fuzz " + target + " counterexample: " + c.signature + "\n# from " +
                                  rep.string() + "\n# replay: " + c.replay + "\n" + body);

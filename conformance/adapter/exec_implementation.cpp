@@ -15,6 +15,7 @@
 #include <mutex>
 #include <thread>
 
+#include "cancel.h"
 #include "capability_documents.h"
 #include "command_text.h"
 #include "number_text.h"
@@ -170,7 +171,17 @@ bool ExecImplementation::spawn(std::string* error) {
     close_all();
     return false;
   }
+  if (std::string why; !guard_.watch(pid, &why)) {
+    kill(-pid, SIGKILL);
+    kill(pid, SIGKILL);
+    while (waitpid(pid, nullptr, 0) < 0 && errno == EINTR) {
+    }
+    *error = why;
+    close_all();
+    return false;
+  }
   pid_ = pid;
+  ++starts_;
   in_fd_ = in[1];
   out_fd_ = out[0];
   err_fd_ = err[0];
@@ -223,9 +234,13 @@ std::string ExecImplementation::stderr_tail() const {
 bool ExecImplementation::pump(bool want_write, Clock::time_point dl, bool* can_write) {
   if (can_write) *can_write = false;
   for (;;) {
-    pollfd fds[3];
+    // A cancelled run (cancel.h) waits for no answer: the wait ends as a
+    // timeout, which the runner discards.
+    if (cancel_signal()) return false;
+    pollfd fds[4];
     int n = 0;
     int out_i = -1, err_i = -1, in_i = -1;
+    if (cancel_fd() >= 0) fds[n++] = {cancel_fd(), POLLIN, 0};
     // Stop reading stdout once it holds more than any acceptable answer.
     if (out_fd_ >= 0 && out_buf_.size() <= options_.max_answer_bytes) {
       out_i = n;
@@ -348,6 +363,7 @@ std::string ExecImplementation::kill_and_reap(std::chrono::milliseconds grace) {
   }
   kill(-pid_, SIGKILL);  // its whole process group, children included
   kill(pid_, SIGKILL);   // and itself, should it have left the group
+  guard_.release();      // before the reap, while the group id is still ours
   int status = 0;
   while (waitpid(pid_, &status, 0) < 0 && errno == EINTR) {
   }
@@ -446,6 +462,13 @@ Answer ExecImplementation::start() {
   a.status = failed_;
   a.detail = failed_detail_;
   return a;
+}
+
+Answer ExecImplementation::restart() {
+  if (pid_ > 0) kill_and_reap(std::chrono::milliseconds(0));
+  failed_ = CallStatus::Crash;
+  failed_detail_ = "restarted";
+  return reset();  // starts it (a failed or stopped program is started by reset)
 }
 
 Answer ExecImplementation::reset() {

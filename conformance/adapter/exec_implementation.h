@@ -11,7 +11,8 @@
 // runs in its own process group, every read and write is non-blocking and
 // bounded by a deadline (poll), stderr is drained all the time (the last
 // lines are kept for the report), answers are bounded in size, SIGPIPE is
-// ignored, and the child is always reaped. A failed call (Crash, Timeout,
+// ignored, and the child is always reaped. A watcher (process_group_guard.h)
+// kills the program's process group when vgc ends, even by SIGKILL. A failed call (Crash, Timeout,
 // ProtocolError) kills the program; every later call returns the same
 // failure without talking to it, until reset() starts it again.
 #pragma once
@@ -23,6 +24,7 @@
 #include <sys/types.h>
 
 #include "implementation.h"
+#include "process_group_guard.h"
 
 namespace vgc {
 
@@ -43,6 +45,9 @@ class ExecImplementation final : public Implementation {
   std::string name() const override { return display_name_; }
   std::string identity() const override { return hello_name_.empty() ? display_name_ : hello_name_; }
   Answer reset() override;
+  // Kills the program (whatever state it is in) and starts it again.
+  Answer restart() override;
+  std::uint64_t instance() const override { return starts_; }
   Answer apply(const Command& c) override;
   Document snapshot() override;
   Document derived() override;
@@ -89,6 +94,8 @@ class ExecImplementation final : public Implementation {
   std::string display_name_;
   std::string hello_name_;
   pid_t pid_ = -1;
+  std::uint64_t starts_ = 0;  // programs started so far
+  ProcessGroupGuard guard_;  // kills the program's group if vgc ends first, however
   int in_fd_ = -1;   // the program's stdin
   int out_fd_ = -1;  // its stdout
   int err_fd_ = -1;  // its stderr

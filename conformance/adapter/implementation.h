@@ -14,6 +14,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <map>
 #include <memory>
 #include <string>
@@ -95,6 +96,14 @@ class Implementation {
   // What the implementation says it is: the free text of its ?hello answer
   // (exec), the table's name (plugin), or name(). For reports only.
   virtual std::string identity() const { return name(); }
+  // Starts a new instance (a new process for exec:) with a fresh node, so
+  // that nothing the previous instance went through can matter: how a
+  // finding is confirmed (confirm_finding.h). Default: reset(), for an
+  // implementation that has no instance to restart.
+  virtual Answer restart() { return reset(); }
+  // Which instance is running: changes whenever a new one starts (exec: a
+  // crashed or killed program is started again). Default 0: always one.
+  virtual std::uint64_t instance() const { return 0; }
   // What this route cannot show (RouteLimits). Default: nothing hidden.
   virtual RouteLimits limits() const { return {}; }
   // One optional capability request (docs/adapters.md "Optional

@@ -3,6 +3,7 @@
 
 #include <cerrno>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -53,6 +54,12 @@ bool parse_baseline(const std::string& text, Baseline* out, std::string* error) 
 }
 
 bool load_baseline(const std::string& path, Baseline* out, std::string* error) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) {  // an ifstream opens one, and reads it as empty
+    *error = path + ": is a directory, not a baseline file: give the path of a file of known deviations "
+                    "(CLAUSE-ID reason, one per line)";
+    return false;
+  }
   std::ifstream f(path, std::ios::binary);
   if (!f) {
     *error = path + ": cannot read the baseline file (" + std::strerror(errno) +
@@ -61,6 +68,10 @@ bool load_baseline(const std::string& path, Baseline* out, std::string* error) {
   }
   std::ostringstream ss;
   ss << f.rdbuf();
+  if (f.bad()) {
+    *error = path + ": cannot read the baseline file (" + std::strerror(errno) + ")";
+    return false;
+  }
   std::string e;
   if (!parse_baseline(ss.str(), out, &e)) {
     *error = path + ":" + e;

@@ -3,6 +3,8 @@
 
 #include <pugixml.hpp>
 
+#include "display_text.h"
+
 #include <sstream>
 
 namespace vgc {
@@ -46,7 +48,16 @@ ul.legend { font-size: 0.85em; padding-left: 1.2em; margin: 0.3em 0; }
 
 }  // namespace
 
+void escape_unprintable_tree(pugi::xml_node root) {
+  for (pugi::xml_attribute a : root.attributes()) a.set_value(escape_unprintable(a.value()).c_str());
+  if (root.type() == pugi::node_pcdata || root.type() == pugi::node_cdata || root.type() == pugi::node_comment)
+    root.set_value(escape_unprintable(root.value()).c_str());
+  for (pugi::xml_node child : root.children()) escape_unprintable_tree(child);
+}
+
 std::string html_page(const pugi::xml_node& title, const pugi::xml_node& body) {
+  escape_unprintable_tree(title);
+  escape_unprintable_tree(body);
   std::ostringstream out;
   out << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
          "<meta http-equiv=\"Content-Security-Policy\" content=\"default-src 'none'; style-src 'unsafe-inline'\">\n";

@@ -22,4 +22,10 @@ namespace vgc {
 // "<!DOCTYPE html><html><head>...<title/>...<style/></head><body/></html>".
 std::string html_page(const pugi::xml_node& title, const pugi::xml_node& body);
 
+// Escapes (display_text.h) every attribute value and text under `root`, in
+// place: pugixml writes a control byte as a character reference, which
+// XML 1.0 does not allow and which a browser shows raw. html_page and
+// junit.xml call it before printing.
+void escape_unprintable_tree(pugi::xml_node root);
+
 }  // namespace vgc

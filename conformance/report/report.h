@@ -34,6 +34,10 @@ struct ReportContext {
 
 // "reports/<implementation slug>/<started>-seed<seed>[-shard<i>of<n>]"
 std::string default_run_dir(const std::string& reports_root, const RunResult& run, const ReportContext& ctx);
+// Claims a run directory of this run's own, with one mkdir: the default
+// name, or it followed by -2, -3, ... when another run (same second, same
+// seed) has it. Sets ctx->run_dir to the new, empty directory.
+bool claim_run_dir(const std::string& reports_root, const RunResult& run, ReportContext* ctx, std::string* error);
 
 // File name, relative to the run directory, of a clause's counterexample.
 std::string counterexample_path(const ClauseOutcome& co);
@@ -56,8 +60,9 @@ std::string render_report_html(const RunResult& run, const Verdict& v, const Rep
 std::string counterexample_obj_path(const ClauseOutcome& co);
 
 // Writes every file into ctx.run_dir (via a temporary sibling directory and
-// one rename) and points <reports_root>/latest at it. On failure nothing
-// is left behind and *error says why.
+// one rename; ctx.run_dir is absent or empty, as claim_run_dir leaves it)
+// and points <reports_root>/latest at it. On failure nothing is left behind
+// and *error says why.
 bool write_report(const std::string& reports_root, const RunResult& run, const Verdict& v,
                   const ReportContext& ctx, std::string* error);
 

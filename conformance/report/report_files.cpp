@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "command_text.h"
+#include "display_text.h"
 #include "exec_implementation.h"  // shell_quote
 #include "finding_picture.h"
 #include "obj_writer.h"
@@ -54,6 +55,24 @@ std::string default_run_dir(const std::string& reports_root, const RunResult& ru
   if (run.options.shard_count > 1)
     name += "-shard" + std::to_string(run.options.shard_index + 1) + "of" + std::to_string(run.options.shard_count);
   return (fs::path(reports_root) / slug(ctx.implementation_spec) / name).string();
+}
+
+bool claim_run_dir(const std::string& reports_root, const RunResult& run, ReportContext* ctx, std::string* error) {
+  const fs::path base(default_run_dir(reports_root, run, *ctx));
+  std::error_code ec;
+  fs::create_directories(base.parent_path(), ec);
+  fs::path dir = base;
+  // One mkdir claims a name: a run started in the same second with the same
+  // seed (a CI matrix, a script) gets -2, -3, ... instead of sharing it.
+  for (int k = 2; !ec && !fs::create_directory(dir, ec) && !ec && k < 10000; ++k)
+    dir = base.string() + "-" + std::to_string(k);
+  if (ec || !fs::is_empty(dir, ec)) {
+    *error = "cannot create a run directory under " + base.parent_path().string() + ": " +
+             (ec ? ec.message() : std::string("every name is taken"));
+    return false;
+  }
+  ctx->run_dir = dir.string();
+  return true;
 }
 
 std::string counterexample_path(const ClauseOutcome& co) {
@@ -107,7 +126,12 @@ bool write_report(const std::string& reports_root, const RunResult& run, const V
                   const ReportContext& ctx, std::string* error) {
   std::error_code ec;
   const fs::path final_dir(ctx.run_dir);
-  const fs::path tmp_dir = final_dir.parent_path() / ("." + final_dir.filename().string() + ".partial");
+  // The files go into a temporary sibling, then one rename puts them in
+  // place of the run directory, which is absent or the empty one this run
+  // claimed (claim_run_dir): a run directory is whole or absent, and never
+  // another run's.
+  const fs::path tmp_dir = final_dir.parent_path() / ("." + final_dir.filename().string() + "." +
+                                                      std::to_string(::getpid()) + ".partial");
   fs::remove_all(tmp_dir, ec);
   fs::create_directories(tmp_dir / "counterexamples", ec);
   if (ec) {
@@ -118,12 +142,14 @@ bool write_report(const std::string& reports_root, const RunResult& run, const V
     *error = what;
     std::error_code ignored;
     fs::remove_all(tmp_dir, ignored);
+    fs::remove(final_dir, ignored);  // the claimed directory, if still empty
     return false;
   };
   std::string e;
   for (const ClauseOutcome& co : run.clauses) {
     if (!co.finding) continue;
-    if (!write_file(tmp_dir / counterexample_path(co), render_counterexample(co, ctx), &e)) return fail(e);
+    if (!write_file(tmp_dir / counterexample_path(co), escape_unprintable(render_counterexample(co, ctx)), &e))
+      return fail(e);
     const FindingPicture picture = picture_of_finding(co);
     if (picture.has_mesh &&
         !write_file(tmp_dir / counterexample_obj_path(co),
@@ -133,21 +159,24 @@ bool write_report(const std::string& reports_root, const RunResult& run, const V
       return fail(e);
   }
   if (!write_file(tmp_dir / "report.json", render_report_json(run, v, ctx), &e)) return fail(e);
-  if (!write_file(tmp_dir / "junit.xml", render_junit(run, v, ctx), &e)) return fail(e);
-  if (!write_file(tmp_dir / "summary.md", render_summary(run, v, ctx), &e)) return fail(e);
-  if (!write_file(tmp_dir / "report.html", render_report_html(run, v, ctx), &e)) return fail(e);
-  fs::remove_all(final_dir, ec);
-  fs::rename(tmp_dir, final_dir, ec);
+  // What a person or a CI reads shows foreign bytes escaped (display_text.h).
+  if (!write_file(tmp_dir / "junit.xml", escape_unprintable(render_junit(run, v, ctx)), &e)) return fail(e);
+  if (!write_file(tmp_dir / "summary.md", escape_unprintable(render_summary(run, v, ctx)), &e)) return fail(e);
+  if (!write_file(tmp_dir / "report.html", escape_unprintable(render_report_html(run, v, ctx)), &e)) return fail(e);
+  fs::rename(tmp_dir, final_dir, ec);  // replaces an empty directory, never a full one
   if (ec) return fail("cannot move the report into " + final_dir.string() + ": " + ec.message());
 
-  // reports/latest -> the run directory, replaced atomically.
+  // reports/latest -> the run directory, now whole, replaced atomically
+  // (a link under a name of this process's own, then one rename).
   const fs::path latest = fs::path(reports_root) / "latest";
-  const fs::path tmp_link = fs::path(reports_root) / ".latest.partial";
+  const fs::path tmp_link = fs::path(reports_root) / (".latest." + std::to_string(::getpid()) + ".partial");
   fs::remove(tmp_link, ec);
   const fs::path target = fs::relative(fs::absolute(final_dir), fs::absolute(reports_root), ec);
   fs::create_directory_symlink(ec ? fs::absolute(final_dir) : target, tmp_link, ec);
   if (!ec) fs::rename(tmp_link, latest, ec);
   if (ec) {
+    std::error_code ignored;
+    fs::remove(tmp_link, ignored);
     *error = "report written to " + final_dir.string() + ", but reports/latest could not be updated: " + ec.message();
     return false;
   }

@@ -21,6 +21,7 @@ std::string render_report_json(const RunResult& run, const Verdict& v, const Rep
   j["implementation_name"] = run.implementation;
   j["verdict"] = v.name;
   j["exit_code"] = v.exit_code;
+  if (!run.cancelled_by.empty()) j["cancelled_by"] = run.cancelled_by;  // cancelled: what was found so far
   j["started"] = ctx.started;
   j["seconds"] = run.seconds;
   j["seed"] = run.options.seed;
@@ -110,7 +111,8 @@ std::string render_report_json(const RunResult& run, const Verdict& v, const Rep
   json rules = json::object();
   for (const auto& [rule, n] : run.rule_uses) rules[rule] = n;
   j["rule_uses"] = rules;
-  return j.dump(2) + "\n";
+  // Invalid UTF-8 from an implementation becomes U+FFFD instead of an exception.
+  return j.dump(2, ' ', false, json::error_handler_t::replace) + "\n";
 }
 
 }  // namespace vgc

@@ -1,11 +1,17 @@
 // report_junit.cpp — junit.xml: one test suite per clause group, one test
 // case per clause; failures carry the finding and the replay command.
+// A test case is named by the clause id alone (stable: a CI's per-test
+// history survives a change of level), the level is a property, and its
+// time is its share of the time of the properties that judged it (each
+// property's seconds split evenly over the clauses it declares).
 #include <pugixml.hpp>
 
+#include <algorithm>
 #include <filesystem>
 #include <map>
 #include <sstream>
 
+#include "html_page.h"
 #include "report.h"
 
 namespace vgc {
@@ -18,6 +24,17 @@ std::string render_junit(const RunResult& run, const Verdict& v, const ReportCon
   auto suites = doc.append_child("testsuites");
   suites.append_attribute("name") = ("vgc certify " + ctx.implementation_spec).c_str();
   suites.append_attribute("time") = run.seconds;
+
+  std::map<std::string, double> property_seconds;
+  std::map<std::string, int> property_clauses;
+  for (const auto& p : run.properties) property_seconds[p.id] = p.seconds;
+  for (const ClauseOutcome& co : run.clauses)
+    for (const auto& p : co.properties) ++property_clauses[p];
+  auto clause_seconds = [&](const ClauseOutcome& co) {
+    double t = 0;
+    for (const auto& p : co.properties) t += property_seconds[p] / std::max(1, property_clauses[p]);
+    return t;
+  };
 
   std::map<std::string, pugi::xml_node> by_group;
   std::map<std::string, std::map<std::string, int>> counts;
@@ -32,12 +49,15 @@ std::string render_junit(const RunResult& run, const Verdict& v, const ReportCon
     }
     auto tc = it->second.append_child("testcase");
     tc.append_attribute("classname") = ("vgc." + group).c_str();
-    tc.append_attribute("name") =
-        (std::string(co.clause->id) + " (" + std::string(clause_level_name(co.clause->level)) + ")").c_str();
+    tc.append_attribute("name") = std::string(co.clause->id).c_str();
+    tc.append_attribute("time") = clause_seconds(co);
     ++tests;
     ++counts[group]["tests"];
     const bool known = ctx.baseline && ctx.baseline->reasons.count(std::string(co.clause->id));
     auto props = tc.append_child("properties");
+    auto level = props.append_child("property");
+    level.append_attribute("name") = "level";
+    level.append_attribute("value") = std::string(clause_level_name(co.clause->level)).c_str();
     auto exercised = props.append_child("property");
     exercised.append_attribute("name") = "exercised";
     exercised.append_attribute("value") = static_cast<long long>(co.exercised);
@@ -84,6 +104,7 @@ std::string render_junit(const RunResult& run, const Verdict& v, const ReportCon
   suites.append_attribute("failures") = failures;
   suites.append_attribute("errors") = errors;
   suites.append_attribute("skipped") = skipped;
+  escape_unprintable_tree(doc);  // XML 1.0 has no way to write a control byte
   std::ostringstream out;
   doc.save(out, "  ");
   return out.str();

@@ -39,7 +39,10 @@ Verdict judge(const RunResult& run, const Baseline* baseline, bool strict) {
     }
     if (co.status == "unchecked") v.unchecked.push_back(id);
   }
-  if (!v.new_failures.empty()) {
+  if (!run.cancelled_by.empty()) {  // what it found is listed, but the run is no verdict
+    v.name = "incomplete";
+    v.exit_code = 2;
+  } else if (!v.new_failures.empty()) {
     v.name = "not-conformant";
     v.exit_code = 1;
   } else if (!run.complete) {

@@ -16,7 +16,8 @@
 //     reported, not gating).
 // Then: any clause `unchecked` or property stopped makes the run
 // "incomplete" (exit 2): neither a pass nor a failure. Otherwise
-// "conformant" (exit 0). Usage and infrastructure errors are also exit 2.
+// "conformant" (exit 0). A cancelled run (RunResult::cancelled_by) is
+// "incomplete" whatever it found: its findings are listed all the same. Usage and infrastructure errors are also exit 2.
 #pragma once
 
 #include <string>

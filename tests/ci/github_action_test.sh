@@ -14,7 +14,8 @@
 # cut short by its budget (incomplete, exit 2, with a report); a plugin that
 # does not exist (error, exit 2, no report, vgc's message in the summary and
 # the annotation); a program the shell cannot find (the annotation says what
-# to do); and a missing impl input.
+# to do); a missing impl input; and the merge of three shards (input merge:
+# the unsharded verdict; a missing shard named).
 set -uo pipefail
 
 [ $# -eq 3 ] || { echo "usage: $0 SOURCE_DIR VGC FAULT_PLUGIN" >&2; exit 2; }
@@ -122,6 +123,25 @@ action noimpl
 check "no impl: exit 2" test "$status" -eq 2 || show
 check "no impl: the annotation names the input" grep -q "^::error title=vgc certify::the input 'impl' is required" "$run/log"
 check "no impl: verdict=error" test "$(output verdict)" = error
+
+# The matrix's final job: the shards' run directories (downloaded artifacts)
+# merged into one run with the unsharded verdict (input merge).
+shards=$tmp/shards
+mkdir -p "$shards"
+for k in 1 2 3; do
+  action "shard$k" INPUT_IMPL="plugin:$fault_plugin" INPUT_SHARD="$k/3" VGC_FAULT=base-layer-destroyable
+  cp -r "$(output report-dir)" "$shards/shard$k"
+done
+action merged INPUT_IMPL=ignored INPUT_MERGE="$shards"
+check "merge: exit 1 (the unsharded verdict)" test "$status" -eq 1 || show
+check "merge: verdict=not-conformant" test "$(output verdict)" = not-conformant
+check "merge: one run directory" test -f "$(output report-dir)/report.json"
+check "merge: the job summary is the merged run's" grep -q '^# vgc certify: plugin:.* NOT CONFORMANT' "$run/summary"
+check "merge: an annotation names LAYER-BASE-2" grep -q '^::error title=vgc fail LAYER-BASE-2::' "$run/log"
+rm -rf "$shards/shard2"
+action merged_missing INPUT_IMPL=ignored INPUT_MERGE="$shards"
+check "merge: a missing shard is an error naming it" grep -q 'shard 2/3 is missing' "$run/log"
+check "merge: ... exit 2" test "$status" -eq 2
 
 [ "$failures" -eq 0 ] || { echo "$failures check(s) failed"; exit 1; }
 echo "all checks passed"

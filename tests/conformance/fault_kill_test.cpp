@@ -42,11 +42,16 @@ Outcome certify_fault(int fault) {
     open.vgc_binary = VGC_BINARY;
     std::string error;
     auto impl = open_implementation(std::string("plugin:") + VGC_FAULT_PLUGIN, open, &error);
-    unsetenv("VGC_FAULT");
-    if (!impl) return {false, "cannot open: " + error};
+    if (!impl) {
+      unsetenv("VGC_FAULT");
+      return {false, "cannot open: " + error};
+    }
     RunOptions o = kill_options();
     o.clause_glob = std::string(info.expected_clause);  // keep the isolated runs short
+    // VGC_FAULT stays set for the whole run: a crash is confirmed on a
+    // restarted instance (confirm_finding.h), which must have the fault too.
     run = run_certification(*impl, o);
+    unsetenv("VGC_FAULT");
   }
   const Verdict v = judge(run, nullptr);
   Outcome out;

@@ -125,18 +125,25 @@ run_ctest() {  # run_ctest LOG REGEX: ctest -R REGEX in the consumer build, outp
   return $rc
 }
 rc=0
-run_ctest "$tmp/pass.log" '^(ref_conformance|ref_plugin_conformance|ref_strict|fault_known)$' || rc=$?
+run_ctest "$tmp/pass.log" '^(ref_conformance|ref_plugin_conformance|ref_strict|fault_known)(\.|$)' || rc=$?
 check "ctest passes the reference (in process, plugin, --strict) and the known fault (exit $rc)" test $rc -eq 0
-check "ctest ran 4 certifications" grep -q "100% tests passed, 0 tests failed out of 4" "$tmp/pass.log"
+check "ctest ran 4 certifications" grep -Eq "Test +#[0-9]+: ref_strict \.+ +Passed" "$tmp/pass.log"
+check "ctest ran one test per clause" grep -Eq "Test +#[0-9]+: ref_conformance\.LAYER-NAME-1 \.+ +Passed" "$tmp/pass.log"
+check "all of them passed" grep -q "100% tests passed, 0 tests failed" "$tmp/pass.log"
 [ $rc -eq 0 ] || cat "$tmp/pass.log"
 check "ref_conformance wrote its report into the build tree" \
   bash -c "ls '$consumer'/vgc_reports/ref_conformance/reference/*/report.json >/dev/null"
 
 rc=0
-run_ctest "$tmp/fault.log" '^fault_conformance$' || rc=$?
+run_ctest "$tmp/fault.log" '^fault_conformance(\.|$)' || rc=$?
 check "ctest fails the fault plugin (VGC_FAULT=base-layer-destroyable)" test $rc -ne 0
-check "its output names LAYER-BASE-2" grep -q "fail *LAYER-BASE-2" "$tmp/fault.log"
-check "its output gives the verdict" grep -q ": not-conformant (" "$tmp/fault.log"
+check "its output names LAYER-BASE-2" grep -q "LAYER-BASE-2 (MUST): fail" "$tmp/fault.log"
+check "its output gives the verdict" grep -q "verdict of the run: not-conformant" "$tmp/fault.log"
+check "only LAYER-BASE-2's test fails" grep -q "1 tests failed" "$tmp/fault.log"
+rc=0
+run_ctest "$tmp/one.log" 'fault_conformance.LAYER-BASE-2' || rc=$?
+check "ctest -R one clause certifies first (the fixture) and fails that clause" \
+  grep -Eq "Test +#[0-9]+: fault_conformance \.+ +Passed" "$tmp/one.log"
 [ $rc -ne 0 ] && grep -q "LAYER-BASE-2" "$tmp/fault.log" || cat "$tmp/fault.log"
 
 rc=0
@@ -190,8 +197,8 @@ if build_example "$example" -DC_HOST_FAULT=UNROTATED_CHILDREN; then
   rc=0
   run_example_ctest "$example" "$tmp/c_host_fault.log" || rc=$?
   check "examples/c_host with C_HOST_FAULT=UNROTATED_CHILDREN: ctest fails" test $rc -ne 0
-  check "its output names BONE-DOWNSTREAM-1 failing" grep -q "fail *BONE-DOWNSTREAM-1" "$tmp/c_host_fault.log"
-  check "its output gives the verdict" grep -q ": not-conformant (" "$tmp/c_host_fault.log"
+  check "its output names BONE-DOWNSTREAM-1 failing" grep -q "BONE-DOWNSTREAM-1 (MUST): fail" "$tmp/c_host_fault.log"
+  check "its output gives the verdict" grep -q "verdict of the run: not-conformant" "$tmp/c_host_fault.log"
   # The replay line names the installed program by its path (it is not on
   # PATH here); run it as printed: it shows the failure again (exit 1).
   replay_line=$(grep -m1 "replay: " "$tmp/c_host_fault.log" | sed 's/^.*replay: //') || true

@@ -1,0 +1,196 @@
+// confirm_finding.cpp — see confirm_finding.h.
+#include "confirm_finding.h"
+
+#include <fmt/core.h>
+
+#include <algorithm>
+
+#include "cancel.h"
+#include "check_step.h"
+#include "command_text.h"
+
+namespace vgc {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+constexpr const char* kHistoryPrefix = "depends on the implementation's history";
+
+// Restarts the implementation and replays commands on it, within a budget
+// of attempts and time.
+class Reproducer {
+ public:
+  Reproducer(Implementation& sut, const Finding& sought, Clock::time_point deadline, int max_attempts)
+      : sut_(sut), sought_(sought), deadline_(deadline), max_attempts_(max_attempts) {}
+
+  bool spent() const { return attempts_ >= max_attempts_ || Clock::now() >= deadline_ || cancel_signal(); }
+  int attempts() const { return attempts_; }
+
+  // Whether `commands` from a fresh instance fail with the status sought;
+  // when they do, *commands is cut after the command that failed.
+  bool fails(std::vector<Command>* commands) {
+    if (spent()) return false;
+    ++attempts_;
+    const Answer a = sut_.restart();
+    if (a.status != CallStatus::Ok) return false;  // it cannot even start: nothing to learn here
+    const ReplayResult r = replay_program(Program{*commands, std::nullopt}, sut_);
+    if (!r.failure || !same_kind(*r.failure)) return false;
+    if (r.failed_at >= 0 && static_cast<std::size_t>(r.failed_at) + 1 < commands->size())
+      commands->resize(static_cast<std::size_t>(r.failed_at) + 1);
+    last_ = *r.failure;
+    return true;
+  }
+  const Finding& last_failure() const { return last_; }
+
+  // The same kind of call failure as the one sought: a crash, a timeout, or
+  // a protocol error, on whatever command.
+  bool same_kind(const Finding& f) const {
+    return f.status == sought_.status && is_call_failure(f) && (f.status != FindingStatus::Fail || f.clause == sought_.clause);
+  }
+
+  // Same clause and status as `f`, from its own program on a fresh instance.
+  bool reproduces(const PropertyFinding& f) {
+    ++attempts_;
+    if (sut_.restart().status != CallStatus::Ok) return false;
+    const ReplayResult r = replay_program(f.program, sut_);
+    return r.failure && r.failure->status == f.finding.status && r.failure->clause == f.finding.clause;
+  }
+
+ private:
+  Implementation& sut_;
+  Finding sought_;
+  Clock::time_point deadline_;
+  int max_attempts_;
+  int attempts_ = 0;
+  Finding last_;
+};
+
+std::vector<Command> flatten(const std::vector<std::vector<Command>>& cases) {
+  std::vector<Command> out;
+  for (const auto& c : cases) out.insert(out.end(), c.begin(), c.end());
+  return out;
+}
+
+// Drops whole cases (first to last) while what is left still fails.
+std::vector<std::vector<Command>> reduce_cases(std::vector<std::vector<Command>> cases, Reproducer* rep) {
+  for (std::size_t i = 0; i < cases.size() && cases.size() > 1 && !rep->spent();) {
+    auto fewer = cases;
+    fewer.erase(fewer.begin() + static_cast<std::ptrdiff_t>(i));
+    std::vector<Command> flat = flatten(fewer);
+    if (!flat.empty() && rep->fails(&flat)) cases = std::move(fewer);
+    else ++i;
+  }
+  return cases;
+}
+
+// Drops runs of commands, halving their length (ddmin's complements), while
+// what is left still fails.
+std::vector<Command> reduce_commands(std::vector<Command> commands, Reproducer* rep) {
+  for (std::size_t chunk = std::max<std::size_t>(1, commands.size() / 2); chunk >= 1 && !rep->spent(); chunk /= 2) {
+    for (std::size_t at = 0; at < commands.size() && commands.size() > 1 && !rep->spent();) {
+      std::vector<Command> fewer = commands;
+      fewer.erase(fewer.begin() + static_cast<std::ptrdiff_t>(at),
+                  fewer.begin() + static_cast<std::ptrdiff_t>(std::min(commands.size(), at + chunk)));
+      if (!fewer.empty() && rep->fails(&fewer)) commands = std::move(fewer);
+      else at += chunk;
+    }
+    if (chunk == 1) break;
+  }
+  return commands;
+}
+
+}  // namespace
+
+void HistoryRecorder::follow_instance() {
+  if (sut_.instance() == instance_) return;
+  instance_ = sut_.instance();
+  history_.clear();
+}
+
+Answer HistoryRecorder::reset() {
+  Answer a = sut_.reset();
+  follow_instance();
+  history_.emplace_back();
+  return a;
+}
+
+Answer HistoryRecorder::restart() {
+  Answer a = sut_.restart();
+  follow_instance();
+  history_.clear();
+  history_.emplace_back();
+  return a;
+}
+
+Answer HistoryRecorder::apply(const Command& c) {
+  follow_instance();
+  if (history_.empty()) history_.emplace_back();
+  history_.back().push_back(c);
+  return sut_.apply(c);
+}
+
+bool is_call_failure(const Finding& f) {
+  if (f.status == FindingStatus::Crash || f.status == FindingStatus::Timeout) return true;
+  return f.status == FindingStatus::Fail && f.clause == "ACCEPT-1" &&
+         f.message.rfind(call_status_name(CallStatus::ProtocolError), 0) == 0;
+}
+
+bool fails_fresh(Implementation& sut, const Finding& f, const Program& program) {
+  Reproducer rep(sut, f, Clock::now() + std::chrono::hours(1), 1);
+  std::vector<Command> commands = program.commands;
+  return rep.fails(&commands);
+}
+
+std::string call_failure_kind(const Finding& f) {
+  std::string_view m = f.message;
+  const std::string_view prefix = std::string_view(kHistoryPrefix);
+  if (m.substr(0, prefix.size()) == prefix) m.remove_prefix(std::min(m.size(), prefix.size() + 2));  // ": "
+  return std::string(m.substr(0, m.find(' ')));
+}
+
+bool depends_on_history(const Finding& f) {
+  return f.message.rfind(kHistoryPrefix, 0) == 0;
+}
+
+bool confirm_call_failure(Implementation& sut, PropertyFinding* pf, const std::vector<std::vector<Command>>& history,
+                          Clock::time_point deadline, int max_attempts) {
+  Reproducer rep(sut, pf->finding, deadline, max_attempts);
+  if (rep.reproduces(*pf)) return true;
+
+  const std::string blamed = pf->finding.clause;
+  const std::size_t shrunk = pf->program.commands.size();
+  std::vector<Command> whole = flatten(history);
+  const std::size_t since_start = whole.size();
+  std::string how;
+  std::vector<Command> reproducer = whole;
+  bool reproduced = rep.fails(&reproducer);
+  if (reproduced) {
+    std::vector<std::vector<Command>> cases = reduce_cases(history, &rep);
+    reproducer = flatten(cases);
+    rep.fails(&reproducer);  // cuts it after the failing command
+    reproducer = reduce_commands(reproducer, &rep);
+    how = fmt::format("the {} commands since the instance started, reduced (by cases, then commands; {} restarts{}) "
+                      "to these {}, fail a fresh instance the same way",
+                      since_start, rep.attempts(), rep.spent() ? ", stopped at the limit" : "", reproducer.size());
+  } else {
+    how = fmt::format("even the whole history since the instance started ({} commands) did not fail a fresh instance "
+                      "again: the failure could not be reproduced (flaky?); the program below is that history",
+                      since_start);
+  }
+  const CallStatus as = pf->finding.status == FindingStatus::Crash     ? CallStatus::Crash
+                        : pf->finding.status == FindingStatus::Timeout ? CallStatus::Timeout
+                                                                       : CallStatus::ProtocolError;  // ACCEPT-1
+  Finding f;
+  f.status = pf->finding.status;
+  f.clause = as == CallStatus::ProtocolError ? "ACCEPT-1" : "STABLE-1";
+  f.message = fmt::format(
+      "{}: {} after {} commands since the instance started, while applying a "
+      "command of {} (not blamed on it: the case it ended, {} commands from a fresh node, does not fail a fresh "
+      "instance); {}. As "
+      "seen: {}",
+      kHistoryPrefix, call_status_name(as), since_start, blamed, shrunk, how, pf->finding.message);
+  pf->finding = f;
+  pf->program = Program{reproducer, std::nullopt};
+  return false;
+}
+
+}  // namespace vgc

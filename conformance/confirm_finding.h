@@ -1,0 +1,88 @@
+// confirm_finding.h — a crash, a timeout or a protocol error is reported
+// against a clause only when its shrunk counterexample does it again on a
+// fresh instance of the implementation.
+//
+// Spec: STABLE-1 ("An implementation answers every call": it neither
+// crashes nor hangs on any command sequence) and ACCEPT-1 (answers within
+// the protocol); the clause catalog (clause.h).
+//
+// Rationale: an implementation that fails after so many commands since it
+// started (a leak, a counter) fails on whatever command happens to be
+// running then; blaming that command's clause is wrong, and the shrunk
+// "counterexample" replays as agreeing with the reference. So before such a
+// finding is reported, its program runs again on a new instance
+// (Implementation::restart). If it fails the same way, it stands as found.
+// If not, it is a finding that depends on the implementation's history: it
+// is reported on STABLE-1 (ACCEPT-1 for a protocol error), never on the
+// clause of the command that was running, and its program is the command
+// history since the instance started (HistoryRecorder), reduced by cases,
+// then by commands, to a sequence that fails a fresh instance the same way.
+// (ClusterFuzz likewise marks a crash it cannot reproduce as unreliable
+// instead of filing it.) The reduction is bounded in attempts and time; the
+// finding says how far it got.
+#pragma once
+
+#include <chrono>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "implementation.h"
+#include "runner.h"
+
+namespace vgc {
+
+// Forwards every call to the implementation and keeps the commands sent to
+// the instance running now since it started, one list per case (a case
+// starts at each reset()); a new instance (Implementation::instance())
+// starts a new history.
+class HistoryRecorder final : public Implementation {
+ public:
+  explicit HistoryRecorder(Implementation& sut) : sut_(sut), instance_(sut.instance()) {}
+  std::string name() const override { return sut_.name(); }
+  std::string identity() const override { return sut_.identity(); }
+  RouteLimits limits() const override { return sut_.limits(); }
+  Answer reset() override;
+  Answer restart() override;
+  std::uint64_t instance() const override { return sut_.instance(); }
+  Answer apply(const Command& c) override;
+  Document snapshot() override { return sut_.snapshot(); }
+  Document derived() override { return sut_.derived(); }
+  Document request(const std::string& line) override { return sut_.request(line); }
+
+  // The commands since the running instance started, case by case.
+  const std::vector<std::vector<Command>>& history() const { return history_; }
+
+ private:
+  void follow_instance();
+  Implementation& sut_;
+  std::uint64_t instance_;
+  std::vector<std::vector<Command>> history_;
+};
+
+// A crash, a timeout or a protocol error (a Fail of ACCEPT-1 whose message
+// starts "protocol-error"): what confirmation is for.
+bool is_call_failure(const Finding& f);
+
+// Whether `program` fails a fresh instance (restarted) with the same kind
+// of call failure as `f` (a crash, a timeout, a protocol error).
+bool fails_fresh(Implementation& sut, const Finding& f, const Program& program);
+
+// "crash", "timeout" or "protocol-error": the kind of call failure `f` is
+// (is_call_failure), or the kind a history-dependent finding is about.
+std::string call_failure_kind(const Finding& f);
+
+// Whether `f` is a finding that depends on the implementation's history
+// (confirm_call_failure made it).
+bool depends_on_history(const Finding& f);
+
+// Confirms the call failure `pf` (is_call_failure), found while
+// the instance had been sent `history` since it started (the failing case
+// last). Returns true when pf's program fails a fresh instance with the same
+// clause and status: pf is left as it is. Otherwise rewrites pf as a finding
+// that depends on the implementation's history (above) and returns false.
+// Stops reducing at `deadline` or after `max_attempts` restarts.
+bool confirm_call_failure(Implementation& sut, PropertyFinding* pf, const std::vector<std::vector<Command>>& history,
+                          std::chrono::steady_clock::time_point deadline, int max_attempts = 80);
+
+}  // namespace vgc

@@ -1,0 +1,45 @@
+#!/usr/bin/env bash
+# history_findings_test.sh VGC FAULT_PLUGIN — a crash is reported against a
+# clause only when its counterexample crashes a fresh instance (issue 19,
+# item 1). history_proxy.py in front of the reference crashes after every
+# 20 commands since it started, whatever they are: certify must report one
+# crash, on STABLE-1, "depends on the implementation's history", whose
+# counterexample crashes a fresh instance when replayed; no other clause
+# may carry a finding. (It used to blame the clause of whatever command was
+# running, several times, with counterexamples that replayed clean.) A
+# crash that does reproduce (the fault plugin's crash-on-self-parent, behind
+# the same proxy with no limit) is still reported on its own clause.
+set -uo pipefail
+[ $# -ge 2 ] || { echo "usage: $0 VGC FAULT_PLUGIN" >&2; exit 2; }
+vgc=$1 plugin=$2
+here=$(cd "$(dirname "$0")" && pwd)
+tmp=$(mktemp -d "${TMPDIR:-/tmp}/vgc_history.XXXXXX")
+trap 'rm -rf "$tmp"' EXIT
+cd "$tmp" || exit 2
+fail() { echo "history_findings: $*" >&2; exit 1; }
+
+impl="exec:$here/history_proxy.py $vgc crash 20"
+"$vgc" certify --quiet --cases 20 --clauses 'LAYER-*' --impl "$impl" --reports R >out 2>err
+rc=$?
+[ $rc = 1 ] || { cat out err >&2; fail "exit $rc, expected 1 (a STABLE-1 crash)"; }
+python3 - R/latest/report.json <<'PY' || { cat out >&2; fail "report.json is wrong (above)"; }
+import json, sys
+r = json.load(open(sys.argv[1]))
+found = {c["id"]: c for c in r["clauses"] if c.get("counterexample")}
+assert list(found) == ["STABLE-1"], "clauses with a finding: %s (expected only STABLE-1)" % sorted(found)
+f = found["STABLE-1"]
+assert f["status"] == "crash", f["status"]
+msg = f["message"]
+assert msg.startswith("depends on the implementation's history"), msg
+PY
+cex=R/latest/counterexamples/STABLE-1.vgc
+[ -s "$cex" ] || fail "no counterexample file for STABLE-1"
+"$vgc" replay "$cex" --impl "$impl" >replay.out 2>&1
+grep -q "crash" replay.out || { cat replay.out >&2; fail "the STABLE-1 counterexample does not crash a fresh instance"; }
+
+# A crash that reproduces stands on its own clause, as before.
+VGC_FAULT=crash-on-self-parent "$vgc" certify --quiet --cases 50 --clauses 'BONE-*' \
+  --impl "exec:$here/history_proxy.py $vgc crash 1000000 --impl plugin:$plugin" --reports S >out2 2>err2
+grep -q "crash *BONE-FOREST-1" out2 || { cat out2 err2 >&2; fail "the reproducible crash is not reported on BONE-FOREST-1"; }
+! grep -q "depends on the implementation's history" out2 || { cat out2 >&2; fail "a reproducible crash was called history-dependent"; }
+echo "history_findings: a history-dependent crash is one STABLE-1 finding with a reproducer; a reproducible one stands on its clause"

@@ -1,0 +1,56 @@
+#!/usr/bin/env python3
+"""history_proxy.py VGC MODE N [SERVE ARGS...] — an exec implementation that misbehaves
+after N commands since it started, whatever they were: a stand-in for a
+node with a leak or a counter (issue 19). It forwards every line to a child
+`VGC serve` (the reference) and relays the answers, counting the command
+lines it forwarded (requests starting with '?' are not counted). Once N
+commands have gone through, the next command gets, by MODE (SERVE ARGS,
+e.g. --impl plugin:PATH, go to `VGC serve`):
+
+  crash    the proxy exits 1 (its child is left to the suite to stop)
+  hang     no answer, ever (the proxy sleeps; the child stays alive)
+  garbage  the answer "what?" (a protocol error)
+
+A fresh start counts from 0 again, so a short sequence from a fresh
+instance never shows it. It also writes its pid and its child's pid to
+$HISTORY_PROXY_PIDS when that is set (one "proxy PID child PID" line per
+start), so a test can see whether they outlive the suite."""
+import os
+import subprocess
+import sys
+import time
+
+vgc, mode, limit = sys.argv[1], sys.argv[2], int(sys.argv[3])
+child = subprocess.Popen([vgc, "serve"] + sys.argv[4:], stdin=subprocess.PIPE, stdout=subprocess.PIPE, text=True, bufsize=1)
+if os.environ.get("HISTORY_PROXY_PIDS"):
+    with open(os.environ["HISTORY_PROXY_PIDS"], "a") as f:
+        f.write(f"proxy {os.getpid()} child {child.pid}\n")
+count = 0
+for line in sys.stdin:
+    if not line.startswith("?"):
+        if count >= limit:
+            if mode == "crash":
+                sys.exit(1)
+            if mode == "hang":
+                while True:
+                    time.sleep(60)
+            if mode == "garbage":
+                print("what?", flush=True)
+                continue
+        count += 1
+    child.stdin.write(line)
+    child.stdin.flush()
+    answer = child.stdout.readline()
+    if not answer:
+        sys.exit(3)
+    sys.stdout.write(answer)
+    # A document (?snapshot, ?derived, a capability request) runs to "end".
+    single = line.strip() in ("?hello", "?reset", "?quit") or not line.startswith("?")
+    while not single and not answer.startswith("error") and answer.strip() != "end":
+        answer = child.stdout.readline()
+        if not answer:
+            sys.exit(3)
+        sys.stdout.write(answer)
+    sys.stdout.flush()
+    if line.strip() == "?quit":
+        break
