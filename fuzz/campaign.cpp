@@ -551,9 +551,10 @@ int run_campaign(const CampaignOptions& o, CampaignSummary* out) {
   Progress p;
   const auto t0 = clock::now();
   const auto sys0 = fs::file_time_type::clock::now();
-  // libFuzzer is asked to stop at --time; it gets 5 s more to write its
-  // final stats, then its process group is killed.
-  const auto deadline = t0 + std::chrono::duration_cast<clock::duration>(std::chrono::duration<double>(o.time_s + 5));
+  // libFuzzer is asked to stop at --time; it gets 5 s (grace_s) more to
+  // write its final stats, then its process group is killed.
+  const double grace = o.grace_s > 0 ? o.grace_s : 5;
+  const auto deadline = t0 + std::chrono::duration_cast<clock::duration>(std::chrono::duration<double>(o.time_s + grace));
   auto last_print = t0 - std::chrono::seconds(60);
   std::vector<CampaignSample> samples;  // for report.html's plots
   const RunResult rr = run_streaming(argv, env_add, deadline, [&](const std::string& line) {
@@ -571,7 +572,7 @@ int run_campaign(const CampaignOptions& o, CampaignSummary* out) {
       last_print = now;
     }
   }, stop_now);
-  if (rr.killed) log << "vgc fuzz: still running " << o.time_s + 5 << " s after the start: process group killed\n";
+  if (rr.killed) log << "vgc fuzz: still running " << o.time_s + grace << " s after the start: process group killed\n";
   log.close();
   if (o.progress) o.progress("");
   s.libfuzzer_exit = rr.exit;
@@ -750,7 +751,7 @@ int run_campaign(const CampaignOptions& o, CampaignSummary* out) {
   s.exec_per_s_last = p.exec_s;
   s.cov = p.cov;
   s.ft = p.ft;
-  const double fuzz_wall = std::min(s.wall_s, o.time_s + 5);
+  const double fuzz_wall = std::min(s.wall_s, o.time_s + grace);
   s.exec_per_s_mean = fuzz_wall > 0 ? static_cast<double>(p.execs) / fuzz_wall : 0.0;
 
   const std::string json = summary_json(s), md = summary_markdown(s);

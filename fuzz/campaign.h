@@ -50,6 +50,10 @@ struct CampaignOptions {
   // Nothing on stdout and no start line on stderr (a soak runs several
   // campaigns at once and prints its own table); summary files as always.
   bool quiet = false;
+  // Seconds libFuzzer may run past time_s before its process group is
+  // killed (0: 5 s). In fork mode it checks the time only between jobs,
+  // and job k runs min(300, k) s, so the last job can overrun by that much.
+  double grace_s = 0;
   // Status while libFuzzer runs ("TARGET for T s: execs ... crashes N"),
   // called on every libFuzzer status line, and once with "" when it has
   // stopped. Unset: a plain line on stderr at most every 10 s (logs).

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <cmath>
 #include <cstdlib>
 #include <ctime>
 #include <filesystem>
@@ -103,6 +104,10 @@ SoakRow run_one(const SoakOptions& o, const std::string& name, const fs::path& s
   c.source_dir = src.string();
   c.vgc_binary = o.vgc_binary;
   c.quiet = true;
+  // Let the last fork-mode job end by itself (its inputs merged, its CPU
+  // time counted): libFuzzer's job k runs min(300, k) s, and after T s of
+  // jobs of 1, 2, 3, ... s the running one is about sqrt(2 T) s long.
+  c.grace_s = std::min(300.0, std::ceil(std::sqrt(2 * row.time_s))) + 10;
   c.progress = [](const std::string&) {};
   c.extra_corpora = {(src / "corpora" / "fuzz" / (row.target + "-crashes")).string(), work.string()};
   row.work_files_before = count_files(work);
@@ -118,9 +123,12 @@ SoakRow run_one(const SoakOptions& o, const std::string& name, const fs::path& s
   row.cov = s.cov;
   row.ft = s.ft;
   row.crash_inputs = s.crash_inputs;
+  row.killed = s.killed_at_deadline;
   row.findings = s.crashes.size();
   for (const CampaignCrash& k : s.crashes) row.signatures.push_back(k.signature);
+  const auto merge_start = std::chrono::steady_clock::now();
   row.merged = merge_into_work(fbuild / "fuzz" / row.target, name, work, s.run_dir, std::max(120.0, row.time_s));
+  row.merge_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - merge_start).count();
   row.work_files = count_files(work);
   return row;
 }
@@ -242,8 +250,8 @@ std::string soak_markdown(const SoakSummary& s) {
   std::string md = fmt::format("# vgc fuzz --all — {}\n\n`{}`\n\n{} targets, {} at a time, seed {}, {:.0f} s wall; "
                                "work corpus {}\n\n",
                                s.run, s.command, s.rows.size(), s.jobs, s.seed, s.wall_s, s.work_corpus);
-  md += "| target | time s | CPU s | executions | exec per CPU s | cov | ft | corpus: start → work corpus | findings |\n"
-        "|---|---:|---:|---:|---:|---:|---:|---|---|\n";
+  md += "| target | time s | CPU s | executions | exec per CPU s | cov | ft | corpus: start → work corpus | merge s | findings |\n"
+        "|---|---:|---:|---:|---:|---:|---:|---|---:|---|\n";
   double cpu = 0;
   long long execs = 0;
   std::size_t findings = 0;
@@ -257,15 +265,18 @@ std::string soak_markdown(const SoakSummary& s) {
     const std::string corpus =
         r.merged ? fmt::format("{} → {} (was {})", r.start_files, r.work_files, r.work_files_before)
                  : fmt::format("{} → not merged (see merge.log)", r.start_files);
-    md += fmt::format("| {} | {:.0f} | {:.0f} | {} | {} | {} | {} | {} | {} |\n", r.target, r.time_s, r.cpu_s,
+    md += fmt::format("| {} | {:.0f}{} | {:.0f} | {} | {} | {} | {} | {} | {:.0f} | {} |\n", r.target, r.time_s,
+                      r.killed ? "*" : "", r.cpu_s,
                       with_commas(r.executions),
                       r.cpu_s > 0 ? with_commas(static_cast<long long>(r.executions / r.cpu_s)) : std::string("-"),
-                      r.cov, r.ft, corpus, found);
+                      r.cov, r.ft, corpus, r.merge_s, found);
   }
-  md += fmt::format("| **total** | | {:.0f} | {} | | | | | {} |\n\n", cpu, with_commas(execs), findings);
+  md += fmt::format("| **total** | | {:.0f} | {} | | | | | | {} |\n\n", cpu, with_commas(execs), findings);
   md += "CPU s: user + system time of libFuzzer and its fork-mode job (kernel rusage). cov, ft: the last status "
         "line. Corpus: the inputs the target started from (committed corpus, fixed crashes, work corpus), and the "
-        "work corpus after the run's corpus was merged into it (libFuzzer -merge=1; before the merge in brackets).\n";
+        "work corpus after the run's corpus was merged into it (libFuzzer -merge=1; before the merge in brackets); merge s: "
+        "the merge's wall time. *: libFuzzer was still waiting for a fork-mode job 5 s after its time and was killed "
+        "(that job's CPU time and new inputs are lost; the figures are those of its last status line).\n";
   bool any = false;
   for (const SoakRow& r : s.rows) {
     if (r.findings == 0 && r.crash_inputs == 0) continue;
@@ -293,6 +304,8 @@ std::string soak_json(const SoakSummary& s) {
                     {"work_files_before", r.work_files_before},
                     {"work_files", r.work_files},
                     {"merged", r.merged},
+                    {"merge_s", r.merge_s},
+                    {"killed_at_deadline", r.killed},
                     {"findings", r.findings},
                     {"crash_inputs", r.crash_inputs},
                     {"signatures", r.signatures},

@@ -45,6 +45,8 @@ struct SoakRow {
   std::size_t work_files_before = 0;   // the work corpus before the merge
   std::size_t work_files = 0;          // and after it
   bool merged = false;                 // the merge ran to its end
+  double merge_s = 0;                  // its wall time (what corpus minimization costs)
+  bool killed = false;                 // libFuzzer overran its time (a fork-mode job still running) and was killed
   std::size_t findings = 0;            // unique crashes (signatures)
   std::size_t crash_inputs = 0;
   std::vector<std::string> signatures; // one per finding
