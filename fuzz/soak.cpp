@@ -275,7 +275,7 @@ std::string soak_markdown(const SoakSummary& s) {
   md += "CPU s: user + system time of libFuzzer and its fork-mode job (kernel rusage). cov, ft: the last status "
         "line. Corpus: the inputs the target started from (committed corpus, fixed crashes, work corpus), and the "
         "work corpus after the run's corpus was merged into it (libFuzzer -merge=1; before the merge in brackets); merge s: "
-        "the merge's wall time. *: libFuzzer was still waiting for a fork-mode job 5 s after its time and was killed "
+        "the merge's wall time. *: libFuzzer was still waiting for its last fork-mode job at the end of its grace and was killed "
         "(that job's CPU time and new inputs are lost; the figures are those of its last status line).\n";
   bool any = false;
   for (const SoakRow& r : s.rows) {
