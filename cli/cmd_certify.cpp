@@ -36,6 +36,7 @@ struct Options {
   int max_size = 50;
   double budget = 300;
   double timeout = 5;
+  std::string verse_bone_form = "auto";  // --verse-bone-form
   std::string clauses = "*";
   std::string baseline;
   std::string shard = "1/1";
@@ -113,6 +114,7 @@ std::string rerun_command(const Options& o) {
   if (!o.baseline.empty()) c += " --baseline " + shell_quote(o.baseline);
   if (o.strict) c += " --strict";
   if (o.timeout != 5) c += " --timeout " + fmt::format("{:g}", o.timeout);
+  if (o.verse_bone_form != "auto") c += " --verse-bone-form " + o.verse_bone_form;
   return c;
 }
 
@@ -150,11 +152,12 @@ int run(const Options& o) {
     }
     for (const auto& [id, why] : baseline.reasons) ro.tolerated.insert(id);
   }
-  auto sut = open_impl_or_report("certify", o.impl, o.timeout);
+  auto sut = open_impl_or_report("certify", o.impl, o.timeout, o.verse_bone_form);
   if (!sut) return 2;
 
   ReportContext ctx;
   ctx.implementation_spec = o.impl;
+  if (o.impl.rfind("verse:", 0) == 0) ctx.implementation_identity = sut->identity();  // host, release, bone form
   ctx.command_line = rerun_command(o);
   ctx.started = utc_now();
   if (!o.baseline.empty()) {
@@ -163,6 +166,7 @@ int run(const Options& o) {
   }
   fmt::print(stderr, "vgc certify: {} (seed {}, {} cases per property, budget {:g} s, shard {})\n", o.impl, o.seed,
              o.cases, o.budget, o.shard);
+  if (!ctx.implementation_identity.empty()) fmt::print(stderr, "vgc certify: {}\n", ctx.implementation_identity);
 
   ProgressLine line(!o.quiet);
   ro.progress = [&line](const RunProgress& p) {
@@ -255,6 +259,11 @@ void add(CLI::App& app, int* exit_code) {
   sub->add_option("--budget", o->budget, "Wall-time limit in seconds; a run cut short is 'incomplete' (exit 2)")
       ->capture_default_str();
   sub->add_option("--timeout", o->timeout, "Seconds an out-of-process implementation has per answer")
+      ->capture_default_str();
+  sub->add_option("--verse-bone-form", o->verse_bone_form,
+                  "verse: the bone_create form to speak: auto (the form the host answers a probe in), spec "
+                  "(Verse spec 2.6.3) or r6 (r6's last release; docs/verse_wire.md section 4)")
+      ->check(CLI::IsMember({"auto", "spec", "r6"}))
       ->capture_default_str();
   sub->add_option("--clauses", o->clauses, "Clause ids to check: comma-separated glob patterns")->capture_default_str();
   sub->add_option("--baseline", o->baseline, "File of known deviations: CLAUSE-ID reason, one per line");

@@ -34,6 +34,7 @@ struct Options {
   std::string file;
   std::string impl = "reference";
   double timeout = 5;
+  std::string verse_bone_form = "auto";  // --verse-bone-form
 };
 
 int run(const Options& o) {
@@ -53,7 +54,7 @@ int run(const Options& o) {
     fmt::print(stderr, "{}:{}:{}: error: {}\n", o.file, error.line, error.column, error.message);
     return 2;
   }
-  auto sut = open_impl_or_report("replay", o.impl, o.timeout);
+  auto sut = open_impl_or_report("replay", o.impl, o.timeout, o.verse_bone_form);
   if (!sut) return 2;
   register_oracle_checks();  // as certify: the oracles judge the capability checks
   const ReplayResult r = replay_program(program, *sut);
@@ -87,6 +88,11 @@ void add(CLI::App& app, int* exit_code) {
   sub->add_option("file", o->file, "Command file (a counterexample from reports/, or any command file)")->required();
   sub->add_option("--impl", o->impl, "reference | exec:CMD | plugin:PATH | verse:HOST[:PORT]")->capture_default_str();
   sub->add_option("--timeout", o->timeout, "Seconds an out-of-process implementation has per answer")
+      ->capture_default_str();
+  sub->add_option("--verse-bone-form", o->verse_bone_form,
+                  "verse: the bone_create form to speak: auto (the form the host answers a probe in), spec "
+                  "(Verse spec 2.6.3) or r6 (r6's last release; docs/verse_wire.md section 4)")
+      ->check(CLI::IsMember({"auto", "spec", "r6"}))
       ->capture_default_str();
   sub->callback([o, exit_code] { *exit_code = run(*o); });
 }

@@ -47,6 +47,7 @@ struct ServeOptions {
   std::string impl = "reference";
   bool done = false;  // answer every command "done" (verdict not reported)
   std::string verse;  // [ADDR:]PORT: serve as a Verse host instead
+  bool like_r6 = false;  // --like-r6: reuse node ids, read and send bone_create in r6's form, strictly
 };
 
 // The implementation behind one served Verse node: every answer is
@@ -79,6 +80,11 @@ extern "C" void on_stop_signal(int) { g_stop = true; }
 
 int run_verse(const ServeOptions& o) {
   verse::HostOptions h;
+  if (o.like_r6) {
+    h.reuse_node_ids = true;
+    h.bone_form = verse::BoneForm::R6;
+    h.strict_bone_form = true;
+  }
   std::string error;
   if (!verse::parse_listen_address(o.verse, &h.address, &h.port, &error)) {
     fmt::print(stderr, "vgc serve --verse: {}\n", error);
@@ -198,6 +204,10 @@ void add_serve(CLI::App& app, int* exit_code) {
   sub->add_option("--verse", opts->verse,
                   "Serve as a Verse r6 host on UDP [ADDR:]PORT (default address 127.0.0.1; PORT 0: any free "
                   "port); prints 'vgc-verse listening ADDR:PORT' (docs/verse_wire.md)");
+  sub->add_flag("--like-r6", opts->like_r6,
+                "With --verse: behave as the r6 host does where a client must cope (a destroyed node's id is "
+                "reused; bone_create in r6's form, a packet that does not decode losing its rest; "
+                "docs/verse_wire.md)");
   sub->callback([opts, exit_code] { *exit_code = run_serve(*opts); });
 }
 

@@ -20,7 +20,10 @@ struct ClientSession::Impl {
   std::uint32_t avatar = 0;
   std::unique_ptr<Channel> channel;
   std::deque<WireCommand> inbox;
-  std::set<std::uint32_t> nodes_returned;
+  std::set<std::uint32_t> live_mine;   // geometry nodes of this session the index says exist
+  std::deque<std::uint32_t> new_mine;  // node_creates (mine) of ids that were not live, in arrival order
+  bool index_subscribed = false;
+  std::uint8_t host_release = 0;
   std::uint64_t barriers = 0;
   Counters counters;
   std::string last_protocol_error;
@@ -48,6 +51,13 @@ struct ClientSession::Impl {
       if (!st.ok()) return st;
       if (done()) return {};
       const Clock::time_point now = Clock::now();
+      if (options.unacknowledged_limit_s > 0 && channel->oldest_unacknowledged() != Clock::time_point::max() &&
+          now - channel->oldest_unacknowledged() >
+              std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(options.unacknowledged_limit_s))) {
+        connected = false;
+        return Status::closed("the host has not acknowledged a packet for " +
+                              std::to_string(options.unacknowledged_limit_s) + " s: it no longer knows this session");
+      }
       const bool late = now >= deadline;  // then only what has already arrived is read
       Clock::time_point wake = std::min({deadline, channel->next_resend_due(), now + std::chrono::milliseconds(50)});
       const double wait = late ? 0.0 : std::chrono::duration<double>(wake - now).count();
@@ -75,17 +85,32 @@ struct ClientSession::Impl {
           connected = false;
           return Status::closed("the host ended the session: " + t->bye);
         }
+        track_index(c);
         inbox.push_back(std::move(c));
       }
     }
   }
 
-  Status send(const WireCommand& c) {
+  // The node index as it arrives (create_geometry_node).
+  void track_index(const WireCommand& c) {
+    if (const auto* n = std::get_if<wire::NodeCreate>(&c)) {
+      if (n->type == kNodeTypeGeometry && n->owner == kOwnerMine && live_mine.insert(n->node_id).second)
+        new_mine.push_back(n->node_id);
+    } else if (const auto* d = std::get_if<wire::NodeDestroy>(&c)) {
+      live_mine.erase(d->node_id);
+    }
+  }
+
+  Status send(const WireCommand& c, bool own_packet = false) {
     if (!connected) return Status::closed("not connected");
     std::string bytes;
-    Status st = encode_command(c, &bytes);
+    Status st = encode_command(c, &bytes, options.bone_form);
     if (!st.ok()) return st;
-    st = channel->queue(std::move(bytes));
+    st = channel->queue(std::move(bytes), own_packet);
+    // Our own destroy ends the id at once: r6 does not always tell us (its
+    // out-queue keeps one unsent command per address, so the node_create of
+    // a node that reuses the id replaces the node_destroy before it is sent).
+    if (const auto* d = std::get_if<wire::NodeDestroy>(&c)) live_mine.erase(d->node_id);
     if (!st.ok()) return st;
     return flush();
   }
@@ -147,6 +172,7 @@ Status ClientSession::connect(const std::string& host, std::uint16_t port, const
       continue;
     }
     if (const auto* c = std::get_if<login::Challenge>(&m)) {
+      s.host_release = c->version;
       if (c->version != kReleaseNumber) {
         s.socket.close();
         return Status::protocol_error("the host speaks Verse release " + std::to_string(c->version) + ", vgc speaks r" +
@@ -173,13 +199,16 @@ Status ClientSession::connect(const std::string& host, std::uint16_t port, const
       std::copy(clear.begin(), clear.end(), data_key.begin());
       s.avatar = a->avatar;
       s.channel = std::make_unique<Channel>(data_key, options.resend_interval_s);
+      s.channel->set_bone_form(options.bone_form, true);
       if (options.on_packet)
         s.channel->set_tap([f = options.on_packet](const std::uint8_t* d, std::size_t n) {
           f(std::string(reinterpret_cast<const char*>(d), n));
         });
       s.connected = true;
       s.inbox.clear();
-      s.nodes_returned.clear();
+      s.live_mine.clear();
+      s.new_mine.clear();
+      s.index_subscribed = false;
       return {};
     } else if (std::holds_alternative<login::Terminate>(m)) {
       s.socket.close();
@@ -191,31 +220,37 @@ Status ClientSession::connect(const std::string& host, std::uint16_t port, const
 bool ClientSession::connected() const { return impl_->connected; }
 std::uint32_t ClientSession::avatar() const { return impl_->avatar; }
 
+std::uint8_t ClientSession::host_release() const { return impl_->host_release; }
+BoneForm ClientSession::bone_form() const { return impl_->options.bone_form; }
+void ClientSession::set_bone_form(BoneForm form) {
+  impl_->options.bone_form = form;
+  if (impl_->channel) impl_->channel->set_bone_form(form, true);
+}
+
 Status ClientSession::create_geometry_node(std::uint32_t* node_id, double timeout_s) {
   Impl& s = *impl_;
   const Clock::time_point deadline = deadline_after(timeout_s);
-  std::set<std::uint32_t> before = s.nodes_returned;
-  Status st = s.send(wire::NodeIndexSubscribe{1u << kNodeTypeGeometry});
-  if (!st.ok()) return st;
+  // Every time, not once: a host may have lost the subscription (r6 runs
+  // whatever node_index_subscribe it decodes from the rest of a
+  // desynchronised packet). Its answer re-announces live nodes, which are
+  // not new.
+  {
+    Status st = s.send(wire::NodeIndexSubscribe{1u << kNodeTypeGeometry});
+    if (!st.ok()) return st;
+    s.index_subscribed = true;
+  }
+  // What the index announced before this request is not its answer; the
+  // host answers in order, so the new node's node_create comes after.
+  Status st = s.pump(Clock::now(), [] { return false; }, "nothing");  // reads what has already arrived
+  if (st.code == Status::Code::Closed || st.code == Status::Code::NetworkError) return st;
+  s.new_mine.clear();
   st = s.send(wire::NodeCreate{kAnyNodeId, kNodeTypeGeometry, kOwnerMine});
   if (!st.ok()) return st;
-  bool found = false;
-  st = s.pump(
-      deadline,
-      [&] {
-        for (const WireCommand& c : s.inbox) {
-          const auto* n = std::get_if<wire::NodeCreate>(&c);
-          if (n && n->type == kNodeTypeGeometry && n->owner == kOwnerMine && !before.count(n->node_id)) {
-            *node_id = n->node_id;
-            found = true;
-            return true;
-          }
-        }
-        return false;
-      },
-      "node_create for the new geometry node");
-  if (found) s.nodes_returned.insert(*node_id);
-  return st;
+  st = s.pump(deadline, [&] { return !s.new_mine.empty(); }, "node_create for the new geometry node");
+  if (!st.ok()) return st;
+  *node_id = s.new_mine.front();
+  s.new_mine.pop_front();
+  return {};
 }
 
 Status ClientSession::subscribe_node(std::uint32_t node_id) { return impl_->send(wire::NodeSubscribe{node_id}); }
@@ -226,7 +261,18 @@ Status ClientSession::subscribe_layer(std::uint32_t node_id, std::uint16_t layer
 Status ClientSession::send_geometry(std::uint32_t node_id, const vgc::Command& command) {
   return impl_->send(wire::Geometry{node_id, command});
 }
-Status ClientSession::send(const WireCommand& command) { return impl_->send(command); }
+Status ClientSession::send(const WireCommand& command, bool own_packet) { return impl_->send(command, own_packet); }
+Status ClientSession::send_burst(const std::vector<WireCommand>& commands) {
+  Impl& s = *impl_;
+  if (!s.connected) return Status::closed("not connected");
+  for (const WireCommand& c : commands) {
+    std::string bytes;
+    Status st = encode_command(c, &bytes, s.options.bone_form);
+    if (st.ok()) st = s.channel->queue(std::move(bytes));
+    if (!st.ok()) return st;
+  }
+  return s.flush();
+}
 
 Status ClientSession::receive(WireCommand* out, double timeout_s) {
   Impl& s = *impl_;
@@ -242,7 +288,7 @@ Status ClientSession::receive(WireCommand* out, double timeout_s) {
 Status ClientSession::barrier(std::uint32_t node_id, double timeout_s, std::vector<WireCommand>* before) {
   Impl& s = *impl_;
   const std::string token = "vgc-barrier-" + std::to_string(s.avatar) + "-" + std::to_string(++s.barriers);
-  Status st = s.send(wire::NodeNameSet{node_id, token});
+  Status st = s.send(wire::NodeNameSet{node_id, token}, true);
   if (!st.ok()) return st;
   std::size_t echo_at = 0;
   st = s.pump(
@@ -281,9 +327,17 @@ ClientSession::Counters ClientSession::counters() const {
     c.packets_sent = k.sent;
     c.resends = k.resends;
     c.naks_sent = k.naks_sent;
+    c.other_bone_form = k.other_bone_form;
   }
   return c;
 }
+double ClientSession::unacknowledged_for() const {
+  if (!impl_->channel) return 0;
+  const Clock::time_point t = impl_->channel->oldest_unacknowledged();
+  if (t == Clock::time_point::max()) return 0;
+  return std::chrono::duration<double>(Clock::now() - t).count();
+}
+
 const std::string& ClientSession::last_protocol_error() const { return impl_->last_protocol_error; }
 
 }  // namespace vgc::verse

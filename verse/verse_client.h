@@ -41,6 +41,14 @@ struct ClientOptions {
   std::string password = "vgc";   // at most 31 bytes
   double login_timeout_s = 5.0;   // whole login, all resends included
   double resend_interval_s = 0.25;  // a login stage or an unacknowledged packet is resent after this
+  // The bone_create form sent and first tried on what comes in; a packet
+  // that parses only in the other form is read in it and counted
+  // (Counters::other_bone_form). set_bone_form() changes it later.
+  BoneForm bone_form = BoneForm::Spec;
+  // > 0: a call that waits fails at once (Closed) when a packet has stayed
+  // unacknowledged this long (see unacknowledged_for()); 0: only its own
+  // time-out ends a wait.
+  double unacknowledged_limit_s = 0;
   // Called with every packet received from the host, clear (decrypted), the
   // login packets included: captures (the fuzz seeds of
   // corpora/fuzz/fuzz_verse_packet) and debugging. Null: nothing.
@@ -61,9 +69,20 @@ class ClientSession {
   bool connected() const;
   std::uint32_t avatar() const;  // the avatar node id the host gave at login
 
-  // node_index_subscribe(geometry) then node_create(geometry): waits up to
-  // timeout_s for the host's node_create of a new geometry node owned by
-  // this session and returns its id. Commands received meanwhile stay queued.
+  // The release number the host announced in its login challenge (6 for r6).
+  std::uint8_t host_release() const;
+  BoneForm bone_form() const;
+  void set_bone_form(BoneForm form);
+
+  // node_index_subscribe(geometry) then
+  // node_create(geometry): waits up to timeout_s for the host's node_create
+  // of a geometry node owned by this session that is not live, and returns
+  // its id. "Live" follows the index as it arrives: a node_create makes an
+  // id live, a node_destroy (received, or sent by this session: r6 may
+  // never send it back, see docs/verse_wire.md section 3) ends it; so an id the host reuses after a
+  // destroy (r6 vs_add_new_node takes the lowest free slot) is accepted,
+  // and an id announced again for a node that still exists is not.
+  // Commands received meanwhile stay queued.
   Status create_geometry_node(std::uint32_t* node_id, double timeout_s);
 
   // Queue and send at once (no waiting for anything to come back).
@@ -71,7 +90,12 @@ class ClientSession {
   Status unsubscribe_node(std::uint32_t node_id);
   Status subscribe_layer(std::uint32_t node_id, std::uint16_t layer_id, vgc::RealFormat format);
   Status send_geometry(std::uint32_t node_id, const vgc::Command& command);
-  Status send(const WireCommand& command);  // any other command (node_name_set, node_destroy, ...)
+  // Any other command (node_name_set, node_destroy, ...). own_packet: in a
+  // packet of its own (Channel::queue).
+  Status send(const WireCommand& command, bool own_packet = false);
+  // All of them queued, then sent together: in one packet when they fit
+  // (as r6's client sends a flush; tests of docs/verse_wire.md section 6).
+  Status send_burst(const std::vector<WireCommand>& commands);
 
   // The next decoded incoming command, waiting up to timeout_s (0: only
   // what has already arrived). Timeout when none came.
@@ -86,6 +110,13 @@ class ClientSession {
   // (docs/verse_wire.md section 6 says what this assumes).
   Status barrier(std::uint32_t node_id, double timeout_s, std::vector<WireCommand>* before);
 
+  // Seconds since the oldest packet the host has not acknowledged was first
+  // sent (0 when all are). A host acknowledges on receipt, so a packet
+  // unacknowledged for long means the host no longer knows this session
+  // (r6 forgets one silently after a connect_terminate). Reads nothing: call
+  // after receive() or barrier().
+  double unacknowledged_for() const;
+
   // connect_terminate, then closes the socket. Safe to call twice.
   void disconnect(const std::string& bye = "vgc done");
 
@@ -93,6 +124,7 @@ class ClientSession {
   struct Counters {
     std::size_t packets_sent = 0, packets_received = 0, resends = 0, naks_sent = 0;
     std::size_t protocol_errors = 0;  // packets (or parts) that did not parse; see last_protocol_error()
+    std::size_t other_bone_form = 0;  // packets that parsed only in the other bone_create form
   };
   Counters counters() const;
   const std::string& last_protocol_error() const;

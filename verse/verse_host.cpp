@@ -12,6 +12,7 @@
 #include <thread>
 
 #include "node.h"
+#include "packet_order.h"
 #include "snapshot.h"
 #include "snapshot_state.h"
 #include "wire_endpoint.h"
@@ -44,6 +45,7 @@ struct Session {
   std::unique_ptr<Channel> channel;
   Clock::time_point last_heard;
   bool index_geometry = false;
+  BoneForm bone_form = BoneForm::Spec;  // what it is sent in: the host's, until it sends the other one
   std::set<std::uint32_t> node_subs;
   std::map<std::pair<std::uint32_t, std::uint16_t>, RealFormat> layer_subs;
 };
@@ -112,7 +114,16 @@ struct Host::Impl {
 
   void send_to(Session& s, const WireCommand& c) {
     std::string bytes;
-    Status st = encode_command(c, &bytes);
+    Status st = encode_command(c, &bytes, s.bone_form);
+    if (st.code == Status::Code::ProtocolError && s.bone_form == BoneForm::R6) {
+      // A rotation r6's form cannot carry: the bone goes without it, as an r6 host would hold it.
+      if (const auto* g = std::get_if<wire::Geometry>(&c))
+        if (const auto* b = std::get_if<cmd::BoneCreate>(&g->command)) {
+          cmd::BoneCreate plain = *b;
+          plain.rot = {0, 0, 0, 1};
+          st = encode_command(wire::Geometry{g->node_id, plain}, &bytes, s.bone_form);
+        }
+    }
     if (st.ok()) st = s.channel->queue(std::move(bytes));
     if (!st.ok()) log("cannot send " + describe(c) + " to " + s.peer.to_string() + ": " + st.detail);
   }
@@ -125,7 +136,15 @@ struct Host::Impl {
     }
   }
 
-  std::uint32_t new_node_id() { return next_node_id++; }
+  std::uint32_t new_node_id() {
+    if (!options.reuse_node_ids) return next_node_id++;
+    std::set<std::uint32_t> used;  // r6: one table for avatars and nodes, the lowest free slot
+    for (const auto& [peer, s] : sessions) used.insert(s.avatar);
+    for (const auto& [id, g] : nodes) used.insert(id);
+    std::uint32_t id = 0;
+    while (used.count(id)) ++id;
+    return id;
+  }
 
   // --- login (docs/verse_wire.md section 2) ---------------------------------
   void on_login_packet(const PeerAddress& from, const std::uint8_t* data, std::size_t size, Clock::time_point now) {
@@ -186,6 +205,8 @@ struct Host::Impl {
         }
         s.connected = true;
         s.channel = std::make_unique<Channel>(s.data_key, options.resend_interval_s);
+        s.channel->set_bone_form(options.bone_form, !options.strict_bone_form);
+        s.bone_form = options.bone_form;
         ++counters.logins;
         log("login: " + from.to_string() + " as '" + name + "', avatar " + std::to_string(s.avatar));
       }
@@ -410,12 +431,19 @@ struct Host::Impl {
     Session& s = it->second;
     s.last_heard = now;
     std::vector<WireCommand> got;
+    const std::size_t other_before = s.channel->counters().other_bone_form;
     Status st = s.channel->on_datagram(data, bytes.size(), now, &got);
+    if (s.channel->counters().other_bone_form != other_before && s.bone_form == options.bone_form) {
+      s.bone_form = options.bone_form == BoneForm::Spec ? BoneForm::R6 : BoneForm::Spec;
+      log("session " + from.to_string() + " sends bone_create in the " + bone_form_name(s.bone_form) +
+          " form: it is answered in that form");
+    }
     if (!st.ok()) {
       ++counters.protocol_errors;
       log("protocol-error from " + from.to_string() + ": " + st.detail);
     }
     terminated = false;
+    order_packet(&got);  // one packet: creations before their uses (packet_order.h)
     for (WireCommand& c : got) {
       on_command(s, std::move(c));
       if (terminated) break;

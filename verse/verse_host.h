@@ -21,6 +21,7 @@
 #include <string>
 
 #include "command.h"
+#include "wire_commands.h"
 #include "wire_status.h"
 
 namespace vgc::verse {
@@ -48,6 +49,16 @@ struct HostOptions {
   // One line per event worth a person's eye (login, node created, protocol
   // error of a peer); null: silent.
   std::function<void(const std::string&)> log;
+  // r6 behaviours a client must survive (docs/verse_wire.md section 7):
+  // reuse_node_ids: a new node or avatar takes the lowest free id, so a
+  // destroyed node's id comes back (r6 vs_add_new_node); otherwise ids are
+  // never reused. bone_form: the bone_create form the host reads first and
+  // sends a session until that session sends the other form. strict_bone_form:
+  // as r6, a packet that does not parse in bone_form loses everything from
+  // the command that did not decode (no second reading in the other form).
+  bool reuse_node_ids = false;
+  BoneForm bone_form = BoneForm::Spec;
+  bool strict_bone_form = false;
   double session_timeout_s = 30.0;     // a session silent this long is dropped (r6: 30 s)
   double resend_interval_s = 0.25;
 };

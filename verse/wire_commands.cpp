@@ -2,6 +2,7 @@
 // docs/verse_wire.md sections 3 and 4 (from r6 v_cmd_def_s.c, v_cmd_def_g.c).
 #include "wire_commands.h"
 
+#include <array>
 #include <cfloat>
 #include <cstring>
 #include <type_traits>
@@ -42,7 +43,32 @@ Status check_geometry_strings(const vgc::Command& c) {
       c);
 }
 
-void encode_geometry(std::uint32_t node, const vgc::Command& c, PackWriter& w) {
+bool is_identity_rotation(const std::array<double, 4>& r) {
+  static const std::array<double, 4> kIdentity{0, 0, 0, 1};
+  return std::memcmp(r.data(), kIdentity.data(), sizeof kIdentity) == 0;  // bits: -0.0 is not carried either
+}
+
+// bone_create and its destroy alias in r6's form (v_gen_pack_g_node.c
+// verse_send_g_bone_create / verse_send_g_bone_destroy).
+void encode_bone_r6(const vgc::Command& c, PackWriter& w) {
+  if (const auto* b = std::get_if<cmd::BoneCreate>(&c)) {
+    w.u16(b->bone_id); w.string(b->weight); w.string(b->reference); w.u16(b->parent);
+    for (double v : b->pos) w.f64(v);
+    w.string(b->pos_label); w.string(b->rot_label); w.string("");
+  } else if (const auto* d = std::get_if<cmd::BoneDestroy>(&c)) {
+    w.u16(d->bone_id); w.string(""); w.string(""); w.u16(0xFFFF);
+    for (int i = 0; i < 3; ++i) w.f64(DBL_MAX);
+    w.string(""); w.string(""); w.string("");
+  }
+}
+
+void encode_geometry(std::uint32_t node, const vgc::Command& c, PackWriter& w, BoneForm bones) {
+  if (bones == BoneForm::R6 && geometry_command_number(c) == 64) {
+    w.u8(64);
+    w.u32(node);
+    encode_bone_r6(c, w);
+    return;
+  }
   w.u8(geometry_command_number(c));
   w.u32(node);
   std::visit(
@@ -133,7 +159,7 @@ bool is_flt_max(float v) { return v == FLT_MAX; }
 bool is_dbl_max(double v) { return v == DBL_MAX; }
 
 // Decodes fields after the node id of geometry command `number`.
-bool decode_geometry_fields(std::uint8_t number, FieldReader& f, vgc::Command* out) {
+bool decode_geometry_fields(std::uint8_t number, FieldReader& f, vgc::Command* out, BoneForm bones) {
   switch (number) {
     case 48: {
       cmd::LayerCreate c;
@@ -257,6 +283,18 @@ bool decode_geometry_fields(std::uint8_t number, FieldReader& f, vgc::Command* o
     }
     case 64: {
       cmd::BoneCreate c;
+      if (bones == BoneForm::R6) {
+        std::string scale_label;
+        if (!(f.u16(&c.bone_id, "bone_id") && f.str(&c.weight, "weight") && f.str(&c.reference, "reference") &&
+              f.u16(&c.parent, "parent") && f.f64(&c.pos[0], "pos_x") && f.f64(&c.pos[1], "pos_y") &&
+              f.f64(&c.pos[2], "pos_z") && f.str(&c.pos_label, "position_label") &&
+              f.str(&c.rot_label, "rotation_label") && f.str(&scale_label, "scale_label")))
+          return false;
+        c.rot = {0, 0, 0, 1};
+        if (c.weight.empty()) *out = cmd::BoneDestroy{c.bone_id};
+        else *out = c;
+        return true;
+      }
       if (!(f.u16(&c.bone_id, "bone_id") && f.str(&c.weight, "weight") && f.str(&c.reference, "reference") &&
             f.u16(&c.parent, "parent") && f.f64(&c.pos[0], "pos_x") && f.f64(&c.pos[1], "pos_y") &&
             f.f64(&c.pos[2], "pos_z") && f.str(&c.pos_label, "pos_label") && f.f64(&c.rot[0], "rot_x") &&
@@ -283,6 +321,8 @@ const char* geometry_wire_name(std::uint8_t number) {
 }
 
 }  // namespace
+
+const char* bone_form_name(BoneForm f) { return f == BoneForm::R6 ? "r6" : "spec"; }
 
 std::uint8_t geometry_command_number(const vgc::Command& c) {
   return std::visit(
@@ -349,7 +389,7 @@ std::string describe(const WireCommand& c) {
       c);
 }
 
-Status encode_command(const WireCommand& c, std::string* out) {
+Status encode_command(const WireCommand& c, std::string* out, BoneForm bones) {
   std::string bytes;
   PackWriter w(&bytes);
   Status st = std::visit(
@@ -383,8 +423,13 @@ Status encode_command(const WireCommand& c, std::string* out) {
         } else {
           Status s = check_geometry_strings(v.command);
           if (!s.ok()) return s;
+          if (const auto* b = std::get_if<cmd::BoneCreate>(&v.command);
+              b && bones == BoneForm::R6 && !b->weight.empty() && !is_identity_rotation(b->rot))
+            return Status::protocol_error(
+                "cannot encode a bone rotation: r6's bone_create carries position, rotation and scale labels, "
+                "no rotation value (only the identity 0 0 0 1 goes as no rotation)");
           bytes.clear();
-          encode_geometry(v.node_id, v.command, w);
+          encode_geometry(v.node_id, v.command, w, bones);
         }
         return {};
       },
@@ -394,7 +439,8 @@ Status encode_command(const WireCommand& c, std::string* out) {
   return {};
 }
 
-Status decode_command(const std::uint8_t* data, std::size_t size, std::size_t* used, WireCommand* out) {
+Status decode_command(const std::uint8_t* data, std::size_t size, std::size_t* used, WireCommand* out,
+                      BoneForm bones) {
   if (size == 0) return Status::protocol_error("empty command");
   const std::uint8_t number = data[0];
   FieldReader f{PackReader(data + 1, size - 1), "?"};
@@ -457,7 +503,7 @@ Status decode_command(const std::uint8_t* data, std::size_t size, std::size_t* u
   if (number >= kCmdGeometryFirst && number <= kCmdGeometryLast) {
     f.command = geometry_wire_name(number);
     wire::Geometry g;
-    if (!f.u32(&g.node_id, "node_id") || !decode_geometry_fields(number, f, &g.command)) return f.status(1);
+    if (!f.u32(&g.node_id, "node_id") || !decode_geometry_fields(number, f, &g.command, bones)) return f.status(1);
     return done(std::move(g));
   }
   return Status::protocol_error("unknown command number " + std::to_string(number));

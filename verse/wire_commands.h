@@ -27,6 +27,17 @@
 
 namespace vgc::verse {
 
+// The two forms of bone_create (64) on the wire (docs/verse_wire.md section
+// 4). Spec: Verse spec 2.6.3's bone (position, position curve, rotation
+// quaternion, rotation curve), the form the suite's commands carry. R6: the
+// form of r6's last release (v_cmd_def_g.c: position, then position,
+// rotation and scale labels, no rotation value), the form every r6 host and
+// r6's client library speak. In the R6 form a decoded bone has the identity
+// rotation (0, 0, 0, 1) and its rotation label as rot_label (the scale label
+// is dropped); a bone whose rotation is not the identity cannot be encoded.
+enum class BoneForm : std::uint8_t { Spec, R6 };
+const char* bone_form_name(BoneForm f);  // "spec" / "r6"
+
 // Command numbers (the first byte of each command inside a packet).
 inline constexpr std::uint8_t kCmdConnect = 0;           // login stages, not in data packets
 inline constexpr std::uint8_t kCmdConnectAccept = 1;     // login stage, not in data packets
@@ -95,14 +106,16 @@ std::string describe(const WireCommand& c);
 
 // Appends the command's bytes (number, then fields) to *out. Fails
 // (ProtocolError, *out unchanged) only for what the wire cannot carry: a
-// string with a NUL inside or longer than kMaxWireString.
-Status encode_command(const WireCommand& c, std::string* out);
+// string with a NUL inside or longer than kMaxWireString, a bone rotation in
+// the R6 form.
+Status encode_command(const WireCommand& c, std::string* out, BoneForm bones = BoneForm::Spec);
 
 // Decodes one command from data[0..size): on success *used is its length
 // (number byte included). An unknown command number, a truncated field or a
 // string without its NUL within the bytes is a ProtocolError naming the
 // command and the field.
-Status decode_command(const std::uint8_t* data, std::size_t size, std::size_t* used, WireCommand* out);
+Status decode_command(const std::uint8_t* data, std::size_t size, std::size_t* used, WireCommand* out,
+                      BoneForm bones = BoneForm::Spec);
 
 // The value decode_command(encode_command(c)) gives: the alias form where
 // the fields meet an alias condition (LayerCreate with an empty name ->

@@ -126,12 +126,12 @@ std::uint32_t Channel::take_id() {
   return id;
 }
 
-Status Channel::queue(std::string encoded_command) {
+Status Channel::queue(std::string encoded_command, bool own_packet) {
   // Room for the id and a few acks in front.
   if (encoded_command.size() > kMaxSendPacketBytes - 4 - 5 * 8)
     return Status::protocol_error("command of " + std::to_string(encoded_command.size()) +
                                   " bytes does not fit in one packet");
-  queue_.push_back(std::move(encoded_command));
+  queue_.push_back(Queued{std::move(encoded_command), own_packet});
   return {};
 }
 
@@ -139,6 +139,12 @@ Clock::time_point Channel::next_resend_due() const {
   Clock::time_point due = Clock::time_point::max();
   for (const auto& [id, s] : history_) due = std::min(due, s.sent_at + resend_interval_);
   return due;
+}
+
+Clock::time_point Channel::oldest_unacknowledged() const {
+  Clock::time_point t = Clock::time_point::max();
+  for (const auto& [id, s] : history_) t = std::min(t, s.first_sent);
+  return t;
 }
 
 std::vector<std::string> Channel::take_datagrams(Clock::time_point now) {
@@ -153,6 +159,7 @@ std::vector<std::string> Channel::take_datagrams(Clock::time_point now) {
   }
   while (!ack_nak_.empty() || (!queue_.empty() && history_bytes_ < kWindowBytes)) {
     std::string acks, commands;
+    std::vector<std::string> parts;
     std::size_t used = 4;
     while (!ack_nak_.empty() && used + 5 <= kMaxSendPacketBytes) {
       (void)encode_command(ack_nak_.front(), &acks);
@@ -160,10 +167,14 @@ std::vector<std::string> Channel::take_datagrams(Clock::time_point now) {
       used += 5;
     }
     while (!queue_.empty() && history_bytes_ + commands.size() < kWindowBytes &&
-           used + queue_.front().size() <= kMaxSendPacketBytes) {
-      used += queue_.front().size();
-      commands += queue_.front();
+           used + queue_.front().bytes.size() <= kMaxSendPacketBytes) {
+      const bool alone = queue_.front().own_packet;
+      if (alone && !commands.empty()) break;  // it starts the next packet
+      used += queue_.front().bytes.size();
+      commands += queue_.front().bytes;
+      parts.push_back(std::move(queue_.front().bytes));
       queue_.pop_front();
+      if (alone) break;
     }
     if (acks.empty() && commands.empty()) break;  // the window is full
     const std::uint32_t id = take_id();
@@ -173,7 +184,7 @@ std::vector<std::string> Channel::take_datagrams(Clock::time_point now) {
     ++counters_.sent;
     if (!commands.empty()) {  // ack-only packets are neither acknowledged nor resent
       history_bytes_ += commands.size();
-      history_[id] = Sent{std::move(commands), std::move(datagram), now};
+      history_[id] = Sent{std::move(parts), std::move(commands), std::move(datagram), now, now};
     }
   }
   return out;
@@ -191,9 +202,10 @@ Status Channel::on_datagram(const std::uint8_t* data, std::size_t size, Clock::t
   xor_packet(clear, size, key_);
   if (tap_) tap_(clear, size);
   Packet p;
-  Status st = parse_packet(clear, size, &p);
+  Status st = parse_packet(clear, size, &p, bone_form_, either_bone_form_);
   last_heard_ = now;
   ++counters_.received;
+  if (p.other_bone_form) ++counters_.other_bone_form;
   bool has_commands = false;
   for (const WireCommand& c : p.commands) {
     if (const auto* a = std::get_if<wire::PacketAck>(&c)) {
@@ -206,19 +218,9 @@ Status Channel::on_datagram(const std::uint8_t* data, std::size_t size, Clock::t
       auto it = history_.find(n->packet_id);
       if (it != history_.end()) {  // its commands go out again, first, in a new packet
         history_bytes_ -= it->second.commands.size();
-        std::vector<std::string> again;
-        const std::string& bytes = it->second.commands;
-        std::size_t pos = 0;
-        while (pos < bytes.size()) {
-          WireCommand dummy;
-          std::size_t used = 0;
-          if (!decode_command(reinterpret_cast<const std::uint8_t*>(bytes.data()) + pos, bytes.size() - pos, &used,
-                              &dummy)
-                   .ok())
-            break;  // cannot happen: we encoded them
-          again.push_back(bytes.substr(pos, used));
-          pos += used;
-        }
+        std::vector<Queued> again;
+        const bool alone = it->second.parts.size() == 1;  // a packet of one (a barrier) stays one
+        for (std::string& part : it->second.parts) again.push_back(Queued{std::move(part), alone});
         history_.erase(it);
         for (auto r = again.rbegin(); r != again.rend(); ++r) queue_.push_front(*r);
       }

@@ -76,8 +76,17 @@ class Channel {
   Channel(const DataKey& key, double resend_interval_s);
 
   // Queues one encoded command (encode_command output). ProtocolError when
-  // it cannot fit in one packet.
-  Status queue(std::string encoded_command);
+  // it cannot fit in one packet. own_packet: it goes in a packet of its own
+  // (acks may go in front), so a peer that drops the rest of a packet after
+  // a command it cannot decode (r6 v_fs_unpack) cannot drop it with that.
+  Status queue(std::string encoded_command, bool own_packet = false);
+  // The bone_create form packets are read in (wire_commands.h), and whether
+  // a packet that parses only in the other form is taken in it
+  // (parse_packet's either_bone_form; counted in other_bone_form).
+  void set_bone_form(BoneForm form, bool either) {
+    bone_form_ = form;
+    either_bone_form_ = either;
+  }
   // The datagrams to send now, encrypted: pending acks and naks, queued
   // commands (within the window) and resends of packets unacknowledged for
   // the resend interval (same id, same bytes).
@@ -94,18 +103,27 @@ class Channel {
 
   bool all_acknowledged() const { return history_.empty() && queue_.empty(); }
   Clock::time_point next_resend_due() const;  // max() when nothing is unacknowledged
+  // When the oldest packet still unacknowledged was first sent; max() when none.
+  Clock::time_point oldest_unacknowledged() const;
   Clock::time_point last_heard() const { return last_heard_; }
 
   struct Counters {
     std::size_t sent = 0, received = 0, resends = 0, naks_sent = 0, duplicates = 0;
+    std::size_t other_bone_form = 0;  // packets parsed in the other bone_create form
   };
   const Counters& counters() const { return counters_; }
 
  private:
+  struct Queued {
+    std::string bytes;  // one encoded command
+    bool own_packet = false;
+  };
   struct Sent {
-    std::string commands;  // encoded commands, clear
+    std::vector<std::string> parts;  // its encoded commands, clear, one by one (a nak queues them again)
+    std::string commands;  // the same, back to back
     std::string datagram;  // as sent, encrypted
     Clock::time_point sent_at;
+    Clock::time_point first_sent;
   };
   std::uint32_t take_id();
 
@@ -113,13 +131,15 @@ class Channel {
   Clock::duration resend_interval_;
   std::uint32_t next_out_id_ = kFirstDataPacketId;
   std::uint32_t expected_in_id_ = kFirstDataPacketId;
-  std::deque<std::string> queue_;
+  std::deque<Queued> queue_;
   std::map<std::uint32_t, Sent> history_;
   std::size_t history_bytes_ = 0;
   std::vector<WireCommand> ack_nak_;  // to send
   Clock::time_point last_heard_;
   Counters counters_;
   std::function<void(const std::uint8_t*, std::size_t)> tap_;
+  BoneForm bone_form_ = BoneForm::Spec;
+  bool either_bone_form_ = false;
 };
 
 }  // namespace vgc::verse

@@ -22,8 +22,11 @@ void PackWriter::f32(float v) {
 void PackWriter::f64(double v) {
   std::uint64_t bits;
   std::memcpy(&bits, &v, 8);
-  u32(static_cast<std::uint32_t>(bits >> 32));
+  // r6 (v_pack.c vnp_raw_pack_real64) packs the two 32-bit halves of the
+  // double in memory order; on the little-endian machines r6 runs on that is
+  // the low half first (docs/verse_wire.md section 1).
   u32(static_cast<std::uint32_t>(bits));
+  u32(static_cast<std::uint32_t>(bits >> 32));
 }
 void PackWriter::bytes(const std::uint8_t* data, std::size_t n) {
   out_->append(reinterpret_cast<const char*>(data), n);
@@ -60,8 +63,8 @@ bool PackReader::f32(float* v) {
 bool PackReader::f64(double* v) {
   if (remaining() < 8) return false;
   std::uint32_t hi = 0, lo = 0;
+  u32(&lo);  // low half first, as f64() writes it
   u32(&hi);
-  u32(&lo);
   const std::uint64_t bits = (std::uint64_t{hi} << 32) | lo;
   std::memcpy(v, &bits, 8);
   return true;

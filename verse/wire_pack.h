@@ -1,7 +1,8 @@
 // wire_pack.h — big-endian packing of the Verse r6 field types, with bounds.
 //
 // Spec: docs/verse_wire.md section 1 ("Field encodings": integers
-// big-endian, reals as their IEEE-754 bits big-endian, strings NUL-ended).
+// big-endian, a real32 as its IEEE-754 bits big-endian, a real64 as its low
+// then its high 32 bits, each big-endian, strings NUL-ended).
 //
 // Rationale: PackWriter appends to a std::string; PackReader reads from a
 // byte range and every read returns false (and reads nothing) when the
@@ -23,7 +24,7 @@ class PackWriter {
   void u16(std::uint16_t v);
   void u32(std::uint32_t v);
   void f32(float v);   // the float's bits as a u32
-  void f64(double v);  // the double's bits as a u64
+  void f64(double v);  // the double's low 32 bits, then its high 32 bits, each big-endian (r6 on little-endian)
   void bytes(const std::uint8_t* data, std::size_t n);
   // The string's bytes then a NUL. Precondition: no NUL inside (callers check).
   void string(const std::string& s);

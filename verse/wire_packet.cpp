@@ -5,7 +5,16 @@
 
 namespace vgc::verse {
 
-Status parse_packet(const std::uint8_t* data, std::size_t size, Packet* out) {
+namespace {
+
+bool has_bone_command(const std::uint8_t* data, std::size_t size, std::size_t from) {
+  for (std::size_t i = from; i < size; ++i)
+    if (data[i] == 64) return true;  // a cheap over-approximation: only then is a second pass worth it
+  return false;
+}
+
+// One pass in one bone_create form.
+Status parse_packet_in(const std::uint8_t* data, std::size_t size, Packet* out, BoneForm bones) {
   out->commands.clear();
   PackReader r(data, size);
   if (!r.u32(&out->id))
@@ -18,13 +27,27 @@ Status parse_packet(const std::uint8_t* data, std::size_t size, Packet* out) {
   while (pos < size) {
     WireCommand c;
     std::size_t used = 0;
-    Status st = decode_command(data + pos, size - pos, &used, &c);
+    Status st = decode_command(data + pos, size - pos, &used, &c, bones);
     if (!st.ok())
       return Status::protocol_error("packet " + std::to_string(out->id) + ", command at byte " + std::to_string(pos) +
                                     ": " + st.detail);
     out->commands.push_back(std::move(c));
     pos += used;
   }
+  return {};
+}
+
+}  // namespace
+
+Status parse_packet(const std::uint8_t* data, std::size_t size, Packet* out, BoneForm bones, bool either_bone_form) {
+  Status st = parse_packet_in(data, size, out, bones);
+  out->other_bone_form = false;
+  if (st.ok() || !either_bone_form || size > kMaxPacketBytes || !has_bone_command(data, size, 4)) return st;
+  Packet other;
+  const BoneForm flip = bones == BoneForm::Spec ? BoneForm::R6 : BoneForm::Spec;
+  if (!parse_packet_in(data, size, &other, flip).ok()) return st;
+  *out = std::move(other);
+  out->other_bone_form = true;
   return {};
 }
 

@@ -33,10 +33,19 @@ using DataKey = std::array<std::uint8_t, kDataKeyBytes>;
 struct Packet {
   std::uint32_t id = 0;
   std::vector<WireCommand> commands;
+  // Parsed in the other bone_create form than the one asked for (see
+  // parse_packet's either_bone_form).
+  bool other_bone_form = false;
 };
 
-// Parses a decrypted data packet (id, then commands to the end).
-Status parse_packet(const std::uint8_t* data, std::size_t size, Packet* out);
+// Parses a decrypted data packet (id, then commands to the end), reading
+// bone_create in form `bones`. With either_bone_form, a packet that does not
+// parse in that form but parses to its end in the other one is taken in the
+// other one (other_bone_form set): a peer of another release desynchronises
+// nothing (docs/verse_wire.md section 4). Without it, as r6 does, a packet
+// that does not parse keeps the commands before the bad one.
+Status parse_packet(const std::uint8_t* data, std::size_t size, Packet* out, BoneForm bones = BoneForm::Spec,
+                    bool either_bone_form = false);
 
 // Builds a packet from already encoded commands (encode_command output).
 std::string build_packet(std::uint32_t id, const std::string& encoded_commands);

@@ -120,6 +120,9 @@ struct OpenOptions {
   // Longest answer line or document accepted from an out-of-process
   // implementation; a longer one is a ProtocolError (bounds our memory).
   std::size_t max_answer_bytes = std::size_t{64} << 20;
+  // verse: the bone_create form to speak (docs/verse_wire.md section 4):
+  // "auto" (the form the host answers a probe in), "spec" or "r6".
+  std::string verse_bone_form = "auto";
 };
 
 // Opens "reference", "exec:CMD" or "plugin:PATH". Returns nullptr and sets

@@ -16,6 +16,16 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
+// While waiting for a round trip: how often the driver's session is
+// checked, and how long a packet may stay unacknowledged on loopback-speed
+// hosts before the session counts as dropped (a host acks on receipt).
+constexpr double kSessionCheckSeconds = 0.1;
+constexpr double kDeadSessionSeconds = 1.0;
+// reset()'s node_create on a session in use: a host that acknowledges but
+// does not answer (r6 after running a node_index_subscribe decoded from
+// garbage) gets a fresh login after this, not the whole --timeout.
+constexpr double kFirstCreateSeconds = 1.0;
+
 double seconds_left(Clock::time_point deadline) {
   return std::max(0.0, std::chrono::duration<double>(deadline - Clock::now()).count());
 }
@@ -89,7 +99,44 @@ RouteLimits verse_route_limits() {
 
 VerseImplementation::VerseImplementation(const std::string& spec, const std::string& login_name,
                                          const std::string& host, std::uint16_t port, const OpenOptions& options)
-    : spec_(spec), login_(login_name), host_(host), port_(port), options_(options) {}
+    : spec_(spec), login_(login_name), host_(host), port_(port), options_(options) {
+  if (options.verse_bone_form == "spec" || options.verse_bone_form == "r6") {
+    bone_form_ = options.verse_bone_form == "r6" ? verse::BoneForm::R6 : verse::BoneForm::Spec;
+    bone_form_known_ = true;
+    bone_form_why_ = "as --verse-bone-form " + options.verse_bone_form + " asks";
+  }
+}
+
+void VerseImplementation::use_bone_form(verse::BoneForm f) {
+  bone_form_ = f;
+  if (driver_) driver_->set_bone_form(f);
+  if (observer_) observer_->set_bone_form(f);
+}
+
+Answer VerseImplementation::probe_bone_form() {
+  // The weight layer a bone needs (BONE-WEIGHT-1), then the bone with the
+  // identity rotation: a host of r6's form reads the rotation's first two
+  // (zero) bytes as empty rotation and scale labels, then stops at the next
+  // zero byte (command 0 does not decode there), so nothing else is run.
+  use_bone_form(verse::BoneForm::Spec);
+  cmd::LayerCreate layer{2, "vgc_probe_w", static_cast<std::uint8_t>(LayerType::VertexUint32), 0, 0};
+  cmd::BoneCreate bone{0xFFFF, "vgc_probe_w", "", 0xFFFF, {0, 0, 0}, "", {0, 0, 0, 1}, ""};
+  const std::size_t other_before = observer_->counters().other_bone_form;
+  for (const Command& c : {Command(layer), Command(bone)}) {
+    if (const verse::Status st = driver_->send(verse::wire::Geometry{node_, c}, true); !st.ok())
+      return failed(call_status_of(st), "probing the host's bone_create form: " + st.to_string());
+  }
+  Answer a = settle("probing the host's bone_create form");
+  if (a.status != CallStatus::Ok) return a;
+  const bool r6 = observer_->counters().other_bone_form != other_before;
+  const bool bone_seen = !mirror_.bones().empty();
+  use_bone_form(r6 ? verse::BoneForm::R6 : verse::BoneForm::Spec);
+  bone_form_known_ = true;
+  bone_form_why_ = r6 ? "the host answered a spec-form probe in r6's form"
+                      : bone_seen ? "the host answered a spec-form probe in the spec's form"
+                                  : "the host did not answer a bone_create probe; the spec's form by default";
+  return make_node();  // a fresh node again
+}
 
 VerseImplementation::~VerseImplementation() {
   if (driver_ && have_node_ && !broken_) {
@@ -101,7 +148,22 @@ VerseImplementation::~VerseImplementation() {
   if (driver_) driver_->disconnect();
 }
 
-std::string VerseImplementation::identity() const { return identity_.empty() ? spec_ : identity_; }
+RouteLimits VerseImplementation::limits() const {
+  RouteLimits l = verse_route_limits();
+  if (bone_form_known_ && bone_form_ == verse::BoneForm::R6)
+    l.clauses["BONE-VALUE-1"] =
+        "in r6's form of bone_create (the host's; docs/verse_wire.md section 4) a bone carries no rotation, so a "
+        "non-finite or zero rotation cannot be sent";
+  return l;
+}
+
+std::string VerseImplementation::identity() const {
+  std::string id = identity_.empty() ? spec_ : identity_;
+  if (bone_form_known_)
+    id += "; bone_create in the " + std::string(bone_form_ == verse::BoneForm::R6 ? "r6 form" : "spec 2.6.3 form") +
+          " (" + bone_form_why_ + ")";
+  return id;
+}
 
 Answer VerseImplementation::failed(CallStatus s, const std::string& detail) {
   broken_ = true;
@@ -115,17 +177,31 @@ Answer VerseImplementation::connect() {
   if (!silent_since_.empty())
     return failed(CallStatus::Timeout, "the Verse host stopped answering (" + silent_since_ +
                                            "); vgc does not wait for it again in this run");
-  if (observer_) observer_->disconnect();
+  // Only the driver's session was dropped (the host forgot it: section 7 of
+  // docs/adapters.md): the observer stays, after a round trip on the old
+  // node that takes in everything still under way for it; a login costs a
+  // second on r6.
+  const bool keep_observer = driver_lost_ && observer_ && observer_->connected() && [&] {
+    std::vector<verse::WireCommand> stale;
+    return observer_->barrier(node_, std::min(kDeadSessionSeconds, options_.timeout_seconds), &stale).ok();
+  }();
+  driver_lost_ = false;
+  if (observer_ && !keep_observer) observer_->disconnect();
   if (driver_) driver_->disconnect();
   driver_ = std::make_unique<verse::ClientSession>();
-  observer_ = std::make_unique<verse::ClientSession>();
-  have_node_ = false;
+  if (!keep_observer) {
+    observer_ = std::make_unique<verse::ClientSession>();
+    have_node_ = false;  // the old node is left to the host
+  }  // else make_node() destroys the old node, if it still has one, through the new driver
   verse::ClientOptions o;
   o.name = login_;
   if (const char* pw = std::getenv("VERSE_PASSWORD")) o.password = pw;
   o.login_timeout_s = options_.timeout_seconds;
+  o.bone_form = bone_form_;
+  o.unacknowledged_limit_s = std::min(kDeadSessionSeconds, options_.timeout_seconds);
   const std::string where = host_ + ":" + std::to_string(port_);
   for (auto* session : {driver_.get(), observer_.get()}) {
+    if (session == observer_.get() && keep_observer) continue;
     const verse::Status st = session->connect(host_, port_, o);
     // A host that answered before and no longer answers a login has gone
     // silent: waiting for it again at every test case would only turn a
@@ -136,13 +212,13 @@ Answer VerseImplementation::connect() {
       return failed(call_status_of(st), "logging in to the Verse host at " + where + " as \"" + login_ +
                                             "\": " + st.to_string());
   }
-  identity_ = "Verse host at " + where;
+  identity_ = "Verse host at " + where + " (release " + std::to_string(driver_->host_release()) + ")";
   broken_ = false;
   ever_connected_ = true;
   return {};
 }
 
-Answer VerseImplementation::make_node() {
+Answer VerseImplementation::make_node(double create_timeout_s) {
   if (have_node_) {
     verse::wire::NodeDestroy destroy;
     destroy.node_id = node_;
@@ -151,7 +227,8 @@ Answer VerseImplementation::make_node() {
     have_node_ = false;
   }
   std::uint32_t id = 0;
-  if (const verse::Status st = driver_->create_geometry_node(&id, options_.timeout_seconds); !st.ok())
+  const double wait = create_timeout_s > 0 ? std::min(create_timeout_s, options_.timeout_seconds) : options_.timeout_seconds;
+  if (const verse::Status st = driver_->create_geometry_node(&id, wait); !st.ok())
     return failed(call_status_of(st), "creating a geometry node (node_create): " + st.to_string());
   node_ = id;
   have_node_ = true;
@@ -164,12 +241,21 @@ Answer VerseImplementation::make_node() {
 Answer VerseImplementation::start() {
   Answer a = connect();
   if (a.status != CallStatus::Ok) return a;
-  return make_node();
+  a = make_node();
+  if (a.status != CallStatus::Ok || bone_form_known_) return a;
+  return probe_bone_form();
 }
 
 Answer VerseImplementation::reset() {
   if (broken_ || !driver_ || !driver_->connected() || !observer_->connected()) return start();
-  return make_node();
+  Answer a = make_node(kFirstCreateSeconds);
+  if (a.status == CallStatus::Crash && !driver_->connected() && observer_->connected()) driver_lost_ = true;
+  // A host may end a session without a word (r6 runs a connect_terminate
+  // it decoded from the rest of a desynchronised packet and forgets the
+  // session): then nothing it is sent is answered. One fresh login tells
+  // that apart from a host that no longer answers at all.
+  if ((a.status == CallStatus::Timeout || a.status == CallStatus::Crash) && silent_since_.empty()) a = start();
+  return a;
 }
 
 void VerseImplementation::drain_driver() {
@@ -207,7 +293,21 @@ Answer VerseImplementation::settle(const std::string& what) {
     return failed(call_status_of(st), what + ": sending the round-trip node_name_set: " + st.to_string());
   for (;;) {
     verse::WireCommand w;
-    const verse::Status st = observer_->receive(&w, seconds_left(deadline));
+    const double left = seconds_left(deadline);
+    const verse::Status st = observer_->receive(&w, std::min(left, kSessionCheckSeconds));
+    if (st.code == verse::Status::Code::Timeout && left > kSessionCheckSeconds) {
+      drain_driver();  // reads the host's acks of the driver's packets
+      if (driver_->unacknowledged_for() > kDeadSessionSeconds) {
+        Answer lost = failed(CallStatus::Crash,
+                      what + ": the host has not acknowledged the driver's packets for " +
+                          std::to_string(kDeadSessionSeconds) +
+                          " s: it dropped the session (r6 does so silently when the rest of a packet it could not "
+                          "decode reads as connect_terminate)");
+        driver_lost_ = true;
+        return lost;
+      }
+      continue;
+    }
     if (!st.ok()) {
       if (st.code == verse::Status::Code::Timeout)
         return failed(CallStatus::Timeout,
@@ -257,7 +357,7 @@ Answer VerseImplementation::apply(const Command& c) {
     g.node_id = node_;
     g.command = c;
     std::string bytes;
-    if (const verse::Status st = verse::encode_command(g, &bytes); !st.ok()) {
+    if (const verse::Status st = verse::encode_command(g, &bytes, bone_form_); !st.ok()) {
       Answer a;
       a.not_sent = true;
       a.verdict_reported = false;

@@ -39,6 +39,7 @@
 
 #include "implementation.h"
 #include "verse_node_mirror.h"
+#include "wire_commands.h"
 
 namespace vgc {
 
@@ -71,17 +72,23 @@ class VerseImplementation final : public Implementation {
   Answer apply(const Command& c) override;
   Document snapshot() override;
   Document derived() override;
-  RouteLimits limits() const override { return verse_route_limits(); }
+  RouteLimits limits() const override;
 
  private:
   Answer connect();
-  Answer make_node();
+  Answer make_node(double create_timeout_s = 0);  // 0: the call time-out
   // Sends node_name_set(node, "vgc-barrier-<n>") on the driver and applies
   // what the observer receives until that echo; then, while the host
   // announced new layers, subscribes the observer to them and waits for the
   // observer's own barrier (their contents come before its echo).
   Answer settle(const std::string& what);
   Answer failed(CallStatus s, const std::string& detail);
+  // --verse-bone-form auto: on the fresh node, a bone_create in the spec's
+  // form (after the weight layer it needs); the host's broadcast of the bone
+  // parses in the form the host speaks (Channel's other_bone_form). Sets
+  // bone_form_ and leaves a fresh node.
+  Answer probe_bone_form();
+  void use_bone_form(verse::BoneForm f);
   void drain_driver();
 
   std::string spec_, login_, host_;
@@ -91,10 +98,14 @@ class VerseImplementation final : public Implementation {
   std::uint32_t node_ = 0;
   bool have_node_ = false;
   bool broken_ = true;  // reset() must log in again
+  bool driver_lost_ = false;  // only the driver's session is gone: connect() keeps the observer
   std::uint64_t barrier_count_ = 0;
   bool ever_connected_ = false;
   std::string silent_since_;  // set when a host that answered before no longer answers a login
   VerseNodeMirror mirror_;
+  verse::BoneForm bone_form_ = verse::BoneForm::Spec;
+  bool bone_form_known_ = false;  // given as an option, or probed
+  std::string bone_form_why_;     // for identity(): how the form was chosen
   std::string identity_;
 };
 

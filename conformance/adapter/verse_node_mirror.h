@@ -48,6 +48,9 @@ class VerseNodeMirror {
   std::string snapshot() const;
 
   const std::map<std::uint16_t, Layer>& layers() const { return layers_; }
+  const CreaseSetting& vertex_crease() const { return vertex_crease_; }
+  const CreaseSetting& edge_crease() const { return edge_crease_; }
+  const std::map<std::uint16_t, Bone>& bones() const { return bones_; }
 
  private:
   bool new_element(bool vertex_stack, std::uint32_t id, std::string* error);

@@ -22,6 +22,9 @@ namespace vgc {
 
 struct ReportContext {
   std::string implementation_spec;  // "reference", "exec:...", "plugin:..." as given
+  // What the implementation says it is (Implementation::identity()): for
+  // verse: the host, its release and the bone_create form used. Empty: none.
+  std::string implementation_identity;
   std::string command_line;         // the certify command that re-runs this run
   std::string started;              // UTC, ISO 8601
   std::string run_dir;              // where the run's files end up (final path)

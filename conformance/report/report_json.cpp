@@ -14,6 +14,7 @@ std::string render_report_json(const RunResult& run, const Verdict& v, const Rep
   json j;
   j["vgc_report_version"] = 2;  // 2: exercised counts, unchecked, findings per property, command lines
   j["implementation"] = ctx.implementation_spec;
+  if (!ctx.implementation_identity.empty()) j["implementation_identity"] = ctx.implementation_identity;
   j["implementation_name"] = run.implementation;
   j["verdict"] = v.name;
   j["exit_code"] = v.exit_code;

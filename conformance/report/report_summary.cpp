@@ -29,6 +29,8 @@ std::string render_summary(const RunResult& run, const Verdict& v, const ReportC
                      "Unchecked: {}.\n\n",
                      v.new_failures.size(), v.known_failures.size(), v.profile_differences.size(),
                      v.should_failures.size(), v.unchecked.size());
+  if (!ctx.implementation_identity.empty() && ctx.implementation_identity != ctx.implementation_spec)
+    out += "Implementation: " + ctx.implementation_identity + "\n\n";
   out += "Re-run exactly: `" + ctx.command_line + "`\n\n";
   if (!run.route.empty()) {
     std::string ids;

@@ -190,6 +190,26 @@ TEST(VerseRoute, TheServedReferenceIsConformantOverTheWire) {
   EXPECT_EQ(judge(run, nullptr).name, "conformant");
 }
 
+// A host that plays r6 (vgc serve --verse --like-r6): ids reused after a
+// destroy, bone_create in r6's form. The default --verse-bone-form auto
+// finds the form, says so, and the run finishes with nothing left
+// unchecked for a time-out or the budget.
+TEST(VerseRoute, AHostLikeR6IsCertifiedToTheEndInItsBoneForm) {
+  ServedHost host({"--like-r6"}, {});
+  ASSERT_NE(host.port(), 0) << "no port in \"" << host.line() << "\"";
+  auto sut = open_verse(host);
+  ASSERT_NE(sut, nullptr);
+  EXPECT_NE(sut->identity().find("bone_create in the r6 form"), std::string::npos) << sut->identity();
+  const RunResult run = run_certification(*sut, options(30));
+  for (const ClauseOutcome& co : run.clauses) {
+    EXPECT_NE(co.status, "unchecked") << co.clause->id << ": " << co.note;
+    EXPECT_NE(co.status, "timeout") << co.clause->id << ": " << (co.finding ? co.finding->message : co.note);
+    EXPECT_NE(co.status, "crash") << co.clause->id << ": " << (co.finding ? co.finding->message : co.note);
+    if (co.clause->id == "BONE-CREATE-1" || co.clause->id == "BONE-DESTROY-1" || co.clause->id == "BONE-NAME-1")
+      EXPECT_EQ(co.status, "pass") << co.clause->id << ": " << (co.finding ? co.finding->message : co.note);
+  }
+}
+
 TEST(VerseRoute, ASeededFaultInTheServedNodeIsNamedWithItsClause) {
   ServedHost host({"--impl", std::string("plugin:") + VGC_FAULT_PLUGIN}, {"VGC_FAULT=polygon-delete-ignored"});
   ASSERT_NE(host.port(), 0) << "no port in \"" << host.line() << "\"";

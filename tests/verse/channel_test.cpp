@@ -113,4 +113,22 @@ TEST(VerseChannel, TheWindowHoldsBackCommandsUntilAcks) {
 }
 
 }  // namespace
+TEST(VerseChannel, ACommandQueuedForAPacketOfItsOwnGetsOne) {
+  const DataKey key = make_data_key();
+  Channel a(key, 0.25);
+  const auto t0 = Clock::now();
+  ASSERT_TRUE(a.queue(cmd_bytes(1)).ok());
+  ASSERT_TRUE(a.queue(cmd_bytes(2)).ok());
+  ASSERT_TRUE(a.queue(cmd_bytes(3), true).ok());
+  ASSERT_TRUE(a.queue(cmd_bytes(4)).ok());
+  const auto datagrams = a.take_datagrams(t0);
+  ASSERT_EQ(datagrams.size(), 3u);  // {1, 2}, {3}, {4}
+  Channel b(key, 0.25);
+  std::vector<WireCommand> got;
+  ASSERT_TRUE(b.on_datagram(reinterpret_cast<const std::uint8_t*>(datagrams[1].data()), datagrams[1].size(), t0, &got)
+                  .ok());
+  ASSERT_EQ(got.size(), 1u);
+  EXPECT_EQ(node_of(got[0]), 3u);
+}
+
 }  // namespace vgc::verse

@@ -152,6 +152,99 @@ TEST(VerseSession, CreateSubscribeSendAndSeeTheHostBroadcast) {
   b.s.disconnect();
 }
 
+// vgc's host playing the r6 behaviours the client must survive
+// (HostOptions; docs/verse_wire.md sections 3 and 4).
+HostOptions like_r6() {
+  HostOptions o;
+  o.reuse_node_ids = true;
+  o.bone_form = BoneForm::R6;
+  o.strict_bone_form = true;
+  return o;
+}
+
+TEST(VerseSession, ANodeIdTheHostReusesAfterADestroyIsAccepted) {
+  RunningHost h(like_r6());
+  Client a;
+  a.connect(h);
+  std::uint32_t first = 0, second = 0;
+  Status st = a.s.create_geometry_node(&first, kWait);
+  ASSERT_TRUE(st.ok()) << st.to_string();
+  ASSERT_TRUE(a.s.send(wire::NodeDestroy{first}).ok());
+  st = a.s.create_geometry_node(&second, kWait);
+  ASSERT_TRUE(st.ok()) << st.to_string();
+  EXPECT_EQ(second, first) << "the host gave the lowest free id, the destroyed node's";
+  // A node that still exists is not taken for a new one when announced again.
+  std::uint32_t third = 0;
+  st = a.s.create_geometry_node(&third, kWait);
+  ASSERT_TRUE(st.ok()) << st.to_string();
+  EXPECT_NE(third, second);
+}
+
+TEST(VerseSession, BoneCreateInR6sFormAndTheBarrierAfterOneTheHostCannotDecode) {
+  RunningHost h(like_r6());
+  Client a;
+  a.connect(h);
+  ASSERT_TRUE(a.s.create_geometry_node(&a.node, kWait).ok());
+  ASSERT_TRUE(a.s.subscribe_node(a.node).ok());
+  ASSERT_TRUE(a.s.send_geometry(a.node, cmd::LayerCreate{2, "w", 1, 0, 0}).ok());
+  a.barrier();
+  // The spec's form: this host reads it in r6's, as r6 does: the bone's
+  // labels come from the rotation's bytes, and the rest of that packet does
+  // not decode and is dropped. The barrier, in a packet of its own, still
+  // comes back, and the host's answer (r6's form) is read in that form.
+  const cmd::BoneCreate bone{0, "w", "", 0xFFFF, {1, 2, 3}, "p", {0, 0, 0, 1}, "r"};
+  ASSERT_TRUE(a.s.send_geometry(a.node, bone).ok());
+  auto seen = a.barrier();
+  ASSERT_EQ(geometry_of<cmd::BoneCreate>(seen).size(), 1u);
+  EXPECT_EQ(geometry_of<cmd::BoneCreate>(seen)[0].rot_label, "") << "not the \"r\" sent: misread";
+  EXPECT_EQ(a.s.counters().other_bone_form, 1u);
+  // r6's form: stored, and sent back in r6's form, which the client reads.
+  a.s.set_bone_form(BoneForm::R6);
+  ASSERT_TRUE(a.s.send_geometry(a.node, bone).ok());
+  seen = a.barrier();
+  const auto bones = geometry_of<cmd::BoneCreate>(seen);
+  ASSERT_EQ(bones.size(), 1u);
+  EXPECT_EQ(bones[0].pos, (std::array<double, 3>{1, 2, 3}));
+  EXPECT_EQ(bones[0].pos_label, "p");
+  EXPECT_EQ(bones[0].rot_label, "r");
+  EXPECT_EQ(a.s.counters().other_bone_form, 1u) << "no more packets in the other form";
+}
+
+// Issue 18 / docs/verse_wire.md section 6: r6's client sends one flush in
+// the hash order of the commands' addresses, e.g. the triangle before its
+// vertices. vgc's host applies a packet's layer commands, then vertex
+// commands, then polygon commands, so the triangle is kept.
+TEST(VerseSession, ABurstInR6sOrderKeepsTheTriangle) {
+  RunningHost h;
+  Client a;
+  a.connect(h);
+  ASSERT_TRUE(a.s.create_geometry_node(&a.node, kWait).ok());
+  ASSERT_TRUE(a.s.subscribe_node(a.node).ok());
+  ASSERT_TRUE(a.s.subscribe_layer(a.node, 0, RealFormat::Real32).ok());
+  ASSERT_TRUE(a.s.subscribe_layer(a.node, 1, RealFormat::Real32).ok());
+  (void)a.barrier();
+  auto g = [&](const Command& c) { return WireCommand{wire::Geometry{a.node, c}}; };
+  // The order r6's client sent this burst in (tests/verse/r6_fixtures/r6_host.txt, step burst).
+  ASSERT_TRUE(a.s.send_burst({g(cmd::LayerCreate{0xFFFF, "burst", 1, 0, 0}),
+                              g(cmd::PolygonSetCornerUint32{1, 5, {10, 11, 12, 0xFFFFFFFFu}}),
+                              g(cmd::VertexSetXyzReal32{0, 10, 5, 5, 5}),
+                              g(cmd::VertexSetXyzReal32{0, 11, 6, 5, 5}),
+                              g(cmd::VertexSetXyzReal32{0, 12, 5, 6, 5})})
+                  .ok());
+  auto seen = a.barrier();
+  EXPECT_EQ(geometry_of<cmd::VertexSetXyzReal32>(seen).size(), 3u);
+  EXPECT_EQ(geometry_of<cmd::LayerCreate>(seen).size(), 1u);
+  auto polys = geometry_of<cmd::PolygonSetCornerUint32>(seen);
+  ASSERT_EQ(polys.size(), 1u) << "the triangle sent before its vertices in one packet was dropped";
+  EXPECT_EQ(polys[0].v, (std::array<std::uint32_t, 4>{10, 11, 12, 0xFFFFFFFFu}));
+  // Two commands of one address keep their order: set then delete leaves no vertex.
+  ASSERT_TRUE(a.s.send_burst({g(cmd::VertexSetXyzReal32{0, 20, 1, 1, 1}), g(cmd::VertexDelete{20})}).ok());
+  seen = a.barrier();
+  auto deletes = geometry_of<cmd::VertexDelete>(seen);
+  ASSERT_EQ(deletes.size(), 1u);
+  EXPECT_EQ(deletes[0].vertex_id, 20u);
+}
+
 TEST(VerseSession, ASeededFaultOfTheServedNodeShowsOnTheWire) {
   std::vector<int> faults;
   std::string error;

@@ -78,10 +78,23 @@ TEST(VerseCodec, EveryGeometryCommandAndAliasRoundTrips) {
 }
 
 TEST(VerseCodec, BytesFollowTheR6Layout) {
-  // g_layer_create: 48, node u32, layer u16, name + NUL, type u8, def_uint u32, def_real f64 (big-endian).
+  // g_layer_create: 48, node u32, layer u16, name + NUL, type u8, def_uint u32, def_real f64. A real64
+  // goes as r6 on a little-endian machine packs it (docs/verse_wire.md section 1): its low 32 bits first,
+  // then its high 32 bits, each big-endian. 0.5 is 0x3FE0000000000000.
   std::string b;
   ASSERT_TRUE(encode_command(wire::Geometry{9, cmd::LayerCreate{2, "ab", 1, 7, 0.5}}, &b).ok());
-  EXPECT_EQ(hex(b), "30" "00000009" "0002" "616200" "01" "00000007" "3fe0000000000000");
+  EXPECT_EQ(hex(b), "30" "00000009" "0002" "616200" "01" "00000007" "00000000" "3fe00000");
+  // -4.0 (0xC010000000000000) in g_vertex_set_xyz_real64, as the r6 host sent it in the issue 18 run;
+  // read high word first it was 1.5920149086e-314.
+  b.clear();
+  ASSERT_TRUE(encode_command(wire::Geometry{77, cmd::VertexSetXyzReal64{0, 0, -4, -4, -4}}, &b).ok());
+  EXPECT_EQ(hex(b), "33" "0000004d" "0000" "00000000" "00000000c0100000" "00000000c0100000" "00000000c0100000");
+  {
+    const Command back = decode_one(b);
+    const auto* v = std::get_if<cmd::VertexSetXyzReal64>(&back);
+    ASSERT_NE(v, nullptr);
+    EXPECT_EQ(v->x, -4.0);
+  }
   // g_vertex_delete_real32 as r6 sends it: 50, layer 0, FLT_MAX three times.
   b.clear();
   ASSERT_TRUE(encode_command(wire::Geometry{1, cmd::VertexDelete{7}}, &b).ok());
@@ -133,6 +146,51 @@ RC_GTEST_PROP(VerseCodec, AnyCommandRoundTripsToItsCanonicalForm, (const Command
   RC_ASSERT(decode_command(reinterpret_cast<const std::uint8_t*>(bytes.data()) + 6, bytes.size() - 6, &used, &w).ok());
   RC_ASSERT(used == bytes.size() - 6);
   RC_ASSERT(bit_equal(std::get<wire::Geometry>(w).command, wire_canonical(c)));
+}
+
+// bone_create in r6's form (r6 v_gen_pack_g_node.c verse_send_g_bone_create):
+// node, bone_id, weight, reference, parent, pos x y z, then position,
+// rotation and scale labels; bone_destroy as r6 sends it.
+TEST(VerseCodec, BoneCreateInR6sFormHasR6sBytes) {
+  cmd::BoneCreate b{2, "w", "", 0xFFFF, {1, 0, 0}, "p", {0, 0, 0, 1}, "r"};
+  std::string bytes;
+  ASSERT_TRUE(encode_command(wire::Geometry{5, b}, &bytes, BoneForm::R6).ok());
+  EXPECT_EQ(hex(bytes), "40" "00000005" "0002" "7700" "00" "ffff" "000000003ff00000" "0000000000000000"
+                        "0000000000000000" "7000" "7200" "00");
+  std::size_t used = 0;
+  WireCommand w;
+  ASSERT_TRUE(decode_command(reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size(), &used, &w,
+                             BoneForm::R6).ok());
+  EXPECT_EQ(used, bytes.size());
+  EXPECT_TRUE(bit_equal(std::get<wire::Geometry>(w).command, Command(b)));
+  // The same bytes read in the spec's form run out (the rotation is missing).
+  EXPECT_FALSE(decode_command(reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size(), &used, &w).ok());
+  bytes.clear();
+  ASSERT_TRUE(encode_command(wire::Geometry{5, cmd::BoneDestroy{2}}, &bytes, BoneForm::R6).ok());
+  EXPECT_EQ(hex(bytes), "40" "00000005" "0002" "00" "00" "ffff" "ffffffff7fefffff" "ffffffff7fefffff"
+                        "ffffffff7fefffff" "00" "00" "00");
+  // A rotation r6's form cannot carry is refused, nothing written.
+  bytes.clear();
+  b.rot = {0, 1, 0, 0};
+  EXPECT_EQ(encode_command(wire::Geometry{5, b}, &bytes, BoneForm::R6).code, Status::Code::ProtocolError);
+  EXPECT_TRUE(bytes.empty());
+}
+
+TEST(VersePacket, APacketInTheOtherBoneFormIsReadInItWhenAsked) {
+  std::string cmds;
+  ASSERT_TRUE(encode_command(wire::Geometry{5, cmd::BoneCreate{2, "w", "", 0xFFFF, {1, 0, 0}, "p", {0, 0, 0, 1}, "r"}},
+                             &cmds, BoneForm::R6).ok());
+  ASSERT_TRUE(encode_command(wire::NodeNameSet{5, "vgc-barrier-1"}, &cmds).ok());
+  const std::string bytes = build_packet(3, cmds);
+  Packet p;
+  const auto* d = reinterpret_cast<const std::uint8_t*>(bytes.data());
+  EXPECT_EQ(parse_packet(d, bytes.size(), &p).code, Status::Code::ProtocolError);  // r6's own behaviour
+  ASSERT_TRUE(parse_packet(d, bytes.size(), &p, BoneForm::Spec, true).ok());
+  EXPECT_TRUE(p.other_bone_form);
+  ASSERT_EQ(p.commands.size(), 2u);
+  EXPECT_TRUE(std::holds_alternative<wire::NodeNameSet>(p.commands[1]));
+  ASSERT_TRUE(parse_packet(d, bytes.size(), &p, BoneForm::R6, true).ok());
+  EXPECT_FALSE(p.other_bone_form);
 }
 
 TEST(VerseCodec, NamesWithNulCannotBeEncoded) {
