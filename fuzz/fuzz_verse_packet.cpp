@@ -54,32 +54,45 @@ std::size_t most_commands(std::size_t size) {
   std::abort();
 }
 
-void check_stable(const vgc::verse::WireCommand& c) {
+void check_stable(const vgc::verse::WireCommand& c, vgc::verse::BoneForm form) {
   using namespace vgc::verse;
   std::string bytes;
-  const Status st = encode_command(c, &bytes);
+  const Status st = encode_command(c, &bytes, form);
   if (!st.ok()) fail("a decoded command does not encode again: " + describe(c) + ": " + st.detail);
   WireCommand back;
   std::size_t used = 0;
-  const Status d = decode_command(reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size(), &used, &back);
+  const Status d =
+      decode_command(reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size(), &used, &back, form);
   if (!d.ok() || used != bytes.size()) fail("re-encoded " + describe(c) + " does not decode: " + d.detail);
   std::string again;
-  (void)encode_command(back, &again);
+  (void)encode_command(back, &again, form);
   if (again != bytes) fail("re-encoded " + describe(c) + " decodes to something else: " + describe(back));
+}
+
+// parse_packet in one bone_create configuration: a failure is a
+// protocol-error with a message, the bound holds, and every command is
+// stable in the form it was read in.
+void check_parse(const std::uint8_t* data, std::size_t size, vgc::verse::BoneForm form, bool either) {
+  using namespace vgc::verse;
+  Packet p;
+  const Status st = parse_packet(data, size, &p, form, either);
+  if (!st.ok() && (st.code != Status::Code::ProtocolError || st.detail.empty()))
+    fail("parse_packet failed without a protocol-error message: " + st.to_string());
+  if (p.commands.size() > most_commands(size))
+    fail("more commands than the bytes can hold: " + std::to_string(p.commands.size()) + " from " +
+         std::to_string(size) + " bytes");
+  const BoneForm read_in = !p.other_bone_form ? form : form == BoneForm::Spec ? BoneForm::R6 : BoneForm::Spec;
+  for (const WireCommand& c : p.commands) check_stable(c, read_in);
 }
 
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace vgc::verse;
-  Packet p;
-  const Status st = parse_packet(data, size, &p);
-  if (!st.ok() && (st.code != Status::Code::ProtocolError || st.detail.empty()))
-    fail("parse_packet failed without a protocol-error message: " + st.to_string());
-  if (p.commands.size() > most_commands(size))
-    fail("more commands than the bytes can hold: " + std::to_string(p.commands.size()) + " from " +
-         std::to_string(size) + " bytes");
-  for (const WireCommand& c : p.commands) check_stable(c);
+  // The spec's bone_create form, and r6's with either form accepted (what
+  // a channel to an r6 peer runs, wire_endpoint.h set_bone_form).
+  check_parse(data, size, BoneForm::Spec, false);
+  check_parse(data, size, BoneForm::R6, true);
 
   LoginMessage m;
   const Status ls = parse_login_packet(data, size, &m);
