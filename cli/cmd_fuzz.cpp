@@ -4,13 +4,21 @@
 //
 //   vgc fuzz TARGET [--time S] [--jobs N] [--impl plugin:PATH] [--seed N]
 //                   [--baseline FILE] [--empty-corpus] [--stop-at-first]
+//   vgc fuzz --all [--time S] [--target-time NAME=S]... [--jobs N] [--seed N]
+//                  [--targets A,B] [--work-corpus DIR]
+//                                      a soak of every target (fuzz/soak.h)
 //   vgc fuzz --to-text STREAM          binary stream -> command file (stdout)
 //   vgc fuzz --to-binary FILE -o OUT   command file -> binary stream
 //
 // Spec: docs/fuzzing.md. Exit codes: 0 the campaign ran and found nothing
 // new; 1 it found crashes outside the baseline (each deduplicated one has a
 // counterexample and a replay command); 2 usage or infrastructure error.
+// --all (docs/fuzzing.md "Soak"): 0 no finding in any target, 1 findings,
+// 2 a target could not be run or the table not written.
 #include <fmt/core.h>
+
+#include <cstdlib>
+#include <map>
 
 #include <fstream>
 #include <memory>
@@ -18,6 +26,7 @@
 #include <vector>
 
 #include "campaign.h"
+#include "soak.h"
 #include "command_binary.h"
 #include "command_text.h"
 #include "progress_line.h"
@@ -31,7 +40,51 @@ namespace {
 struct FuzzArgs {
   fuzz::CampaignOptions campaign;
   std::string to_text, to_binary, output;
+  bool all = false;
+  std::vector<std::string> target_times;  // NAME=S
+  std::vector<std::string> only;          // --targets
+  std::string work_corpus;
 };
+
+// `vgc fuzz --all`: the campaign options that apply to a soak, and the
+// per-target times.
+int run_all(const FuzzArgs& a) {
+  const fuzz::CampaignOptions& c = a.campaign;
+  if (!c.target.empty() || !c.impl.empty() || !c.baseline.empty() || c.empty_corpus || c.stop_at_first) {
+    fmt::print(stderr, "vgc fuzz --all: runs every target on the reference from its committed corpus; a target, "
+                       "--impl, --baseline, --empty-corpus and --stop-at-first are for one campaign\n");
+    return 2;
+  }
+  fuzz::SoakOptions o;
+  o.time_s = c.time_s;
+  o.jobs = c.jobs;
+  o.seed = c.seed;
+  o.fuzz_build = c.fuzz_build;
+  o.source_dir = c.source_dir;
+  o.work_corpus = a.work_corpus;
+  o.targets = a.only;
+  std::string command = fmt::format("vgc fuzz --all --time {}", c.time_s);
+  if (!a.only.empty()) {
+    command += " --targets ";
+    for (std::size_t i = 0; i < a.only.size(); ++i) command += (i ? "," : "") + a.only[i];
+  }
+  for (const std::string& nt : a.target_times) {
+    const auto eq = nt.find('=');
+    char* end = nullptr;
+    const double t = eq == std::string::npos ? 0 : std::strtod(nt.c_str() + eq + 1, &end);
+    if (eq == std::string::npos || end == nt.c_str() + eq + 1 || *end != '\0' || !(t > 0)) {
+      fmt::print(stderr, "vgc fuzz --all: --target-time takes NAME=SECONDS (e.g. verse_packet=3600), not '{}'\n", nt);
+      return 2;
+    }
+    std::string name = nt.substr(0, eq);
+    if (name.rfind("fuzz_", 0) == 0) name = name.substr(5);
+    o.target_time_s[name] = t;
+    command += " --target-time " + nt;
+  }
+  command += fmt::format(" --jobs {} --seed {}", c.jobs, c.seed);
+  if (!a.work_corpus.empty()) command += " --work-corpus " + a.work_corpus;
+  return fuzz::run_soak(o, command);
+}
 
 bool write_file(const std::string& p, const std::string& s) {
   std::ofstream out(p, std::ios::binary);
@@ -79,6 +132,7 @@ int run_fuzz(const FuzzArgs& a) {
     }
     return write_file(a.output, bytes) ? 0 : 2;
   }
+  if (a.all) return run_all(a);
   if (a.campaign.target.empty()) {
     say(stderr, "vgc fuzz: name a target (stream, text, differential, verse_packet, mesh_manifold, mesh_subdivision, "
                        "property_<group>) or use --to-text / --to-binary\n");
@@ -104,7 +158,16 @@ void add_fuzz(CLI::App& app, int* exit_code) {
   CLI::App* sub = app.add_subcommand("fuzz", "Run a libFuzzer campaign on a fuzz target, or convert fuzz inputs");
   sub->add_option("target", o.target, "stream, text, differential, verse_packet, mesh_manifold, mesh_subdivision or property_<group>");
   sub->add_option("--time", o.time_s, "Campaign length in seconds, a wall-clock limit (default 60)");
-  sub->add_option("--jobs", o.jobs, "Parallel fuzzing jobs (libFuzzer -fork=N, default 1)");
+  sub->add_option("--jobs", o.jobs,
+                  "Parallel fuzzing jobs (libFuzzer -fork=N, default 1); with --all, targets fuzzed at a time");
+  sub->add_flag("--all", a->all,
+                "Soak: every target for --time seconds each from its committed corpus, --jobs at a time; "
+                "merges into a work corpus and writes a table (docs/fuzzing.md \"Soak\")");
+  sub->add_option("--target-time", a->target_times,
+                  "With --all: NAME=SECONDS for one target instead of --time (repeatable)");
+  sub->add_option("--targets", a->only, "With --all: only these targets (comma-separated)")->delimiter(',');
+  sub->add_option("--work-corpus", a->work_corpus,
+                  "With --all: the work corpus directory (default reports/fuzz/work-corpus)");
   sub->add_option("--impl", o.impl, "differential, property_<group>: the implementation under test, plugin:PATH");
   sub->add_option("--seed", o.seed, "libFuzzer seed (default 1)");
   sub->add_option("--max-len", o.max_len, "Longest input in bytes (libFuzzer -max_len, default 1024)");

@@ -5,8 +5,10 @@
 
 #include <fmt/core.h>
 #include <nlohmann/json.hpp>
+#include <fcntl.h>
 #include <poll.h>
 #include <signal.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -113,7 +115,25 @@ bool parse_progress(const std::string& line, Progress* p) {
 struct RunResult {
   int exit = -1;
   bool killed = false;  // still running at the deadline: its process group was killed
+  double cpu_s = 0;     // user + system of the child and the descendants it waited for
 };
+
+// The environment of a child: this process's, with env_add (NAME=value)
+// replacing or adding variables. Built before fork(), so that the child
+// only calls execve (a soak forks from several threads at once, and
+// putenv after fork is not safe there).
+std::vector<std::string> child_environment(const std::vector<std::string>& env_add) {
+  std::vector<std::string> env;
+  for (char** e = environ; e && *e; ++e) {
+    const std::string entry(*e);
+    const std::string name = entry.substr(0, entry.find('=') + 1);
+    const bool replaced = std::any_of(env_add.begin(), env_add.end(),
+                                      [&](const std::string& kv) { return kv.rfind(name, 0) == 0; });
+    if (!replaced) env.push_back(entry);
+  }
+  env.insert(env.end(), env_add.begin(), env_add.end());
+  return env;
+}
 
 // Runs argv (in a process group of its own) with env additions,
 // stdout+stderr into `on_line` line by line, until it exits or `deadline`
@@ -123,22 +143,23 @@ RunResult run_streaming(const std::vector<std::string>& argv, const std::vector<
                         const std::function<void(const std::string&)>& on_line,
                         const std::function<bool()>& stop_now) {
   RunResult result;
+  const std::vector<std::string> env = child_environment(env_add);
+  std::vector<char*> args, envp;
+  for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
+  args.push_back(nullptr);
+  for (const std::string& kv : env) envp.push_back(const_cast<char*>(kv.c_str()));
+  envp.push_back(nullptr);
   int fds[2];
-  if (pipe(fds) != 0) return result;
+  if (pipe2(fds, O_CLOEXEC) != 0) return result;
   const pid_t pid = fork();
   if (pid < 0) return result;
   if (pid == 0) {
     setpgid(0, 0);
-    dup2(fds[1], 1);
+    dup2(fds[1], 1);  // dup2 clears O_CLOEXEC on 1 and 2
     dup2(fds[1], 2);
-    close(fds[0]);
-    close(fds[1]);
-    for (const std::string& kv : env_add) putenv(const_cast<char*>(kv.c_str()));
-    std::vector<char*> args;
-    for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
-    args.push_back(nullptr);
-    execv(args[0], args.data());
-    std::perror("execv");
+    execve(args[0], args.data(), envp.data());
+    static const char msg[] = "execve failed\n";
+    (void)!write(2, msg, sizeof msg - 1);
     _exit(127);
   }
   setpgid(pid, pid);  // also here: no race with the child's own call
@@ -146,12 +167,22 @@ RunResult run_streaming(const std::vector<std::string>& argv, const std::vector<
   std::string pending;
   char buf[4096];
   bool open = true;
+  // waitpid that keeps the child's CPU time (its rusage counts the
+  // descendants it waited for: libFuzzer's fork-mode jobs).
+  auto reap = [&](int* status, int options) {
+    rusage ru{};
+    const pid_t w = wait4(pid, status, options, &ru);
+    if (w == pid)
+      result.cpu_s = static_cast<double>(ru.ru_utime.tv_sec + ru.ru_stime.tv_sec) +
+                     static_cast<double>(ru.ru_utime.tv_usec + ru.ru_stime.tv_usec) / 1e6;
+    return w;
+  };
   auto kill_group = [&](bool late) {
     result.killed = late;
     kill(-pid, SIGTERM);
     const auto hard = std::chrono::steady_clock::now() + std::chrono::seconds(2);
     while (std::chrono::steady_clock::now() < hard) {
-      if (waitpid(pid, nullptr, WNOHANG) == pid) {
+      if (reap(nullptr, WNOHANG) == pid) {
         kill(-pid, SIGKILL);  // any job of the group still alive
         return true;
       }
@@ -166,7 +197,7 @@ RunResult run_streaming(const std::vector<std::string>& argv, const std::vector<
     const bool late = now >= deadline;
     if (late || (stop_now && stop_now())) {
       reaped = kill_group(late);
-      if (!late) reaped = reaped || waitpid(pid, nullptr, 0) == pid;
+      if (!late) reaped = reaped || reap(nullptr, 0) == pid;
       stopped = !late;
       break;
     }
@@ -195,11 +226,10 @@ RunResult run_streaming(const std::vector<std::string>& argv, const std::vector<
   if (!reaped) {
     // The pipe closed: the fuzzer is ending; give it until the deadline.
     for (;;) {
-      const pid_t w = waitpid(pid, &status, WNOHANG);
+      const pid_t w = reap(&status, WNOHANG);
       if (w == pid) break;
       if (std::chrono::steady_clock::now() >= deadline) {
-        kill_group(true);
-        waitpid(pid, &status, 0);
+        if (!kill_group(true)) reap(&status, 0);
         break;
       }
       usleep(50 * 1000);
@@ -352,6 +382,9 @@ std::string stream_to_text(const std::string& bytes) {
   return out;
 }
 
+std::string campaign_source_dir(const CampaignOptions& o) { return source_dir(o).string(); }
+std::string campaign_fuzz_build_dir(const CampaignOptions& o) { return fuzz_build_dir(o).string(); }
+
 std::string clause_of_finding(const std::string& line) {
   // "CLAUSE (LEVEL, status): " — the form of clause_finding.h.
   static const std::regex form(R"((?:^|: )([A-Z][A-Z0-9]*(?:-[A-Z0-9]+)*-[0-9]+) \([A-Z-]+, [a-z]+\): )");
@@ -471,6 +504,11 @@ int run_campaign(const CampaignOptions& o, CampaignSummary* out) {
         fs::copy_file(e.path(), corpus / e.path().filename(), fs::copy_options::overwrite_existing, ec);
         ++s.seed_files;
       }
+  for (const std::string& extra : o.extra_corpora)
+    if (fs::is_directory(extra, ec))
+      for (const auto& e : fs::directory_iterator(extra, ec))
+        if (e.is_regular_file()) fs::copy_file(e.path(), corpus / e.path().filename(), fs::copy_options::skip_existing, ec);
+  ec.clear();
   const fs::path dict = src / "corpora" / "fuzz" / (target + ".dict");
 
   // One job stopping at the first finding runs libFuzzer in its plain
@@ -513,16 +551,18 @@ int run_campaign(const CampaignOptions& o, CampaignSummary* out) {
   for (const auto& a : argv) cmdline += (cmdline.empty() ? "" : " ") + shell_quote(a);
   cmdline = env_prefix(target_env) + cmdline;
   s.command = cmdline;
-  fmt::print(stderr, "vgc fuzz: {} for {} s, {} job(s), seed {}, {} seed inputs\n  run: {}\n  {}\n", target,
-             o.time_s, s.jobs, o.seed, s.seed_files, dir.string(), cmdline);
+  if (!o.quiet)
+    fmt::print(stderr, "vgc fuzz: {} for {} s, {} job(s), seed {}, {} seed inputs\n  run: {}\n  {}\n", target,
+               o.time_s, s.jobs, o.seed, s.seed_files, dir.string(), cmdline);
 
   std::ofstream log(dir / "fuzzer.log");
   Progress p;
   const auto t0 = clock::now();
   const auto sys0 = fs::file_time_type::clock::now();
-  // libFuzzer is asked to stop at --time; it gets 5 s more to write its
-  // final stats, then its process group is killed.
-  const auto deadline = t0 + std::chrono::duration_cast<clock::duration>(std::chrono::duration<double>(o.time_s + 5));
+  // libFuzzer is asked to stop at --time; it gets 5 s (grace_s) more to
+  // write its final stats, then its process group is killed.
+  const double grace = o.grace_s > 0 ? o.grace_s : 5;
+  const auto deadline = t0 + std::chrono::duration_cast<clock::duration>(std::chrono::duration<double>(o.time_s + grace));
   auto last_print = t0 - std::chrono::seconds(60);
   std::vector<CampaignSample> samples;  // for report.html's plots
   const RunResult rr = run_streaming(argv, env_add, deadline, [&](const std::string& line) {
@@ -535,16 +575,17 @@ int run_campaign(const CampaignOptions& o, CampaignSummary* out) {
                                             p.exec_s, p.cov, p.ft, p.corp, p.crashes);
     if (o.progress) {
       o.progress(fmt::format("{} for {:.0f} s: {}", target, o.time_s, figures));
-    } else if (now - last_print >= std::chrono::seconds(10)) {
+    } else if (!o.quiet && now - last_print >= std::chrono::seconds(10)) {
       fmt::print(stderr, "[{:5.0f}/{:.0f} s] {}\n", t, o.time_s, figures);
       last_print = now;
     }
   }, stop_now);
-  if (rr.killed) log << "vgc fuzz: still running " << o.time_s + 5 << " s after the start: process group killed\n";
+  if (rr.killed) log << "vgc fuzz: still running " << o.time_s + grace << " s after the start: process group killed\n";
   log.close();
   if (o.progress) o.progress("");
   s.libfuzzer_exit = rr.exit;
   s.killed_at_deadline = rr.killed;
+  s.cpu_s = rr.cpu_s;
   if (rr.killed) fmt::print(stderr, "vgc fuzz: libFuzzer overran --time {} s: killed\n", o.time_s);
 
   // Crashes: re-run each saved input alone (smallest first, within a budget
@@ -725,7 +766,7 @@ int run_campaign(const CampaignOptions& o, CampaignSummary* out) {
   s.exec_per_s_last = p.exec_s;
   s.cov = p.cov;
   s.ft = p.ft;
-  const double fuzz_wall = std::min(s.wall_s, o.time_s + 5);
+  const double fuzz_wall = std::min(s.wall_s, o.time_s + grace);
   s.exec_per_s_mean = fuzz_wall > 0 ? static_cast<double>(p.execs) / fuzz_wall : 0.0;
 
   const std::string json = summary_json(s), md = summary_markdown(s);
@@ -755,8 +796,10 @@ int run_campaign(const CampaignOptions& o, CampaignSummary* out) {
     page.findings.push_back(std::move(f));
   }
   if (std::string error; !write_campaign_html(dir.string(), page, &error)) fmt::print(stderr, "vgc fuzz: {}\n", error);
-  fmt::print("{}", md);
-  fmt::print("summary: {}\n", (dir / "summary.json").string());
+  if (!o.quiet) {
+    fmt::print("{}", md);
+    fmt::print("summary: {}\n", (dir / "summary.json").string());
+  }
   const bool ran_nothing = p.execs == 0 && s.crash_inputs == 0;
   if (out) *out = s;
   if (ran_nothing) {
@@ -804,6 +847,7 @@ std::string summary_json(const CampaignSummary& s) {
             {"jobs", s.jobs},
             {"time_s", s.time_s},
             {"wall_s", s.wall_s},
+            {"cpu_s", s.cpu_s},
             {"killed_at_deadline", s.killed_at_deadline},
             {"empty_corpus", s.empty_corpus},
             {"stop_at_first", s.stop_at_first},
@@ -829,11 +873,12 @@ std::string summary_markdown(const CampaignSummary& s) {
   std::string md = fmt::format(
       "# vgc fuzz {} — {}\n\n"
       "| | |\n|---|---|\n| implementation | {} |\n| seed, jobs, time | {}, {}, {} s (wall {:.0f} s{}) |\n"
+      "| CPU | {:.0f} s |\n"
       "| executions | {} |\n| exec/s | {:.0f} mean, {} last reported |\n| coverage | cov {}, ft {} |\n"
       "| corpus | {} files, {} bytes ({} seeds{}) |\n| crash inputs | {} ({} re-run and signed; {} unique, {} new) |\n"
       "| time to first finding | {} |\n",
       s.target, s.run, s.implementation, s.seed, s.jobs, s.time_s, s.wall_s,
-      s.killed_at_deadline ? "; libFuzzer overran and was killed" : "", s.executions, s.exec_per_s_mean,
+      s.killed_at_deadline ? "; libFuzzer overran and was killed" : "", s.cpu_s, s.executions, s.exec_per_s_mean,
       s.exec_per_s_last, s.cov, s.ft, s.corpus_files, s.corpus_bytes, s.seed_files,
       s.empty_corpus ? ", started empty" : "", s.crash_inputs, s.crash_inputs_signed, s.crashes.size(),
       s.new_crashes, secs(s.time_to_first_finding_s));

@@ -44,6 +44,16 @@ struct CampaignOptions {
   bool empty_corpus = false;  // start from no input at all, not the committed corpus
   bool stop_at_first = false; // stop at the first finding (time to find)
   std::string vgc_binary;     // for replaying counterexamples ("" : this program)
+  // More inputs to start from, copied into the run's corpus beside the
+  // committed one (a soak's work corpus, fixed crashes); missing ones are skipped.
+  std::vector<std::string> extra_corpora;
+  // Nothing on stdout and no start line on stderr (a soak runs several
+  // campaigns at once and prints its own table); summary files as always.
+  bool quiet = false;
+  // Seconds libFuzzer may run past time_s before its process group is
+  // killed (0: 5 s). In fork mode it checks the time only between jobs,
+  // and job k runs min(300, k) s, so the last job can overrun by that much.
+  double grace_s = 0;
   // Status while libFuzzer runs ("TARGET for T s: execs ... crashes N"),
   // called on every libFuzzer status line, and once with "" when it has
   // stopped. Unset: a plain line on stderr at most every 10 s (logs).
@@ -86,6 +96,9 @@ struct CampaignSummary {
   unsigned seed = 0;
   int jobs = 1;
   double time_s = 0, wall_s = 0;
+  // CPU seconds (user + system) of libFuzzer and every job it waited for
+  // (fork mode): what the fuzzing cost, whatever else the machine ran.
+  double cpu_s = 0;
   bool killed_at_deadline = false;   // libFuzzer overran --time and was killed
   bool empty_corpus = false, stop_at_first = false;
   std::string baseline;
@@ -106,6 +119,12 @@ struct CampaignSummary {
 // 0 nothing new found, 1 crashes found outside the baseline, 2 usage or
 // infrastructure error (message on stderr). *out (optional) gets the summary.
 int run_campaign(const CampaignOptions& o, CampaignSummary* out = nullptr);
+
+// The source tree and the libFuzzer build a campaign with these options
+// uses (the option, else $VGC_SOURCE_DIR / $VGC_FUZZ_BUILD_DIR, else the
+// configured source / build-fuzz beside this program's build).
+std::string campaign_source_dir(const CampaignOptions& o);
+std::string campaign_fuzz_build_dir(const CampaignOptions& o);
 
 std::string summary_json(const CampaignSummary& s);
 std::string summary_markdown(const CampaignSummary& s);

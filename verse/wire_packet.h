@@ -7,9 +7,10 @@
 // Rationale: parse_packet() is the one entry point for every byte a peer
 // sends once logged in, and the libFuzzer target fuzz_verse_packet runs it
 // on arbitrary bytes. It never reads past `size`, keeps at most one command
-// per 5 bytes of input and strings no longer than the packet, and reports
-// a malformed packet as a ProtocolError naming the byte offset; the
-// commands decoded before the error are kept (r6 also acts on them).
+// per 2 bytes after the 4-byte id (the shortest command, connect_terminate
+// with an empty text, is `02 00`) and strings no longer than the packet,
+// and reports a malformed packet as a ProtocolError naming the byte offset;
+// the commands decoded before the error are kept (r6 also acts on them).
 #pragma once
 
 #include <array>
