@@ -323,8 +323,22 @@ std::string derived() {
   }
   node.apply(cmd::CreaseSetVertex{g.mirror.vertex_crease().layer, g.mirror.vertex_crease().def_crease});
   node.apply(cmd::CreaseSetEdge{g.mirror.edge_crease().layer, g.mirror.edge_crease().def_crease});
+  // r6 keeps a bone whose weight or reference layer was destroyed or
+  // renamed since (it checks no layer at all), and so does the reference
+  // for a layer renamed after the bone; but the reference refuses to
+  // *create* such a bone. So the bones are created while a stand-in layer
+  // of each missing name exists, and the stand-ins are destroyed after:
+  // the derivation then poses every bone r6 stores, as the model does.
+  std::vector<std::uint16_t> stand_ins;
+  for (const auto& [id, b] : g.mirror.bones())
+    for (const std::string& name : {b.weight, b.reference})
+      if (!name.empty() && !node.find_layer_by_name(name)) {
+        node.apply(cmd::LayerCreate{vgc::kNone16, name, static_cast<std::uint8_t>(vgc::LayerType::VertexUint32), 0, 0});
+        if (const vgc::Layer* l = node.find_layer_by_name(name)) stand_ins.push_back(l->id);
+      }
   for (const auto& [id, b] : g.mirror.bones())
     node.apply(cmd::BoneCreate{id, b.weight, b.reference, b.parent, b.pos, b.pos_label, b.rot, b.rot_label});
+  for (std::uint16_t id : stand_ins) node.apply(cmd::LayerDestroy{id});
   return vgc::print_derived(node);
 }
 
