@@ -9,14 +9,48 @@
 # running, several times, with counterexamples that replayed clean.) A
 # crash that does reproduce (the fault plugin's crash-on-self-parent, behind
 # the same proxy with no limit) is still reported on its own clause.
+#
+# history_findings_test.sh VGC FAULT_PLUGIN hang|garbage — the same for an
+# implementation that stops answering (timeout) or answers garbage
+# (protocol error, ACCEPT-1) after 20 commands since it started: one
+# finding, on STABLE-1 or ACCEPT-1, "depends on the implementation's
+# history", whose counterexample shows the same failure on a fresh instance.
 set -uo pipefail
-[ $# -ge 2 ] || { echo "usage: $0 VGC FAULT_PLUGIN" >&2; exit 2; }
-vgc=$1 plugin=$2
+[ $# -ge 2 ] || { echo "usage: $0 VGC FAULT_PLUGIN [hang|garbage]" >&2; exit 2; }
+vgc=$1 plugin=$2 mode=${3:-crash}
 here=$(cd "$(dirname "$0")" && pwd)
 tmp=$(mktemp -d "${TMPDIR:-/tmp}/vgc_history.XXXXXX")
 trap 'rm -rf "$tmp"' EXIT
 cd "$tmp" || exit 2
-fail() { echo "history_findings: $*" >&2; exit 1; }
+fail() { echo "history_findings ($mode): $*" >&2; exit 1; }
+
+if [ "$mode" != crash ]; then
+  case "$mode" in
+    hang) clause=STABLE-1 status=timeout shows=timeout timeout=(--timeout 1) ;;
+    garbage) clause=ACCEPT-1 status=fail shows=protocol-error timeout=() ;;
+    *) echo "usage: $0 VGC FAULT_PLUGIN [hang|garbage]" >&2; exit 2 ;;
+  esac
+  impl="exec:$here/history_proxy.py $vgc $mode 20"
+  "$vgc" certify --quiet --cases 20 --clauses 'LAYER-*' "${timeout[@]}" --impl "$impl" --reports R >out 2>err
+  rc=$?
+  [ $rc = 1 ] || { cat out err >&2; fail "exit $rc, expected 1 (a $clause $status)"; }
+  python3 - R/latest/report.json "$clause" "$status" <<'PY' || { cat out >&2; fail "report.json is wrong (above)"; }
+import json, sys
+r = json.load(open(sys.argv[1]))
+clause, status = sys.argv[2], sys.argv[3]
+found = {c["id"]: c for c in r["clauses"] if c.get("counterexample")}
+assert list(found) == [clause], "clauses with a finding: %s (expected only %s)" % (sorted(found), clause)
+f = found[clause]
+assert f["status"] == status, f["status"]
+assert f["message"].startswith("depends on the implementation's history"), f["message"]
+PY
+  cex=R/latest/counterexamples/$clause.vgc
+  [ -s "$cex" ] || fail "no counterexample file for $clause"
+  "$vgc" replay "$cex" "${timeout[@]}" --impl "$impl" >replay.out 2>&1
+  grep -q "$shows" replay.out || { cat replay.out >&2; fail "the $clause counterexample does not show a $shows on a fresh instance"; }
+  echo "history_findings ($mode): a history-dependent $shows is one $clause finding with a reproducer"
+  exit 0
+fi
 
 impl="exec:$here/history_proxy.py $vgc crash 20"
 "$vgc" certify --quiet --cases 20 --clauses 'LAYER-*' --impl "$impl" --reports R >out 2>err
