@@ -101,5 +101,8 @@ check(any("shard:" in t and "matrix" in t and "baseline:" in t for t in uses_act
       "docs/ci.md: a GitHub workflow with a baseline and a shard matrix")
 check(any("--shard" in t and "parallel:" in t and "--baseline" in t and "junit" in t for _, t in gitlab),
       "docs/ci.md: a GitLab CI file with a baseline, parallel shards and JUnit reports")
+check(any(any(isinstance(v, dict) and "vgc merge" in " ".join(map(str, v.get("script", []))) and
+              "certify" in v.get("needs", []) for v in y.values()) for y, _ in gitlab),
+      "docs/ci.md: the GitLab CI file merges the shards (vgc merge) in a job after them")
 
 sys.exit(1 if problems else 0)
