@@ -29,6 +29,7 @@
 #include "clause.h"
 #include "command_binary.h"
 #include "command_text.h"
+#include "display_text.h"
 #include "program_command.h"
 #include "exec_implementation.h"
 #include "minimize_finding.h"
@@ -418,7 +419,7 @@ int run_campaign(const CampaignOptions& o, CampaignSummary* out) {
   if (!o.baseline.empty()) {
     std::string error;
     if (!load_baseline(o.baseline, &baseline, &error)) {
-      fmt::print(stderr, "vgc fuzz: --baseline: {}\n", error);
+      fmt::print(stderr, "vgc fuzz: --baseline: {}\n", escape_unprintable(error));
       return 2;
     }
   }
@@ -865,7 +866,9 @@ std::string summary_json(const CampaignSummary& s) {
             {"clauses", clauses},
             {"libfuzzer_exit", s.libfuzzer_exit},
             {"command", s.command}};
-  return j.dump(2) + "\n";
+  // Invalid UTF-8 from an implementation (a crash signature, a message)
+  // becomes U+FFFD instead of an exception that loses the summary.
+  return j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
 }
 
 std::string summary_markdown(const CampaignSummary& s) {
@@ -884,7 +887,7 @@ std::string summary_markdown(const CampaignSummary& s) {
       s.new_crashes, secs(s.time_to_first_finding_s));
   if (!s.baseline.empty()) md += fmt::format("| baseline | {} |\n", s.baseline);
   md += fmt::format("\nCommand: `{}`\n\n", s.command);
-  if (s.crashes.empty()) return md;
+  if (s.crashes.empty()) return escape_unprintable(md);
   md += "## Findings by clause\n\n";
   for (const CampaignClause& g : s.clauses) {
     md += fmt::format("### {}{}{} — {} crash(es), {} input(s), first after {}\n\n",
@@ -905,7 +908,7 @@ std::string summary_markdown(const CampaignSummary& s) {
     }
     md += "\n";
   }
-  return md;
+  return escape_unprintable(md);  // signatures and messages are the implementation's bytes
 }
 
 }  // namespace vgc::fuzz
