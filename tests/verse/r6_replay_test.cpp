@@ -26,6 +26,7 @@
 #include <vector>
 
 #include "wire_commands.h"
+#include "transcript_values.h"
 #include "wire_packet.h"
 
 namespace vgc::verse {
@@ -95,16 +96,8 @@ Transcript load(const std::string& path) {
 }
 
 // The text r6_tap.cpp writes, for vgc's decoded values.
-std::string r32(float v) {
-  char b[64];
-  std::snprintf(b, sizeof b, "%.9g", static_cast<double>(v));
-  return b;
-}
-std::string r64(double v) {
-  char b[64];
-  std::snprintf(b, sizeof b, "%.17g", v);
-  return b;
-}
+using vgc_transcript::r32;
+using vgc_transcript::r64;
 std::string str(const std::string& s) {
   std::string out;
   for (unsigned char c : s) {

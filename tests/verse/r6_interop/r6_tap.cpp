@@ -157,16 +157,6 @@ void note_decoded(const std::string& text) {
 
 bool decode_only() { return tap().decode_only; }
 
-std::string r32(float v) {
-  char b[64];
-  std::snprintf(b, sizeof b, "%.9g", static_cast<double>(v));
-  return b;
-}
-std::string r64(double v) {
-  char b[64];
-  std::snprintf(b, sizeof b, "%.17g", v);
-  return b;
-}
 std::string str(const char* s) {
   std::string out;
   if (s == nullptr) return "\\null";

@@ -21,6 +21,8 @@
 #include <string>
 #include <vector>
 
+#include "../transcript_values.h"
+
 namespace r6tap {
 
 struct Cmd {
@@ -56,8 +58,8 @@ void note_decoded(const std::string& text);
 bool decode_only();
 // Text helpers shared by the callbacks: "%.9g" for real32, "%.17g" for
 // real64, strings with bytes outside 0x21..0x7e (and '\\') as \xNN.
-std::string r32(float v);
-std::string r64(double v);
+using vgc_transcript::r32;  // the transcript's way of writing reals (../transcript_values.h)
+using vgc_transcript::r64;
 std::string str(const char* s);
 std::string hex(const std::string& bytes);
 
