@@ -49,11 +49,7 @@ struct Transcript {
   bool complete = false;  // "end" seen
 };
 
-std::string unhex(const std::string& h) {
-  std::string out;
-  for (std::size_t i = 0; i + 1 < h.size(); i += 2) out += static_cast<char>(std::stoi(h.substr(i, 2), nullptr, 16));
-  return out;
-}
+using vgc_transcript::unhex;
 
 Transcript load(const std::string& path) {
   Transcript t;

@@ -11,6 +11,7 @@
 #include <set>
 
 #include "arbitrary_command.h"
+#include "transcript_values.h"
 #include "wire_commands.h"
 #include "wire_login.h"
 #include "wire_packet.h"
@@ -43,15 +44,7 @@ std::vector<Command> every_kind() {
           cmd::BoneDestroy{4}};
 }
 
-std::string hex(const std::string& bytes) {
-  static const char* d = "0123456789abcdef";
-  std::string out;
-  for (unsigned char c : bytes) {
-    out += d[c >> 4];
-    out += d[c & 15];
-  }
-  return out;
-}
+using vgc_transcript::hex;
 
 Command decode_one(const std::string& bytes) {
   WireCommand w;

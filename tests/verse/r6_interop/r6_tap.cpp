@@ -171,15 +171,6 @@ std::string str(const char* s) {
   }
   return out.empty() ? "\\empty" : out;
 }
-std::string hex(const std::string& bytes) {
-  static const char* d = "0123456789abcdef";
-  std::string out;
-  for (unsigned char c : bytes) {
-    out += d[c >> 4];
-    out += d[c & 15];
-  }
-  return out;
-}
 
 }  // namespace r6tap
 

@@ -61,6 +61,6 @@ bool decode_only();
 using vgc_transcript::r32;  // the transcript's way of writing reals (../transcript_values.h)
 using vgc_transcript::r64;
 std::string str(const char* s);
-std::string hex(const std::string& bytes);
+using vgc_transcript::hex;
 
 }  // namespace r6tap
