@@ -129,12 +129,12 @@ void set_case_aside(const Finding& f, const std::optional<CapabilityRequest>& re
 // implementation that deviates on a command most cases send (a host that
 // ignores the id a bone_create asks for) leaves every clause downstream of
 // that command unjudged. A command the implementation dropped (its state is
-// still the state before) is taken out without a reset. Returns false, and
-// the case is set aside, when the case already had kMaxTakenOut commands
-// taken out, the divergence is not a plain failure (a crash or time-out
-// leaves an instance nothing should be built on), the replay does not agree
-// (an implementation that does not repeat itself), or no clause still
-// wants reach: taking out costs a reset and a replay, so it is spent only
+// still the state before) is taken out without a reset. The case is set
+// aside instead when the case already had kMaxTakenOut commands taken out,
+// the divergence is not a plain failure (a crash or time-out leaves an
+// instance nothing should be built on), the replay does not agree (an
+// implementation that does not repeat itself), or no clause still wants
+// reach: taking out costs a reset and a replay, so it is spent only
 // while a clause the property is meant to check, with no finding of its
 // own, has been decided by fewer than kReachWanted judged steps.
 constexpr int kMaxTakenOut = 4;
@@ -164,23 +164,24 @@ bool take_step_out(const StepResult& r, const Node& before) {
   const Finding& f = *r.failure;
   if (f.status != FindingStatus::Fail || c.taken_out >= kMaxTakenOut || c.trace.empty() || !reach_wanted())
     return false;
-  note_tolerated(f);
+  note_tolerated(f);  // with the command still in the trace: the program that shows it
   c.trace.pop_back();
-  ++c.taken_out;
-  if (!c.shrinking) ++c.steps_taken_out;
-  if (r.implementation_unchanged) {  // it dropped the command: both sides still hold `before`
-    c.model = before;
-    return true;
-  }
-  if (c.sut->reset().status != CallStatus::Ok) return false;
-  Node model;
-  for (const auto& cmd : c.trace) {
-    Node after;
-    StepResult r = check_step(model, cmd, *c.sut, &after, /*follow_choices=*/true);
-    if (r.failure) return false;
-    model = std::move(after);
+  Node model = before;  // it dropped the command: both sides still hold `before`
+  if (!r.implementation_unchanged) {
+    // Once the command is out of the trace the case cannot fall back to
+    // fail_case (its program would no longer show the divergence): a reset
+    // or replay that fails sets the case aside here.
+    if (c.sut->reset().status != CallStatus::Ok) return c.set_aside_case = true;
+    model = Node{};
+    for (const auto& cmd : c.trace) {
+      Node after;
+      if (check_step(model, cmd, *c.sut, &after, /*follow_choices=*/true).failure) return c.set_aside_case = true;
+      model = std::move(after);
+    }
   }
   c.model = std::move(model);
+  ++c.taken_out;
+  if (!c.shrinking) ++c.steps_taken_out;
   return true;
 }
 
