@@ -4,6 +4,10 @@
 //
 //   vgc fuzz TARGET [--time S] [--jobs N] [--impl plugin:PATH] [--seed N]
 //                   [--baseline FILE] [--empty-corpus] [--stop-at-first]
+//   vgc fuzz differential --impl exec:CMD|verse:HOST[:PORT] [--timeout S]
+//                   [--verse-bone-form F] [--restart CMD] ...
+//                                      a live implementation, through the
+//                                      adapters certify uses
 //   vgc fuzz --all [--time S] [--target-time NAME=S]... [--jobs N] [--seed N]
 //                  [--targets A,B] [--work-corpus DIR]
 //                                      a soak of every target (fuzz/soak.h)
@@ -168,7 +172,17 @@ void add_fuzz(CLI::App& app, int* exit_code) {
   sub->add_option("--targets", a->only, "With --all: only these targets (comma-separated)")->delimiter(',');
   sub->add_option("--work-corpus", a->work_corpus,
                   "With --all: the work corpus directory (default reports/fuzz/work-corpus)");
-  sub->add_option("--impl", o.impl, "differential, property_<group>: the implementation under test, plugin:PATH");
+  sub->add_option("--impl", o.impl,
+                  "differential, property_<group>: the implementation under test, plugin:PATH; differential also "
+                  "exec:CMD or verse:[NAME@]HOST[:PORT], a running implementation (docs/fuzzing.md)");
+  sub->add_option("--timeout", o.call_timeout_s,
+                  "exec:/verse: seconds the implementation has per answer (default 5); longer is a hang (timeout)");
+  sub->add_option("--verse-bone-form", o.verse_bone_form,
+                  "verse: the bone_create form to speak: auto (default), spec or r6 (docs/verse_wire.md section 4)")
+      ->check(CLI::IsMember({"auto", "spec", "r6"}));
+  sub->add_option("--restart", o.restart,
+                  "verse: a shell command that starts a fresh host (and returns once it listens); run before a "
+                  "crash or hang is confirmed on a fresh instance. Without it such findings are reported unconfirmed");
   sub->add_option("--seed", o.seed, "libFuzzer seed (default 1)");
   sub->add_option("--max-len", o.max_len, "Longest input in bytes (libFuzzer -max_len, default 1024)");
   sub->add_option("--baseline", o.baseline,

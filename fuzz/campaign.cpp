@@ -32,6 +32,7 @@
 #include "display_text.h"
 #include "program_command.h"
 #include "exec_implementation.h"
+#include "live_implementation.h"
 #include "minimize_finding.h"
 
 namespace vgc::fuzz {
@@ -363,6 +364,81 @@ std::optional<double> seconds_since(const fs::path& f, fs::file_time_type start)
   return std::max(0.0, std::chrono::duration<double>(t - start).count());
 }
 
+// Which implementation a campaign fuzzes (--impl) and the environment
+// variables that name it to the target: VGC_FUZZ_PLUGIN for a plugin in
+// process; VGC_FUZZ_IMPL (and VGC_FUZZ_TIMEOUT, VGC_FUZZ_VERSE_BONE_FORM,
+// VGC_FUZZ_RESTART) for a live one (fuzz/live_implementation.h).
+struct ImplementationChoice {
+  std::string plugin;             // absolute path, or ""
+  std::string live;               // exec:CMD or verse:..., or ""
+  std::vector<std::string> env;   // NAME=value
+  std::string spec() const { return !live.empty() ? live : plugin.empty() ? "reference" : "plugin:" + plugin; }
+};
+
+bool is_implementation_variable(const std::string& v) {
+  for (const char* n : {"VGC_FUZZ_PLUGIN=", "VGC_FUZZ_IMPL=", "VGC_FUZZ_TIMEOUT=", "VGC_FUZZ_VERSE_BONE_FORM=",
+                        "VGC_FUZZ_RESTART="})
+    if (v.rfind(n, 0) == 0) return true;
+  return false;
+}
+
+bool choose_implementation(const CampaignOptions& o, const std::string& name, bool property,
+                           ImplementationChoice* out) {
+  const bool live = o.impl.rfind("exec:", 0) == 0 || o.impl.rfind("verse:", 0) == 0;
+  if (!live && (o.call_timeout_s > 0 || !o.verse_bone_form.empty() || !o.restart.empty())) {
+    fmt::print(stderr, "vgc fuzz: --timeout, --verse-bone-form and --restart are for --impl exec:CMD or verse:HOST\n");
+    return false;
+  }
+  if (!o.restart.empty() && o.impl.rfind("verse:", 0) != 0) {
+    fmt::print(stderr, "vgc fuzz: --restart is for --impl verse:HOST (an exec: program is restarted by vgc)\n");
+    return false;
+  }
+  if (o.impl.empty() || o.impl == "reference") return true;
+  if (live) {
+    if (name != "differential") {
+      fmt::print(stderr, "vgc fuzz: --impl {} (a live implementation) is for the differential target only\n",
+                 o.impl.substr(0, o.impl.find(':')) + ":...");
+      return false;
+    }
+    out->live = o.impl;
+    out->env.push_back("VGC_FUZZ_IMPL=" + o.impl);
+    if (o.call_timeout_s > 0) out->env.push_back(fmt::format("VGC_FUZZ_TIMEOUT={}", o.call_timeout_s));
+    if (!o.verse_bone_form.empty()) out->env.push_back("VGC_FUZZ_VERSE_BONE_FORM=" + o.verse_bone_form);
+    if (!o.restart.empty()) out->env.push_back("VGC_FUZZ_RESTART=" + o.restart);
+    return true;
+  }
+  if ((name != "differential" && !property) || o.impl.rfind("plugin:", 0) != 0) {
+    fmt::print(stderr,
+               "vgc fuzz: --impl takes plugin:PATH (or reference) for the differential and property targets, or "
+               "exec:CMD / verse:HOST[:PORT] for the differential target\n");
+    return false;
+  }
+  out->plugin = fs::absolute(o.impl.substr(7)).string();
+  if (!fs::exists(out->plugin)) {
+    fmt::print(stderr, "vgc fuzz: no such plugin {}: give --impl plugin:PATH the path of your plugin's shared library\n",
+               out->plugin);
+    return false;
+  }
+  out->env.push_back("VGC_FUZZ_PLUGIN=" + out->plugin);
+  return true;
+}
+
+// The status a finding line names ("CLAUSE (LEVEL, status): ..."), or "".
+std::string status_of_finding(const std::string& line) {
+  static const std::regex form(R"(-[0-9]+ \([A-Z-]+, ([a-z-]+)\): )");
+  std::smatch m;
+  return std::regex_search(line, m, form) ? m[1].str() : std::string{};
+}
+
+// ` --timeout T --verse-bone-form F` for `vgc replay` of a live
+// implementation's counterexample, as the campaign ran it.
+std::string replay_options(const CampaignOptions& o) {
+  std::string out;
+  if (o.call_timeout_s > 0) out += fmt::format(" --timeout {}", o.call_timeout_s);
+  if (!o.verse_bone_form.empty()) out += " --verse-bone-form " + shell_quote(o.verse_bone_form);
+  return out;
+}
+
 }  // namespace
 
 std::string stream_to_text(const std::string& bytes) {
@@ -435,34 +511,19 @@ int run_campaign(const CampaignOptions& o, CampaignSummary* out) {
                binary.string(), src.string(), fbuild.string(), fbuild.string(), target);
     return 2;
   }
-  std::vector<std::string> env_add;
-  std::string plugin;
-  if (!o.impl.empty() && o.impl != "reference") {
-    if ((name != "differential" && !property) || o.impl.rfind("plugin:", 0) != 0) {
-      fmt::print(stderr,
-                 "vgc fuzz: --impl takes plugin:PATH (or reference), for the differential and property targets only\n");
-      return 2;
-    }
-    plugin = fs::absolute(o.impl.substr(7)).string();
-    if (!fs::exists(plugin)) {
-      fmt::print(stderr,
-                 "vgc fuzz: no such plugin {}: give --impl plugin:PATH the path of your plugin's shared library\n",
-                 plugin);
-      return 2;
-    }
-    env_add.push_back("VGC_FUZZ_PLUGIN=" + plugin);
-  }
+  // The implementation under test and the variables that tell the target.
+  ImplementationChoice impl;
+  if (!choose_implementation(o, name, property, &impl)) return 2;
+  const std::string& plugin = impl.plugin;
+  const std::vector<std::string>& env_add = impl.env;
   // Every VGC_* variable the target runs with: ours (VGC_FAULT,
-  // VGC_FUZZ_MESH_FAULT, ...) and the plugin's path.
+  // VGC_FUZZ_MESH_FAULT, ...) and the implementation's (the plugin's path,
+  // a live implementation's spec and options).
   std::vector<std::string> run_env = vgc_environment();
-  run_env.erase(std::remove_if(run_env.begin(), run_env.end(),
-                               [](const std::string& v) { return v.rfind("VGC_FUZZ_PLUGIN=", 0) == 0; }),
-                run_env.end());
+  run_env.erase(std::remove_if(run_env.begin(), run_env.end(), is_implementation_variable), run_env.end());
   std::vector<std::string> target_env = run_env;
-  if (!plugin.empty()) {
-    target_env.push_back("VGC_FUZZ_PLUGIN=" + plugin);
-    std::sort(target_env.begin(), target_env.end());
-  }
+  target_env.insert(target_env.end(), env_add.begin(), env_add.end());
+  std::sort(target_env.begin(), target_env.end());
 
   CampaignSummary s;
   s.target = target;
@@ -470,7 +531,7 @@ int run_campaign(const CampaignOptions& o, CampaignSummary* out) {
   s.jobs = std::max(1, o.jobs);
   s.time_s = o.time_s;
   s.binary = binary.string();
-  s.implementation = plugin.empty() ? "reference" : "plugin:" + plugin;
+  s.implementation = impl.spec();
   s.environment = target_env;
   s.empty_corpus = o.empty_corpus;
   s.stop_at_first = o.stop_at_first;
@@ -525,7 +586,10 @@ int run_campaign(const CampaignOptions& o, CampaignSummary* out) {
                                    // An input still running after 10 s is a hang, saved as
                                    // a timeout-* finding (libFuzzer's default waits 20 min,
                                    // longer than most campaigns).
-                                   "-timeout=10"};
+                                   // A live implementation's own hangs are bounded by
+                                   // the call time-out and confirmed on a fresh
+                                   // instance inside the input: more time.
+                                   impl.live.empty() ? "-timeout=10" : "-timeout=120"};
   if (!o.stop_at_first) argv.insert(argv.begin() + 2, "-ignore_crashes=1");
   // --stop-at-first in fork mode: the campaign stops the jobs itself once
   // a crash input is saved (one plain job stops there by itself). Saved
@@ -629,7 +693,7 @@ int run_campaign(const CampaignOptions& o, CampaignSummary* out) {
     }
   }
   const std::string vgc = o.vgc_binary.empty() ? self_exe().string() : o.vgc_binary;
-  const std::string impl_spec = plugin.empty() ? std::string("reference") : "plugin:" + plugin;
+  const std::string impl_spec = impl.spec();
   std::size_t k = 0;
   for (auto& [key, g] : unique) {
     CampaignCrash c;
@@ -689,30 +753,49 @@ int run_campaign(const CampaignOptions& o, CampaignSummary* out) {
       const bool replayable = !c.clause.empty() || plugin_crash;
       const auto replay_line = [&] {
         return env_prefix(run_env) + program_command() + " replay " + shell_quote(cex_file.string()) + " --impl " +
-               shell_quote(impl_spec);
+               shell_quote(impl_spec) + replay_options(o);
       };
       c.replay = replayable ? replay_line() : env_prefix(run_env) + program_command() + " apply " + shell_quote(cex_file.string());
       std::string body;
       if (printed != g.printed.end()) body = printed->second;
       else if (property) body = "# the target printed no command file (a sanitizer finding): replay the input\n";
       else body = stream_to_text(bytes);
-      if (!c.clause.empty() && clock::now() < sign_until) {
-        // Minimized as certify shrinks, before it is written (minimize_finding.h).
-        const Minimized min = minimize_finding(body, c.clause, impl_spec, sign_until);
+      const std::string status = status_of_finding(c.signature);
+      const bool call_failure = status == "crash" || status == "timeout";
+      // A wire host that crashed or hung cannot be replayed on a fresh
+      // instance without the user's restart command.
+      const bool wire = impl.live.rfind("verse:", 0) == 0;
+      const bool confirmable = !call_failure || !wire || !o.restart.empty();
+      if (!c.clause.empty() && clock::now() < sign_until && !(call_failure && wire)) {
+        // Minimized as certify shrinks, before it is written (minimize_finding.h);
+        // a crash stays a crash (an exec: program crashed is restarted by the replay).
+        OpenOptions open;
+        if (o.call_timeout_s > 0) open.timeout_seconds = o.call_timeout_s;
+        if (!o.verse_bone_form.empty()) open.verse_bone_form = o.verse_bone_form;
+        const Minimized min = minimize_finding(body, c.clause, impl_spec, sign_until, 200, status, open);
         if (min.reproduced && min.after < min.before)
           body = fmt::format("# minimized from {} to {} commands ({} replays); the input replays the original\n",
                              min.before, min.after, min.replays) + min.text;
       }
+      if (call_failure && !confirmable)
+        c.confirmation = "not confirmed: the host is not restarted without --restart CMD, so the counterexample "
+                         "was not replayed on a fresh instance";
       auto write_cex = [&] {
         write_file(cex_file, "# vgc fuzz " + target + " counterexample: " + c.signature + "\n# from " +
                                  rep.string() + "\n# replay: " + c.replay + "\n" + body);
       };
       write_cex();
-      if (replayable && fs::exists(vgc) && clock::now() < sign_until) {
+      if (replayable && confirmable && fs::exists(vgc) && clock::now() < sign_until) {
         // Which clause does it replay to? (`vgc replay` exits 1 naming it.)
-        const std::string r = run_capture("timeout 20 env " + env_prefix(run_env) + shell_quote(vgc) + " replay " +
+        // For a crash or hang of a live implementation this is the
+        // confirmation on a fresh instance: `vgc replay` starts a new exec:
+        // process; a wire host is restarted by the user's command first.
+        std::string restarted;
+        if (call_failure && wire && !run_restart_command(o.restart, 60, &restarted))
+          c.confirmation = "not confirmed: " + restarted;
+        const std::string r = run_capture("timeout 60 env " + env_prefix(run_env) + shell_quote(vgc) + " replay " +
                                           shell_quote(cex_file.string()) + " --impl " + shell_quote(impl_spec) +
-                                          " 2>&1; echo \"vgc-replay-exit=$?\"");
+                                          replay_options(o) + " 2>&1; echo \"vgc-replay-exit=$?\"");
         static const std::regex named(R"(\b([A-Z][A-Z0-9]*(?:-[A-Z0-9]+)*-[0-9]+)\b)");
         std::string found;
         if (r.find("vgc-replay-exit=1") != std::string::npos)
@@ -722,6 +805,13 @@ int run_campaign(const CampaignOptions& o, CampaignSummary* out) {
               if (found == c.clause) break;
             }
         c.replayed_clause = found;
+        if (call_failure && c.confirmation.empty())
+          c.confirmation = found == c.clause && r.find(status + " ") != std::string::npos
+                               ? "confirmed: `vgc replay` on a fresh instance (" +
+                                     std::string(wire ? "restarted by --restart" : "a new process") + ") shows the " +
+                                     status + " again"
+                               : "not confirmed: `vgc replay` on a fresh instance did not show the " + status +
+                                     " (depends on the instance's history, or flaky)";
         if (plugin_crash) {
           if (!found.empty()) {
             c.clause = found;  // certify's name for the crash
@@ -828,6 +918,7 @@ std::string summary_json(const CampaignSummary& s) {
                        {"replay", c.replay},
                        {"replay_fuzzer", c.replay_fuzzer},
                        {"replayed_clause", c.replayed_clause ? json(*c.replayed_clause) : json(nullptr)},
+                       {"confirmation", c.confirmation},
                        {"first_seen_s", opt(c.first_seen_s)}});
   json clauses = json::array();
   for (const CampaignClause& g : s.clauses)
@@ -901,6 +992,7 @@ std::string summary_markdown(const CampaignSummary& s) {
       for (const auto& a : c.also) md += fmt::format("  - also: {}\n", a);
       md += fmt::format("  - counterexample: `{}`\n  - replay: `{}`\n  - replay the input: `{}`\n", c.counterexample,
                         c.replay, c.replay_fuzzer);
+      if (!c.confirmation.empty()) md += fmt::format("  - {}\n", c.confirmation);
       if (c.replayed_clause)
         md += fmt::format("  - replayed: {}\n", c.replayed_clause->empty() ? "no clause named (did not reproduce)"
                                                  : *c.replayed_clause == c.clause ? "same clause"
