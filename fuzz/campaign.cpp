@@ -377,7 +377,7 @@ struct ImplementationChoice {
 
 bool is_implementation_variable(const std::string& v) {
   for (const char* n : {"VGC_FUZZ_PLUGIN=", "VGC_FUZZ_IMPL=", "VGC_FUZZ_TIMEOUT=", "VGC_FUZZ_VERSE_BONE_FORM=",
-                        "VGC_FUZZ_RESTART="})
+                        "VGC_FUZZ_RESTART=", "VGC_FUZZ_BASELINE="})
     if (v.rfind(n, 0) == 0) return true;
   return false;
 }
@@ -405,6 +405,8 @@ bool choose_implementation(const CampaignOptions& o, const std::string& name, bo
     if (o.call_timeout_s > 0) out->env.push_back(fmt::format("VGC_FUZZ_TIMEOUT={}", o.call_timeout_s));
     if (!o.verse_bone_form.empty()) out->env.push_back("VGC_FUZZ_VERSE_BONE_FORM=" + o.verse_bone_form);
     if (!o.restart.empty()) out->env.push_back("VGC_FUZZ_RESTART=" + o.restart);
+    // Known deviations do not stop libFuzzer (live_implementation.h).
+    if (!o.baseline.empty()) out->env.push_back("VGC_FUZZ_BASELINE=" + fs::absolute(o.baseline).string());
     return true;
   }
   if ((name != "differential" && !property) || o.impl.rfind("plugin:", 0) != 0) {

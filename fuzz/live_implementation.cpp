@@ -8,6 +8,7 @@
 
 #include <chrono>
 #include <cstdlib>
+#include <fstream>
 #include <thread>
 
 namespace vgc::fuzz {
@@ -84,6 +85,17 @@ LiveOptions live_options_from_environment() {
   }
   o.verse_bone_form = env_or("VGC_FUZZ_VERSE_BONE_FORM", "");
   o.restart = env_or("VGC_FUZZ_RESTART", "");
+  // The baseline's clause ids: the first word of every line that is not a
+  // comment (conformance/report/baseline.h; the campaign parsed it whole).
+  if (const std::string path = env_or("VGC_FUZZ_BASELINE", ""); !path.empty()) {
+    std::ifstream in(path);
+    std::string line;
+    while (std::getline(in, line)) {
+      const auto start = line.find_first_not_of(" \t");
+      if (start == std::string::npos || line[start] == '#') continue;
+      o.tolerated.insert(line.substr(start, line.find_first_of(" \t", start) - start));
+    }
+  }
   return o;
 }
 

@@ -19,6 +19,7 @@
 #pragma once
 
 #include <memory>
+#include <set>
 #include <string>
 
 #include "implementation.h"
@@ -30,6 +31,12 @@ struct LiveOptions {
   double timeout_s = 5;         // per call
   std::string verse_bone_form;  // "" = auto
   std::string restart;          // verse: shell command starting a fresh host; "" none
+  // Clauses of known deviations (VGC_FUZZ_BASELINE, the certify baseline
+  // file `vgc fuzz --baseline` was given, already checked by the
+  // campaign): a finding in one of them does not stop libFuzzer. A host
+  // that deviates at almost every input (r6) would otherwise be found
+  // deviating there again and again, and nothing past it explored.
+  std::set<std::string> tolerated;
 };
 
 // The options from VGC_FUZZ_IMPL, VGC_FUZZ_TIMEOUT, VGC_FUZZ_VERSE_BONE_FORM
