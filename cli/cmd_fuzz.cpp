@@ -222,7 +222,8 @@ void add_fuzz(CLI::App& app, int* exit_code) {
   sub->add_option("--seed", o.seed, "libFuzzer seed (default 1)");
   sub->add_option("--max-len", o.max_len, "Longest input in bytes (libFuzzer -max_len, default 1024)");
   sub->add_option("--baseline", o.baseline,
-                  "Known deviations (the certify baseline format): their clauses are marked, not new");
+                  "Known deviations (the certify baseline format): their clauses are marked, not new; with "
+                  "--impl exec:/verse: the target also passes over them (a crash or hang excepted)");
   sub->add_flag("--empty-corpus", o.empty_corpus, "Start from no input, not the committed corpus");
   sub->add_flag("--stop-at-first", o.stop_at_first, "Stop at the first finding (time to find)");
   sub->add_option("--fuzz-build", o.fuzz_build, "The clang -DVGC_FUZZ=ON build directory");
