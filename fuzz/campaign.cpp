@@ -755,7 +755,15 @@ int run_campaign(const CampaignOptions& o, CampaignSummary* out) {
     ++s.crash_inputs_signed;
     const std::string output = run_capture("timeout 5 env " + env_prefix(target_env) + shell_quote(binary.string()) +
                                            " " + shell_quote(f.string()) + " 2>&1");
-    const CrashSignature sig = crash_signature(output);
+    CrashSignature sig = crash_signature(output);
+    // A live implementation's finding that the input alone does not show
+    // again (it depended on the instance's history or on timing; the
+    // target's own confirmation says which in fuzzer.log): said so, not
+    // "unknown".
+    if (!impl.live.empty() && sig.key == "unknown" && output.find("FINDING") == std::string::npos)
+      sig = {"not reproduced", "not reproduced: the input alone, re-run on a fresh instance, showed nothing (the "
+                               "finding depended on the implementation's history or timing; its FINDING line is in "
+                               "fuzzer.log)"};
     Group& g = unique[sig.key];
     g.shown[f] = sig.shown;
     g.files.push_back(f);

@@ -22,6 +22,8 @@
 #include "clause.h"
 #include "command_text.h"
 #include "display_text.h"
+#include "document_diff.h"
+#include "snapshot.h"
 #include "live_implementation.h"
 #include "node.h"
 #include "verse_client.h"
@@ -634,6 +636,14 @@ Outcome check_after(Session* s, const WireInput& in, const std::vector<Command>&
   out.hostile_lost = !s->hostile->connected() ||
                      !s->hostile->barrier(s->sut->node_id(), std::min(1.0, o.timeout_s), &before).ok();
   auto found = [&](Finding f) {
+    if (f.status != FindingStatus::Fail) {
+      // The command was only there to see the host answer: a host that
+      // stops answering (any session, a login) after an input breaks
+      // STABLE-1, whatever the command's own clause.
+      f.clause = "STABLE-1";
+      f.rules.clear();
+      f.message = "the host stopped answering: " + f.message;
+    }
     f.message = fmt::format("after hostile input {} ({}: {}): {}", index, in.kind, in.what, f.message);
     out.finding = std::move(f);
     return out;
@@ -645,6 +655,19 @@ Outcome check_after(Session* s, const WireInput& in, const std::vector<Command>&
   for (std::size_t i = 0; i + 1 < applied.size(); ++i) model.apply(applied[i]);
   AlreadySent sent(*s->sut);
   const StepResult judged = check_step(model, applied.empty() ? no_op() : applied.back(), sent, &after);
+  if (judged.failure && applied.empty() && judged.failure->status == FindingStatus::Fail) {
+    // The input held no command a conforming host applies, yet the node
+    // changed: the host acted on malformed bytes (ATOMIC-1: what is not
+    // applied changes nothing). What changed is the snapshot's difference.
+    Finding f = *judged.failure;
+    f.clause = "ATOMIC-1";
+    f.rules.clear();
+    const Document snap = s->sut->snapshot();
+    const auto d = diff_documents(without_subscriptions(print_snapshot(model)), without_subscriptions(snap.text));
+    f.message = "the input holds no command a conforming host applies, yet the node changed: " +
+                (d ? d->describe() : f.message);
+    return found(f);
+  }
   if (judged.failure) return found(*judged.failure);
   s->model = std::move(after);
   // Then a probe: the host still applies a command sent the normal way.

@@ -73,7 +73,7 @@ python3 - "$(summary_of "$work/dies")" <<'PY' || fail "dies summary"
 import json, sys
 s = json.load(open(sys.argv[1]))
 f = s["findings"]
-assert len(f) == 1 and f[0]["status"] in ("timeout", "crash"), f
+assert len(f) == 1 and f[0]["status"] in ("timeout", "crash") and f[0]["clause"] == "STABLE-1", f
 assert f[0]["confirmation"].startswith("not confirmed:") and "--restart" in f[0]["confirmation"], f[0]["confirmation"]
 assert "--restart" in s["stopped_because"], s["stopped_because"]
 assert s["wall_s"] < 25, s["wall_s"]
