@@ -97,6 +97,11 @@ std::string replay_command(const std::string& file, const std::string& implement
   return vgc_environment_prefix() + program_command() + " replay " + shell_quote(file) + " --impl " + shell_quote(implementation_spec);
 }
 
+std::string replay_command(const std::string& file, const ReportContext& ctx) {
+  return ctx.environment_prefix.value_or(vgc_environment_prefix()) + program_command() + " replay " +
+         shell_quote(file) + " --impl " + shell_quote(ctx.implementation_spec);
+}
+
 std::string render_counterexample(const ClauseOutcome& co, const ReportContext& ctx) {
   const std::string file = (fs::path(ctx.run_dir) / counterexample_path(co)).string();
   std::string out;
@@ -109,7 +114,7 @@ std::string render_counterexample(const ClauseOutcome& co, const ReportContext& 
     if (ch == '\n') ch = ' ';
   out += "# finding: " + msg + "\n";
   out += "# spec (" + std::string(co.clause->source) + "): " + std::string(co.clause->text) + "\n";
-  out += "# replay: " + replay_command(file, ctx.implementation_spec) + "\n";
+  out += "# replay: " + replay_command(file, ctx) + "\n";
   if (co.program.request) {
     out += "# " + std::to_string(co.program.commands.size()) +
            " commands from a fresh node; then the check of the capability \"" + co.program.request->capability +

@@ -148,7 +148,7 @@ void finding_section(pugi::xml_node parent, const ClauseOutcome& co, const Verdi
   add_text(h4, ")");
   add(sec, "pre", print_program(co.program), "program");
   add(sec, "h4", "Replay");
-  add(sec, "pre", replay_command(file, ctx.implementation_spec), "replay");
+  add(sec, "pre", replay_command(file, ctx), "replay");
 }
 
 }  // namespace

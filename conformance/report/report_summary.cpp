@@ -69,7 +69,7 @@ std::string render_summary(const RunResult& run, const Verdict& v, const ReportC
                          co.tolerated_from_start ? "First program it was seen on (tolerated from the start, not shrunk)"
                                                  : "Shrunk counterexample",
                          co.program.commands.size(), co.found_by, co.seed, print_program(co.program));
-      out += fmt::format("Replay: `{}`\n\n", replay_command(file, ctx.implementation_spec));
+      out += fmt::format("Replay: `{}`\n\n", replay_command(file, ctx));
     }
   };
   section(v.new_failures, "Failures", "");
