@@ -20,6 +20,8 @@
 #include <sstream>
 #include <vector>
 
+#include "mesh_certification.h"
+#include "obj_import.h"
 #include "baseline.h"
 #include "cancel.h"
 #include "clause.h"
@@ -51,6 +53,8 @@ struct Options {
   std::string reports = "reports";
   bool quiet = false;
   bool strict = false;
+  std::string mesh;  // --mesh FILE.obj: the derived-geometry checks on that mesh instead
+  int levels = 2;    // --levels: subdivision levels judged on --mesh
 };
 
 std::string utc_now() {
@@ -173,7 +177,56 @@ std::string rerun_command(const Options& o) {
   return c;
 }
 
+// `vgc certify --mesh FILE.obj`: the mesh (obj_import.h) built on a fresh
+// instance and on the reference, then each claimed derived-geometry
+// capability judged per level (mesh_certification.h). Prints one line per
+// check; exit 0 every judged check passes, 1 a failure (or the mesh could
+// not be built as the reference builds it), 2 the file is bad or nothing
+// could be judged. No report directory is written.
+int run_mesh(const Options& o) {
+  if (o.levels < 1 || o.levels > 4)
+    return usage(fmt::format("--levels is {}: give 1 to 4 subdivision levels (default 2)", o.levels));
+  ObjMesh mesh;
+  ObjError error;
+  if (!import_obj(o.mesh, &mesh, &error)) {
+    if (error.line) say(stderr, "{}:{}:{}: error: {}\n", o.mesh, error.line, error.column, error.message);
+    else say(stderr, "vgc certify: --mesh {}: {}\n", o.mesh, error.message);
+    return 2;
+  }
+  install_cancel_handlers();
+  auto sut = open_impl_or_report("certify", o.impl, o.timeout, o.verse_bone_form);
+  if (!sut) return 2;
+  register_oracle_checks();
+  say(stderr, "vgc certify: {} on {} ({} vertices, {} triangles, {} quads; up to level {})\n", o.impl, o.mesh,
+      mesh.vertices, mesh.triangles, mesh.quads, o.levels);
+  const MeshCertification r = certify_mesh(mesh, *sut, o.levels);
+  if (r.build_failure) {
+    say("  fail        {:<18} building the mesh ({} commands, {:.1f} s): {}\n", r.build_failure->clause, r.commands,
+        r.build_seconds, r.build_failure->message);
+  } else {
+    say("  built       the mesh: {} commands, the same snapshot as the reference ({:.1f} s)\n", r.commands,
+        r.build_seconds);
+  }
+  std::map<std::string, int> tally;
+  for (const MeshCheckOutcome& c : r.checks) {
+    ++tally[c.status];
+    const std::string what = c.capability + (c.level ? fmt::format(" level {}", c.level) : "");
+    const std::string detail = c.finding ? c.finding->message : c.note;
+    say("  {:<11} {:<18} {:<20} {:>6.2f} s  {}\n", c.status, c.clause, what, c.seconds,
+        detail.size() > 300 ? detail.substr(0, 300) + "..." : detail);
+  }
+  std::string counts;
+  for (const auto& [status, n] : tally) counts += fmt::format("{}{} {}", counts.empty() ? "" : ", ", n, status);
+  const char* verdict = r.any_failed() ? "not conformant" : r.any_judged() ? "conformant" : "incomplete";
+  say("{}: {} on {} ({})\n", o.impl, verdict, o.mesh, counts.empty() ? "no check run" : counts);
+  if (!r.any_failed() && !r.any_judged())
+    say("  nothing was judged: the implementation claims none of manifold, subdivision, normals, loop "
+        "(docs/adapters.md section 5)\n");
+  return r.any_failed() ? 1 : r.any_judged() ? 0 : 2;
+}
+
 int run(const Options& o) {
+  if (!o.mesh.empty()) return run_mesh(o);
   RunOptions ro;
   ro.seed = o.seed;
   ro.cases = o.cases;
@@ -332,6 +385,10 @@ void add(CLI::App& app, int* exit_code) {
       ->capture_default_str();
   sub->add_option("--reports", o->reports, "Directory for reports")->capture_default_str();
   sub->add_flag("--quiet", o->quiet, "No progress line");
+  sub->add_option("--mesh", o->mesh,
+                  "A Wavefront OBJ mesh: build it on the implementation and run the derived-geometry checks "
+                  "(manifold, subdivision per level, normals, loop) on it instead of the catalog");
+  sub->add_option("--levels", o->levels, "With --mesh: subdivision levels to judge (1 to 4)")->capture_default_str();
   sub->add_flag("--strict", o->strict,
                 "Also gate on IMPLEMENTATION-DEFINED clauses (the suite's reading of points the spec leaves open)");
   sub->callback([o, exit_code] { *exit_code = run(*o); });
