@@ -12,6 +12,7 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <chrono>
 #include <cstring>
 #include <ctime>
 #include <filesystem>
@@ -182,10 +183,14 @@ std::string rerun_command(const Options& o) {
 // capability judged per level (mesh_certification.h). Prints one line per
 // check; exit 0 every judged check passes, 1 a failure (or the mesh could
 // not be built as the reference builds it), 2 the file is bad or nothing
-// could be judged. No report directory is written.
+// could be judged. The run directory under --reports has the usual files
+// (one "property" per check and level).
 int run_mesh(const Options& o) {
   if (o.levels < 1 || o.levels > 4)
     return usage(fmt::format("--levels is {}: give 1 to 4 subdivision levels (default 2)", o.levels));
+  if (std::string why; !reports_writable(o.reports, &why))
+    return usage("cannot write reports under '" + o.reports + "' (" + why +
+                 "): give --reports a directory you can write (it is created if missing)");
   ObjMesh mesh;
   ObjError error;
   if (!import_obj(o.mesh, &mesh, &error)) {
@@ -199,7 +204,22 @@ int run_mesh(const Options& o) {
   register_oracle_checks();
   say(stderr, "vgc certify: {} on {} ({} vertices, {} triangles, {} quads; up to level {})\n", o.impl, o.mesh,
       mesh.vertices, mesh.triangles, mesh.quads, o.levels);
+  const auto t0 = std::chrono::steady_clock::now();
+  const std::string started = utc_now();
   const MeshCertification r = certify_mesh(mesh, *sut, o.levels);
+  const RunResult run = mesh_run_result(r, mesh, sut->name(),
+                                        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+  ReportContext ctx;
+  ctx.implementation_spec = o.impl;
+  ctx.started = started;
+  ctx.command_line = vgc_environment_prefix() + program_command() + " certify --mesh " + shell_quote(o.mesh) +
+                     " --impl " + shell_quote(o.impl) + " --levels " + std::to_string(o.levels);
+  const Verdict verdict = judge(run, nullptr, o.strict);
+  std::string werror;
+  if (!claim_run_dir(o.reports, run, &ctx, &werror) || !write_report(o.reports, run, verdict, ctx, &werror)) {
+    say(stderr, "vgc certify: {}: no report was written\n", werror);
+    return 2;
+  }
   if (r.build_failure) {
     say("  fail        {:<18} building the mesh ({} commands, {:.1f} s): {}\n", r.build_failure->clause, r.commands,
         r.build_seconds, r.build_failure->message);
@@ -217,11 +237,12 @@ int run_mesh(const Options& o) {
   }
   std::string counts;
   for (const auto& [status, n] : tally) counts += fmt::format("{}{} {}", counts.empty() ? "" : ", ", n, status);
-  const char* verdict = r.any_failed() ? "not conformant" : r.any_judged() ? "conformant" : "incomplete";
-  say("{}: {} on {} ({})\n", o.impl, verdict, o.mesh, counts.empty() ? "no check run" : counts);
+  const char* verdict_name = r.any_failed() ? "not conformant" : r.any_judged() ? "conformant" : "incomplete";
+  say("{}: {} on {} ({})\n", o.impl, verdict_name, o.mesh, counts.empty() ? "no check run" : counts);
   if (!r.any_failed() && !r.any_judged())
     say("  nothing was judged: the implementation claims none of manifold, subdivision, normals, loop "
         "(docs/adapters.md section 5)\n");
+  say("report: {}/summary.md\n", ctx.run_dir);
   return r.any_failed() ? 1 : r.any_judged() ? 0 : 2;
 }
 

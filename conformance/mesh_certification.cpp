@@ -5,6 +5,7 @@
 #include <chrono>
 
 #include "capability.h"
+#include "clause.h"
 #include "command_text.h"
 #include "document_diff.h"
 #include "node.h"
@@ -95,12 +96,13 @@ MeshCertification certify_mesh(const ObjMesh& mesh, Implementation& sut, int lev
     if (!is_claimed) {
       o.status = "not-claimed";
       o.note = sut.name() + " does not claim \"" + p.capability + "\"";
-    } else if (!check || !check->check) {
+    } else if (!check || (!check->check && !check->check_drawn)) {
       o.status = "no-oracle";
       o.note = "this vgc has no oracle linked for \"" + std::string(p.capability) + "\"";
     } else {
       const auto t = Clock::now();
-      std::optional<Finding> f = check->check(model, sut, p.level == 0 ? 1 : p.level);
+      const CapabilityRequest request{p.capability, p.level == 0 ? 1 : p.level, std::nullopt};
+      std::optional<Finding> f = run_capability_check(*check, model, sut, request);
       o.seconds = since(t);
       if (!f) {
         o.status = "pass";
@@ -115,6 +117,89 @@ MeshCertification certify_mesh(const ObjMesh& mesh, Implementation& sut, int lev
     out.checks.push_back(std::move(o));
   }
   return out;
+}
+
+RunResult mesh_run_result(const MeshCertification& m, const ObjMesh& mesh, const std::string& implementation,
+                          double seconds) {
+  RunResult run;
+  run.implementation = implementation;
+  run.options.cases = 1;
+  run.options.seed = 0;
+  run.seconds = seconds;
+  run.conformant = !m.any_failed();
+  run.complete = true;
+  const std::string found_by = "mesh";
+  if (m.build_failure) {
+    ClauseOutcome co;
+    co.clause = find_clause(m.build_failure->clause);
+    co.status = "fail";
+    co.finding = m.build_failure;
+    co.found_by = found_by + ".build";
+    co.program = mesh.program;
+    co.exercised = 1;
+    co.properties = {co.found_by};
+    if (co.clause) run.clauses.push_back(std::move(co));
+    PropertyOutcome p;
+    p.id = found_by + ".build";
+    p.status = "fail";
+    p.cases = p.cases_target = p.judged = 1;
+    p.seconds = m.build_seconds;
+    run.properties.push_back(p);
+    return run;
+  }
+  // Clauses in the order of the checks (catalog order for these four).
+  std::vector<std::string> order;
+  for (const auto& c : m.checks)
+    if (std::find(order.begin(), order.end(), c.clause) == order.end()) order.push_back(c.clause);
+  for (const auto& c : m.checks) {
+    PropertyOutcome p;
+    p.id = found_by + "." + c.capability + (c.level ? ".level" + std::to_string(c.level) : "");
+    p.status = c.status == "pass" || c.status == "fail" ? c.status : "skipped";
+    if (p.status == "skipped") p.note = c.note;
+    p.cases_target = 1;
+    p.cases = c.status == "not-claimed" || c.status == "no-oracle" ? 0 : 1;
+    p.judged = c.status == "pass" || c.status == "fail" ? 1 : 0;
+    p.not_judged = c.status == "not-judged" ? 1 : 0;
+    p.seconds = c.seconds;
+    if (c.finding) {
+      PropertyFinding pf;
+      pf.finding = *c.finding;
+      p.findings.push_back(pf);
+    }
+    run.properties.push_back(p);
+  }
+  for (const std::string& id : order) {
+    ClauseOutcome co;
+    co.clause = find_clause(id);
+    if (!co.clause) continue;
+    bool any_pass = false, claimed = false;
+    std::string unjudged;
+    for (const auto& c : m.checks) {
+      if (c.clause != id) continue;
+      const std::string prop = found_by + "." + c.capability + (c.level ? ".level" + std::to_string(c.level) : "");
+      if (c.status != "not-claimed") claimed = true;
+      if (c.status == "pass" || c.status == "fail") {
+        co.properties.push_back(prop);
+        ++co.exercised;
+      }
+      if (c.status == "pass") any_pass = true;
+      if ((c.status == "not-judged" || c.status == "no-oracle") && unjudged.empty())
+        unjudged = prop + ": " + c.note;
+      if (c.status == "fail" && !co.finding) {
+        co.finding = c.finding;
+        co.found_by = prop;
+        co.program.commands = mesh.program.commands;
+        co.program.request = CapabilityRequest{c.capability, c.level == 0 ? 1 : c.level, std::nullopt};
+      }
+    }
+    if (co.finding) co.status = "fail";
+    else if (!claimed) co.status = "not-claimed", co.note = "the implementation does not claim it";
+    else if (!unjudged.empty() && !any_pass) co.status = "unchecked", co.note = unjudged;
+    else co.status = "pass";
+    if (co.status == "unchecked") run.complete = false;
+    run.clauses.push_back(std::move(co));
+  }
+  return run;
 }
 
 }  // namespace vgc

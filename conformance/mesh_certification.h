@@ -27,6 +27,7 @@
 #include "check_step.h"
 #include "implementation.h"
 #include "obj_import.h"
+#include "runner.h"
 
 namespace vgc {
 
@@ -53,5 +54,15 @@ struct MeshCertification {
 };
 
 MeshCertification certify_mesh(const ObjMesh& mesh, Implementation& sut, int levels);
+
+// The certification as a run the report writers take (report.h): one
+// "property" per check and level (mesh.<capability>[.level<N>], one case
+// each), one clause outcome per clause judged (fail when any level
+// failed: the finding of the first, its program the mesh's commands and
+// the capability check; pass when every judged level passed; not-claimed,
+// or unchecked when no level could be judged). A mesh the implementation
+// did not build as the reference is the build finding's clause, failed.
+RunResult mesh_run_result(const MeshCertification& m, const ObjMesh& mesh, const std::string& implementation,
+                          double seconds);
 
 }  // namespace vgc

@@ -46,6 +46,12 @@ bool claim_run_dir(const std::string& reports_root, const RunResult& run, Report
 
 // File name, relative to the run directory, of a clause's counterexample.
 std::string counterexample_path(const ClauseOutcome& co);
+// The counterexample's program as summary.md and report.html show it
+// inline: the whole of it up to kInlineCommands commands; beyond (a user's
+// mesh, `certify --mesh`), its first and last commands and a line naming
+// the file that holds all of it.
+inline constexpr std::size_t kInlineCommands = 200;
+std::string inline_program(const ClauseOutcome& co);
 // The one-line command that replays a counterexample file.
 std::string replay_command(const std::string& file, const std::string& implementation_spec);
 // The same for this run's implementation and environment (ctx).

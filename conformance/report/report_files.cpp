@@ -79,6 +79,17 @@ std::string counterexample_path(const ClauseOutcome& co) {
   return "counterexamples/" + std::string(co.clause->id) + ".vgc";
 }
 
+std::string inline_program(const ClauseOutcome& co) {
+  const std::size_t n = co.program.commands.size();
+  if (n <= kInlineCommands) return print_program(co.program);
+  Program head, tail;
+  head.commands.assign(co.program.commands.begin(), co.program.commands.begin() + 20);
+  tail.commands.assign(co.program.commands.end() - 20, co.program.commands.end());
+  tail.request = co.program.request;
+  return print_program(head) + "# ... " + std::to_string(n - 40) + " more commands (" + std::to_string(n) +
+         " in all: " + counterexample_path(co) + " holds every one) ...\n" + print_program(tail);
+}
+
 std::string vgc_environment_prefix() {
   std::vector<std::string> vars;
   for (char** e = environ; e && *e; ++e) {

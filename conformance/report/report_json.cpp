@@ -87,7 +87,10 @@ std::string render_report_json(const RunResult& run, const Verdict& v, const Rep
       // its whole text, the first differing lines.
       const Finding& f = *co.finding;
       if (!f.shown_by.empty()) c["shown_by"] = f.shown_by;
-      if (!f.observed_document.empty()) c["observed_document"] = f.observed_document;
+      // (Up to 4 MiB: an answer about a user's whole mesh, certify --mesh, can
+      // be far larger; report.html then draws that finding from the run itself.)
+      if (!f.observed_document.empty() && f.observed_document.size() <= (4u << 20))
+        c["observed_document"] = f.observed_document;
       if (!f.expected_line.empty()) c["expected_line"] = f.expected_line;
       if (!f.observed_line.empty()) c["observed_line"] = f.observed_line;
       if (co.program.request) {  // the capability check vgc replay repeats after the commands

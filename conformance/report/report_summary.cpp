@@ -68,7 +68,7 @@ std::string render_summary(const RunResult& run, const Verdict& v, const ReportC
       out += fmt::format("{} ({} commands, from a fresh node; found by `{}`, seed {}):\n\n```\n{}```\n\n",
                          co.tolerated_from_start ? "First program it was seen on (tolerated from the start, not shrunk)"
                                                  : "Shrunk counterexample",
-                         co.program.commands.size(), co.found_by, co.seed, print_program(co.program));
+                         co.program.commands.size(), co.found_by, co.seed, inline_program(co));
       out += fmt::format("Replay: `{}`\n\n", replay_command(file, ctx));
     }
   };

@@ -8,7 +8,8 @@
 # answers are skewed (subdivision_skew_proxy.py) fails SUBD-CATMARK-1 at
 # levels 1 and 2 and nothing else (exit 1); the fault plugin with
 # classify-misses-boundary fails MESH-CLASSIFY-1; a plugin claiming no
-# capability has nothing judged (exit 2).
+# capability has nothing judged (exit 2). The skewed run's directory holds
+# the report, its picture marking the divergent refined points.
 set -uo pipefail
 [ $# -ge 3 ] || { echo "usage: $0 VGC REQUESTS_PLUGIN PLAIN_PLUGIN" >&2; exit 2; }
 vgc=$1 requests=$2 plain=$3
@@ -50,9 +51,15 @@ check() {  # check NAME EXPECTED_RC LINE-REGEX... : certify --mesh output has ea
 check ref 0 '^  pass +MESH-CLASSIFY-1 +manifold' '^  pass +NORMALS-SPLIT-1 +normals' \
   '^  pass +SUBD-CATMARK-1 +subdivision level 1' '^  pass +SUBD-CATMARK-1 +subdivision level 2' ': conformant on grid.obj'
 
-"$vgc" certify --mesh grid.obj --levels 2 --impl "exec:$here/subdivision_skew_proxy.py $vgc" >skew.out 2>&1; echo $? >skew.rc
+"$vgc" certify --mesh grid.obj --levels 2 --impl "exec:$here/subdivision_skew_proxy.py $vgc" --reports R \
+  >skew.out 2>&1; echo $? >skew.rc
 check skew 1 '^  fail +SUBD-CATMARK-1 +subdivision level 1 .*OpenSubdiv' '^  fail +SUBD-CATMARK-1 +subdivision level 2' \
   '^  pass +MESH-CLASSIFY-1' '^  pass +NORMALS-SPLIT-1' 'not conformant on grid.obj \(2 fail, 2 pass\)'
+# Its run directory: the finding with the picture of the refined points.
+run=$(sed -n 's/^report: \(.*\)\/summary.md$/\1/p' skew.out)
+[ -s "$run/report.json" ] && [ -s "$run/counterexamples/SUBD-CATMARK-1.vgc" ] || fail "skew: no run directory written"
+grep -q 'class="divergent-expected"' "$run/report.html" || fail "skew: report.html draws no divergent point"
+grep -q '"id": "mesh.subdivision.level1"' "$run/report.json" || fail "skew: report.json has no per-level check"
 
 VGC_FAULT=classify-misses-boundary "$vgc" certify --mesh grid.obj --impl "plugin:$requests" >classify.out 2>&1
 echo $? >classify.rc
