@@ -41,6 +41,7 @@ struct FuzzArgs {
   fuzz::CampaignOptions campaign;
   std::string to_text, to_binary, output;
   bool all = false;
+  bool cpu_time = false;                  // --cpu-time
   std::vector<std::string> target_times;  // NAME=S
   std::vector<std::string> only;          // --targets
   std::string work_corpus;
@@ -57,6 +58,7 @@ int run_all(const FuzzArgs& a) {
   }
   fuzz::SoakOptions o;
   o.time_s = c.time_s;
+  o.cpu_time = a.cpu_time;
   o.jobs = c.jobs;
   o.seed = c.seed;
   o.fuzz_build = c.fuzz_build;
@@ -82,6 +84,7 @@ int run_all(const FuzzArgs& a) {
     command += " --target-time " + nt;
   }
   command += fmt::format(" --jobs {} --seed {}", c.jobs, c.seed);
+  if (a.cpu_time) command += " --cpu-time";
   if (!a.work_corpus.empty()) command += " --work-corpus " + a.work_corpus;
   return fuzz::run_soak(o, command);
 }
@@ -133,6 +136,10 @@ int run_fuzz(const FuzzArgs& a) {
     return write_file(a.output, bytes) ? 0 : 2;
   }
   if (a.all) return run_all(a);
+  if (a.cpu_time) {
+    say(stderr, "vgc fuzz: --cpu-time is for a soak (--all); one campaign's --time is wall-clock\n");
+    return 2;
+  }
   if (a.campaign.target.empty()) {
     say(stderr, "vgc fuzz: name a target (stream, text, differential, verse_packet, mesh_manifold, mesh_subdivision, "
                        "property_<group>) or use --to-text / --to-binary\n");
@@ -165,6 +172,9 @@ void add_fuzz(CLI::App& app, int* exit_code) {
                 "merges into a work corpus and writes a table (docs/fuzzing.md \"Soak\")");
   sub->add_option("--target-time", a->target_times,
                   "With --all: NAME=SECONDS for one target instead of --time (repeatable)");
+  sub->add_flag("--cpu-time", a->cpu_time,
+                "With --all: --time and --target-time are CPU seconds of each target (libFuzzer and its jobs), "
+                "not wall-clock, so a soak on a busy machine still gets its budget (wall capped at 6x)");
   sub->add_option("--targets", a->only, "With --all: only these targets (comma-separated)")->delimiter(',');
   sub->add_option("--work-corpus", a->work_corpus,
                   "With --all: the work corpus directory (default reports/fuzz/work-corpus)");

@@ -34,6 +34,7 @@
 #include "exec_implementation.h"
 #include "minimize_finding.h"
 #include "minimize_input.h"
+#include "process_cpu.h"
 
 namespace vgc::fuzz {
 namespace {
@@ -117,6 +118,7 @@ bool parse_progress(const std::string& line, Progress* p) {
 struct RunResult {
   int exit = -1;
   bool killed = false;  // still running at the deadline: its process group was killed
+  bool cpu_spent = false;  // stopped because the group had used its CPU budget (cpu_limit_s)
   double cpu_s = 0;     // user + system of the child and the descendants it waited for
 };
 
@@ -139,11 +141,15 @@ std::vector<std::string> child_environment(const std::vector<std::string>& env_a
 
 // Runs argv (in a process group of its own) with env additions,
 // stdout+stderr into `on_line` line by line, until it exits or `deadline`
-// passes; then SIGTERM to the whole group, SIGKILL 2 s later.
+// passes; then SIGTERM to the whole group, SIGKILL 2 s later. With
+// cpu_limit_s > 0 the group is also stopped so once it has used that many
+// CPU seconds (process_cpu.h, read at most once a second); its CPU time is
+// then the larger of that reading and the kernel's rusage, which misses a
+// job killed before its parent waited for it.
 RunResult run_streaming(const std::vector<std::string>& argv, const std::vector<std::string>& env_add,
                         std::chrono::steady_clock::time_point deadline,
                         const std::function<void(const std::string&)>& on_line,
-                        const std::function<bool()>& stop_now) {
+                        const std::function<bool()>& stop_now, double cpu_limit_s = 0) {
   RunResult result;
   const std::vector<std::string> env = child_environment(env_add);
   std::vector<char*> args, envp;
@@ -194,13 +200,23 @@ RunResult run_streaming(const std::vector<std::string>& argv, const std::vector<
     return false;
   };
   bool reaped = false, stopped = false;
+  double cpu_read = 0;
+  auto next_cpu_read = std::chrono::steady_clock::now();
+  auto budget_spent = [&] {
+    if (cpu_limit_s <= 0 || std::chrono::steady_clock::now() < next_cpu_read) return false;
+    next_cpu_read = std::chrono::steady_clock::now() + std::chrono::seconds(1);
+    cpu_read = std::max(cpu_read, process_group_cpu_seconds(pid));
+    return cpu_read >= cpu_limit_s;
+  };
   while (open) {
     const auto now = std::chrono::steady_clock::now();
     const bool late = now >= deadline;
-    if (late || (stop_now && stop_now())) {
+    const bool spent = !late && budget_spent();
+    if (late || spent || (stop_now && stop_now())) {
       reaped = kill_group(late);
       if (!late) reaped = reaped || reap(nullptr, 0) == pid;
       stopped = !late;
+      result.cpu_spent = spent;
       break;
     }
     const int ms = static_cast<int>(
@@ -236,6 +252,11 @@ RunResult run_streaming(const std::vector<std::string>& argv, const std::vector<
       }
       usleep(50 * 1000);
     }
+  }
+  result.cpu_s = std::max(result.cpu_s, cpu_read);
+  if (result.cpu_spent) {
+    result.exit = 0;  // stopped at its budget: the end asked for, as -max_total_time's
+    return result;
   }
   if (reaped || result.killed || stopped) {
     result.exit = 128 + SIGTERM;
@@ -652,7 +673,7 @@ void run_libfuzzer(CampaignRun* r) {
       fmt::print(stderr, "[{:5.0f}/{:.0f} s] {}\n", t, o.time_s, figures);
       last_print = now;
     }
-  }, stop_now);
+  }, stop_now, o.cpu_time_s);
   const RunResult& rr = r->fuzzed;
   if (rr.killed) log << "vgc fuzz: still running " << o.time_s + grace << " s after the start: process group killed\n";
   log.close();
@@ -660,6 +681,7 @@ void run_libfuzzer(CampaignRun* r) {
   s.libfuzzer_exit = rr.exit;
   s.killed_at_deadline = rr.killed;
   s.cpu_s = rr.cpu_s;
+  s.cpu_budget_spent = rr.cpu_spent;
   if (rr.killed) fmt::print(stderr, "vgc fuzz: libFuzzer overran --time {} s: killed\n", o.time_s);
 }
 
@@ -1030,6 +1052,7 @@ std::string summary_json(const CampaignSummary& s) {
             {"wall_s", s.wall_s},
             {"cpu_s", s.cpu_s},
             {"killed_at_deadline", s.killed_at_deadline},
+            {"cpu_budget_spent", s.cpu_budget_spent},
             {"empty_corpus", s.empty_corpus},
             {"stop_at_first", s.stop_at_first},
             {"baseline", s.baseline},
@@ -1061,7 +1084,10 @@ std::string summary_markdown(const CampaignSummary& s) {
       "| corpus | {} files, {} bytes ({} seeds{}) |\n| crash inputs | {} ({} re-run and signed; {} unique, {} new) |\n"
       "| time to first finding | {} |\n",
       s.target, s.run, s.implementation, s.seed, s.jobs, s.time_s, s.wall_s,
-      s.killed_at_deadline ? "; libFuzzer overran and was killed" : "", s.cpu_s, s.executions, s.exec_per_s_mean,
+      s.killed_at_deadline ? "; libFuzzer overran and was killed"
+      : s.cpu_budget_spent ? "; stopped at its CPU budget"
+                           : "",
+      s.cpu_s, s.executions, s.exec_per_s_mean,
       s.exec_per_s_last, s.cov, s.ft, s.corpus_files, s.corpus_bytes, s.seed_files,
       s.empty_corpus ? ", started empty" : "", s.crash_inputs, s.crash_inputs_signed, s.crashes.size(),
       s.new_crashes, secs(s.time_to_first_finding_s));

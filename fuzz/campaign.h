@@ -34,6 +34,10 @@ namespace vgc::fuzz {
 struct CampaignOptions {
   std::string target;         // stream, text, differential, mesh_*, property_<group> (fuzz_ optional)
   double time_s = 60;         // wall-clock limit of the fuzzing
+  // > 0: also stop once libFuzzer and its jobs have used this many CPU
+  // seconds (process_cpu.h); time_s is then the wall-clock cap. A soak on
+  // a shared machine gets its budget however busy the machine is.
+  double cpu_time_s = 0;
   int jobs = 1;               // libFuzzer -fork=N
   std::string impl;           // "", "reference" or "plugin:PATH" (differential, property_*)
   unsigned seed = 1;
@@ -107,6 +111,7 @@ struct CampaignSummary {
   // (fork mode): what the fuzzing cost, whatever else the machine ran.
   double cpu_s = 0;
   bool killed_at_deadline = false;   // libFuzzer overran --time and was killed
+  bool cpu_budget_spent = false;     // stopped at its CPU budget (cpu_time_s), not by time
   bool empty_corpus = false, stop_at_first = false;
   std::string baseline;
   long long executions = 0, exec_per_s_last = 0, cov = 0, ft = 0;

@@ -108,6 +108,11 @@ SoakRow run_one(const SoakOptions& o, const std::string& name, const fs::path& s
   // time counted): libFuzzer's job k runs min(300, k) s, and after T s of
   // jobs of 1, 2, 3, ... s the running one is about sqrt(2 T) s long.
   c.grace_s = std::min(300.0, std::ceil(std::sqrt(2 * row.time_s))) + 10;
+  if (o.cpu_time) {
+    // Stopped at its CPU budget; the wall clock only caps a starved run.
+    c.cpu_time_s = row.time_s;
+    c.time_s = row.time_s * o.wall_cap_factor;
+  }
   c.progress = [](const std::string&) {};
   c.extra_corpora = {(src / "corpora" / "fuzz" / (row.target + "-crashes")).string(), work.string()};
   row.work_files_before = count_files(work);
@@ -124,6 +129,7 @@ SoakRow run_one(const SoakOptions& o, const std::string& name, const fs::path& s
   row.ft = s.ft;
   row.crash_inputs = s.crash_inputs;
   row.killed = s.killed_at_deadline;
+  row.cpu_budget_spent = s.cpu_budget_spent;
   row.findings = s.crashes.size();
   for (const CampaignCrash& k : s.crashes) row.signatures.push_back(k.signature);
   const auto merge_start = std::chrono::steady_clock::now();
@@ -177,6 +183,7 @@ int run_soak(const SoakOptions& o, const std::string& command, SoakSummary* out)
   SoakSummary s;
   s.seed = o.seed;
   s.jobs = o.jobs;
+  s.cpu_time = o.cpu_time;
   s.command = command;
   s.work_corpus = fs::absolute(work_root).string();
   const fs::path runs = src / "reports" / "fuzz" / "soak";
@@ -199,8 +206,9 @@ int run_soak(const SoakOptions& o, const std::string& command, SoakSummary* out)
                    [&](std::size_t a, std::size_t b) { return time_of(o, names[a]) > time_of(o, names[b]); });
   double total = 0;
   for (const std::string& n : names) total += time_of(o, n);
-  fmt::print(stderr, "vgc fuzz --all: {} targets, {:.0f} s of fuzzing, {} at a time (about {:.0f} s), seed {}\n  run: {}\n",
-             names.size(), total, o.jobs, total / o.jobs, o.seed, s.run_dir);
+  fmt::print(stderr, "vgc fuzz --all: {} targets, {:.0f} {}s of fuzzing, {} at a time (about {:.0f} s{}), seed {}\n  run: {}\n",
+             names.size(), total, o.cpu_time ? "CPU " : "", o.jobs, total / o.jobs,
+             o.cpu_time ? " on an idle machine" : "", o.seed, s.run_dir);
   std::vector<SoakRow> rows(names.size());
   std::atomic<std::size_t> next{0};
   std::mutex print;
@@ -210,8 +218,8 @@ int run_soak(const SoakOptions& o, const std::string& command, SoakSummary* out)
       const std::size_t i = order[k];
       {
         std::lock_guard<std::mutex> lock(print);
-        fmt::print(stderr, "vgc fuzz --all: [{}/{}] fuzz_{} for {:.0f} s\n", k + 1, order.size(), names[i],
-                   time_of(o, names[i]));
+        fmt::print(stderr, "vgc fuzz --all: [{}/{}] fuzz_{} for {:.0f} {}s\n", k + 1, order.size(), names[i],
+                   time_of(o, names[i]), o.cpu_time ? "CPU " : "");
       }
       rows[i] = run_one(o, names[i], src, work_root, fbuild);
       const SoakRow& r = rows[i];
@@ -250,8 +258,9 @@ std::string soak_markdown(const SoakSummary& s) {
   std::string md = fmt::format("# vgc fuzz --all — {}\n\n`{}`\n\n{} targets, {} at a time, seed {}, {:.0f} s wall; "
                                "work corpus {}\n\n",
                                s.run, s.command, s.rows.size(), s.jobs, s.seed, s.wall_s, s.work_corpus);
-  md += "| target | time s | CPU s | executions | exec per CPU s | cov | ft | corpus: start → work corpus | merge s | findings |\n"
-        "|---|---:|---:|---:|---:|---:|---:|---|---:|---|\n";
+  md += fmt::format("| target | {} | wall s | CPU s | executions | exec per CPU s | cov | ft | corpus: start → work corpus | merge s | findings |\n"
+                    "|---|---:|---:|---:|---:|---:|---:|---:|---|---:|---|\n",
+                    s.cpu_time ? "CPU budget s" : "time s");
   double cpu = 0;
   long long execs = 0;
   std::size_t findings = 0;
@@ -265,13 +274,17 @@ std::string soak_markdown(const SoakSummary& s) {
     const std::string corpus =
         r.merged ? fmt::format("{} → {} (was {})", r.start_files, r.work_files, r.work_files_before)
                  : fmt::format("{} → not merged (see merge.log)", r.start_files);
-    md += fmt::format("| {} | {:.0f}{} | {:.0f} | {} | {} | {} | {} | {} | {:.0f} | {} |\n", r.target, r.time_s,
-                      r.killed ? "*" : "", r.cpu_s,
+    md += fmt::format("| {} | {:.0f}{} | {:.0f} | {:.0f} | {} | {} | {} | {} | {} | {:.0f} | {} |\n", r.target, r.time_s,
+                      r.killed ? "*" : "", r.wall_s, r.cpu_s,
                       with_commas(r.executions),
                       r.cpu_s > 0 ? with_commas(static_cast<long long>(r.executions / r.cpu_s)) : std::string("-"),
                       r.cov, r.ft, corpus, r.merge_s, found);
   }
-  md += fmt::format("| **total** | | {:.0f} | {} | | | | | | {} |\n\n", cpu, with_commas(execs), findings);
+  md += fmt::format("| **total** | | | {:.0f} | {} | | | | | | {} |\n\n", cpu, with_commas(execs), findings);
+  if (s.cpu_time)
+    md += "CPU budget s: each target ran until libFuzzer and its jobs had used that many CPU seconds (read from /proc "
+          "once a second; the job running then was stopped, its new inputs lost), whatever else the machine ran; wall s "
+          "is how long that took. ";
   md += "CPU s: user + system time of libFuzzer and its fork-mode job (kernel rusage). cov, ft: the last status "
         "line. Corpus: the inputs the target started from (committed corpus, fixed crashes, work corpus), and the "
         "work corpus after the run's corpus was merged into it (libFuzzer -merge=1; before the merge in brackets); merge s: "
@@ -306,6 +319,7 @@ std::string soak_json(const SoakSummary& s) {
                     {"merged", r.merged},
                     {"merge_s", r.merge_s},
                     {"killed_at_deadline", r.killed},
+                    {"cpu_budget_spent", r.cpu_budget_spent},
                     {"findings", r.findings},
                     {"crash_inputs", r.crash_inputs},
                     {"signatures", r.signatures},
@@ -313,6 +327,7 @@ std::string soak_json(const SoakSummary& s) {
                     {"campaign_exit", r.campaign_exit}});
   json j = {{"run", s.run},         {"run_dir", s.run_dir}, {"command", s.command},
             {"seed", s.seed},       {"jobs", s.jobs},       {"wall_s", s.wall_s},
+            {"cpu_time", s.cpu_time},
             {"work_corpus", s.work_corpus}, {"rows", rows}};
   return j.dump(2) + "\n";
 }

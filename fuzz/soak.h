@@ -27,7 +27,13 @@ namespace vgc::fuzz {
 
 struct SoakOptions {
   std::vector<std::string> targets;          // without fuzz_; empty: every target (soak_targets())
-  double time_s = 600;                       // wall-clock fuzzing time of each target
+  double time_s = 600;                       // fuzzing time of each target: wall-clock, or CPU with cpu_time
+  // time_s and target_time_s count CPU seconds of each target (libFuzzer
+  // and its jobs, process_cpu.h), not wall-clock: on a shared machine each
+  // target still gets its budget. Its wall time is capped at
+  // wall_cap_factor times the budget.
+  bool cpu_time = false;
+  double wall_cap_factor = 6;
   std::map<std::string, double> target_time_s;  // per-target override (name without fuzz_)
   int jobs = 1;                              // campaigns at the same time, one libFuzzer process each
   unsigned seed = 1;
@@ -47,6 +53,7 @@ struct SoakRow {
   bool merged = false;                 // the merge ran to its end
   double merge_s = 0;                  // its wall time (what corpus minimization costs)
   bool killed = false;                 // libFuzzer overran its time (a fork-mode job still running) and was killed
+  bool cpu_budget_spent = false;       // stopped at its CPU budget (cpu_time)
   std::size_t findings = 0;            // unique crashes (signatures)
   std::size_t crash_inputs = 0;
   std::vector<std::string> signatures; // one per finding
@@ -57,6 +64,7 @@ struct SoakRow {
 struct SoakSummary {
   std::string run, run_dir, command;
   unsigned seed = 1;
+  bool cpu_time = false;               // the times are CPU budgets
   int jobs = 1;
   double wall_s = 0;
   std::string work_corpus;
