@@ -52,6 +52,7 @@ struct FuzzArgs {
   std::string to_text, to_binary, output;
   bool all = false;
   bool cpu_time = false;                  // --cpu-time
+  double wall_cap = 0;                    // --wall-cap (0: SoakOptions' default)
   std::vector<std::string> target_times;  // NAME=S
   std::vector<std::string> only;          // --targets
   std::string work_corpus;
@@ -96,6 +97,13 @@ int run_all(const FuzzArgs& a) {
   fuzz::SoakOptions o;
   o.time_s = c.time_s;
   o.cpu_time = a.cpu_time;
+  if (a.wall_cap != 0) {
+    if (!a.cpu_time || !(a.wall_cap >= 1)) {
+      fmt::print(stderr, "vgc fuzz --all: --wall-cap takes a factor of at least 1, with --cpu-time\n");
+      return 2;
+    }
+    o.wall_cap_factor = a.wall_cap;
+  }
   o.jobs = c.jobs;
   o.seed = c.seed;
   o.fuzz_build = c.fuzz_build;
@@ -122,6 +130,7 @@ int run_all(const FuzzArgs& a) {
   }
   command += fmt::format(" --jobs {} --seed {}", c.jobs, c.seed);
   if (a.cpu_time) command += " --cpu-time";
+  if (a.wall_cap != 0) command += fmt::format(" --wall-cap {}", a.wall_cap);
   if (!a.work_corpus.empty()) command += " --work-corpus " + a.work_corpus;
   return fuzz::run_soak(o, command);
 }
@@ -173,8 +182,8 @@ int run_fuzz(const FuzzArgs& a) {
     return write_file(a.output, bytes) ? 0 : 2;
   }
   if (a.all) return run_all(a);
-  if (a.cpu_time) {
-    say(stderr, "vgc fuzz: --cpu-time is for a soak (--all); one campaign's --time is wall-clock\n");
+  if (a.cpu_time || a.wall_cap != 0) {
+    say(stderr, "vgc fuzz: --cpu-time and --wall-cap are for a soak (--all); one campaign's --time is wall-clock\n");
     return 2;
   }
   if (a.campaign.target == "wire") return run_wire(a);
@@ -214,7 +223,10 @@ void add_fuzz(CLI::App& app, int* exit_code) {
                   "With --all: NAME=SECONDS for one target instead of --time (repeatable)");
   sub->add_flag("--cpu-time", a->cpu_time,
                 "With --all: --time and --target-time are CPU seconds of each target (libFuzzer and its jobs), "
-                "not wall-clock, so a soak on a busy machine still gets its budget (wall capped at 6x)");
+                "not wall-clock, so a soak on a busy machine still gets its budget (wall capped at --wall-cap x)");
+  sub->add_option("--wall-cap", a->wall_cap,
+                  "With --all --cpu-time: stop a target starved of CPU after FACTOR times its budget of wall "
+                  "clock (default 6)");
   sub->add_option("--targets", a->only, "With --all: only these targets (comma-separated)")->delimiter(',');
   sub->add_option("--work-corpus", a->work_corpus,
                   "With --all: the work corpus directory (default reports/fuzz/work-corpus)");

@@ -338,6 +338,8 @@ const std::vector<vgc::Command>& capability_start_commands(std::string_view capa
   return capability == "loop" ? triangles : quads;
 }
 
+}  // namespace
+
 // Forwards every call to `sut` and keeps the last capability request and
 // its answer, so a capability finding can carry what the implementation
 // answered (Finding::observed_document, for report.html's picture).
@@ -376,6 +378,8 @@ std::optional<Finding> run_capability_check(const CapabilityCheck& check, const 
   }
   return f;
 }
+
+namespace {
 
 // A fresh node must look like the reference's fresh node.
 std::optional<Finding> check_fresh(Implementation& sut) {

@@ -215,4 +215,12 @@ ReplayResult replay_program(const Program& program, Implementation& sut);
 // ("SUBD-CATMARK-1"); empty for a capability no property checks.
 std::string capability_clauses(const std::string& capability);
 
+// Runs `check` as `request` says (check_drawn with the drawn value for a
+// check that draws), recording the last capability request and its answer
+// into the finding (Finding::shown_by, observed_document) when the check
+// did not: what report.html draws a capability finding from.
+struct CapabilityCheck;
+std::optional<Finding> run_capability_check(const CapabilityCheck& check, const Node& model, Implementation& sut,
+                                            const CapabilityRequest& request);
+
 }  // namespace vgc

@@ -34,6 +34,7 @@
 #include "exec_implementation.h"
 #include "live_implementation.h"
 #include "minimize_finding.h"
+#include "minimize_input.h"
 #include "process_cpu.h"
 
 namespace vgc::fuzz {
@@ -521,15 +522,74 @@ std::string clause_of_finding(const std::string& line) {
   return find_clause(m[1].str()) ? m[1].str() : std::string{};
 }
 
-int run_campaign(const CampaignOptions& o, CampaignSummary* out) {
-  using clock = std::chrono::steady_clock;
-  const std::string name = normalize_target(o.target);
-  const bool property = name.rfind("property_", 0) == 0;
+namespace {
+
+using clock = std::chrono::steady_clock;
+
+// What the steps of one campaign share (run_campaign runs them in order).
+struct CampaignRun {
+  explicit CampaignRun(const CampaignOptions& opts) : o(opts) {}
+  const CampaignOptions& o;
+  std::string name;  // the target without fuzz_
+  bool property = false, mesh = false;
+  Baseline baseline;
+  fs::path src, binary, dir, corpus, crashes, cex;
+  ImplementationChoice impl;             // --impl: a plugin, a live implementation or the reference
+  std::string plugin;                    // absolute path, "" for the reference or a live implementation
+  std::vector<std::string> env_add;      // what the target runs with beyond this process's environment
+  std::vector<std::string> run_env;      // VGC_* of this process, without the plugin (for vgc replay)
+  std::vector<std::string> target_env;   // run_env and the plugin (for the target)
+  CampaignSummary s;
+  clock::time_point t0;
+  fs::file_time_type sys0;
+  clock::time_point sign_until;          // the budget of signing, minimizing and replaying crashes
+  Progress progress;
+  std::vector<CampaignSample> samples;   // for report.html's plots
+  RunResult fuzzed;
+  long long execs_before = 0;            // live rounds: executions of the rounds before the last
+  clock::time_point sign_inputs_until;   // re-running crash inputs stops here (sign_crash_inputs)
+};
+
+// The crash inputs of one signature.
+struct CrashGroup {
+  std::map<fs::path, std::string> shown;    // per input: its signature with exact clause ids
+  std::vector<fs::path> files;              // smallest first
+  std::map<fs::path, std::string> printed;  // the target's own counterexample block, per input
+  std::map<fs::path, std::optional<double>> first_seen;
+};
+
+// The target's own counterexample block ("----8<---- counterexample.vgc"
+// or, for the mesh targets, "----8<---- mesh.txt") in its output.
+std::optional<std::string> printed_block(const CampaignRun& r, const std::string& output) {
+  const std::string open = r.mesh ? "----8<---- mesh.txt\n" : "----8<---- counterexample.vgc\n";
+  if (auto a = output.find(open); a != std::string::npos)
+    if (auto b = output.find("----8<----\n", a + open.size()); b != std::string::npos)
+      return output.substr(a + open.size(), b - a - open.size());
+  return std::nullopt;
+}
+
+// Re-runs one input through the target alone (its output, stdout and stderr).
+std::string rerun_input(const CampaignRun& r, const fs::path& f) {
+  // A live implementation's input also starts it (a process, a login) and
+  // confirms a crash on a fresh instance inside the target: more time.
+  return run_capture(std::string(r.impl.live.empty() ? "timeout 5" : "timeout 60") + " env " +
+                     env_prefix(r.target_env) + shell_quote(r.binary.string()) + " " + shell_quote(f.string()) +
+                     " 2>&1");
+}
+
+// The target's name, --time, --baseline, the binary and --impl, checked
+// before anything runs; fills the run's name, paths and environments.
+// Returns 0, or the exit code 2 with a message on stderr.
+int check_campaign_options(CampaignRun* r) {
+  const CampaignOptions& o = r->o;
+  r->name = normalize_target(o.target);
+  const std::string& name = r->name;
+  r->property = name.rfind("property_", 0) == 0;
   static const char* const kGroups[] = {"layers", "polygons", "creases", "bones", "values", "ids", "commands"};
   bool known_group = false;
   for (const char* g : kGroups) known_group = known_group || name == std::string("property_") + g;
-  const bool mesh = name == "mesh_manifold" || name == "mesh_subdivision";
-  if (name != "stream" && name != "text" && name != "differential" && name != "verse_packet" && !mesh &&
+  r->mesh = name == "mesh_manifold" || name == "mesh_subdivision";
+  if (name != "stream" && name != "text" && name != "differential" && name != "verse_packet" && !r->mesh &&
       !known_group) {
     fmt::print(stderr,
                "vgc fuzz: unknown target '{}': expected stream, text, differential, verse_packet, mesh_manifold, "
@@ -542,56 +602,60 @@ int run_campaign(const CampaignOptions& o, CampaignSummary* out) {
     fmt::print(stderr, "vgc fuzz: --time must be a positive number of seconds\n");
     return 2;
   }
-  Baseline baseline;
   if (!o.baseline.empty()) {
     std::string error;
-    if (!load_baseline(o.baseline, &baseline, &error)) {
+    if (!load_baseline(o.baseline, &r->baseline, &error)) {
       fmt::print(stderr, "vgc fuzz: --baseline: {}\n", escape_unprintable(error));
       return 2;
     }
   }
   const std::string target = "fuzz_" + name;
-  const fs::path src = fs::absolute(source_dir(o));
+  r->src = fs::absolute(source_dir(o));
   const fs::path fbuild = fuzz_build_dir(o);
-  const fs::path binary = fbuild / "fuzz" / target;
-  if (!fs::exists(binary)) {
+  r->binary = fbuild / "fuzz" / target;
+  if (!fs::exists(r->binary)) {
     fmt::print(stderr,
                "vgc fuzz: no libFuzzer binary {}\n"
                "  `./vgc fuzz ...` builds it; by hand: CC=clang CXX=clang++ cmake -S {} -B {} -DVGC_FUZZ=ON"
                " && cmake --build {} --target {}\n",
-               binary.string(), src.string(), fbuild.string(), fbuild.string(), target);
+               r->binary.string(), r->src.string(), fbuild.string(), fbuild.string(), target);
     return 2;
   }
   // The implementation under test and the variables that tell the target.
-  ImplementationChoice impl;
-  if (!choose_implementation(o, name, property, &impl)) return 2;
-  const std::string& plugin = impl.plugin;
-  const std::vector<std::string>& env_add = impl.env;
+  if (!choose_implementation(o, name, r->property, &r->impl)) return 2;
+  r->plugin = r->impl.plugin;
+  r->env_add = r->impl.env;
   // Every VGC_* variable the target runs with: ours (VGC_FAULT,
   // VGC_FUZZ_MESH_FAULT, ...) and the implementation's (the plugin's path,
   // a live implementation's spec and options).
-  std::vector<std::string> run_env = vgc_environment();
-  run_env.erase(std::remove_if(run_env.begin(), run_env.end(), is_implementation_variable), run_env.end());
-  std::vector<std::string> target_env = run_env;
-  target_env.insert(target_env.end(), env_add.begin(), env_add.end());
-  std::sort(target_env.begin(), target_env.end());
-
-  CampaignSummary s;
+  r->run_env = vgc_environment();
+  r->run_env.erase(std::remove_if(r->run_env.begin(), r->run_env.end(), is_implementation_variable), r->run_env.end());
+  r->target_env = r->run_env;
+  r->target_env.insert(r->target_env.end(), r->env_add.begin(), r->env_add.end());
+  std::sort(r->target_env.begin(), r->target_env.end());
+  CampaignSummary& s = r->s;
   s.target = target;
   s.seed = o.seed;
   s.jobs = std::max(1, o.jobs);
   s.time_s = o.time_s;
-  s.binary = binary.string();
-  s.implementation = impl.spec();
-  s.environment = target_env;
+  s.binary = r->binary.string();
+  s.implementation = r->impl.spec();
+  s.environment = r->target_env;
   s.empty_corpus = o.empty_corpus;
   s.stop_at_first = o.stop_at_first;
   s.baseline = o.baseline;
-  // The run's directory, claimed with one mkdir: two campaigns of the same
-  // target and seed started in the same second (a script running seeds or
-  // faults side by side) get -2, -3, ... instead of sharing one directory
-  // (they did, and one of them aborted).
-  const fs::path runs = src / "reports" / "fuzz" / target;
+  return 0;
+}
+
+// The run's directory, claimed with one mkdir: two campaigns of the same
+// target and seed started in the same second (a script running seeds or
+// faults side by side) get -2, -3, ... instead of sharing one directory
+// (they did, and one of them aborted). Then its corpus: the committed one
+// and the extra corpora. Returns 0, or 2 with a message.
+int claim_run_directory(CampaignRun* r) {
+  const CampaignOptions& o = r->o;
+  CampaignSummary& s = r->s;
+  const fs::path runs = r->src / "reports" / "fuzz" / s.target;
   const std::string stamp = utc_stamp() + "-seed" + std::to_string(o.seed);
   std::error_code ec;
   fs::create_directories(runs, ec);
@@ -601,52 +665,58 @@ int run_campaign(const CampaignOptions& o, CampaignSummary* out) {
     fmt::print(stderr, "vgc fuzz: cannot create a run directory under {}: {}\n", runs.string(), ec.message());
     return 2;
   }
-  const fs::path dir = runs / s.run;
-  s.run_dir = dir.string();
-  const fs::path corpus = dir / "corpus", crashes = dir / "crashes", cex = dir / "counterexamples";
-  fs::create_directories(corpus, ec);
-  if (!ec) fs::create_directories(crashes, ec);
-  if (!ec) fs::create_directories(cex, ec);
+  r->dir = runs / s.run;
+  s.run_dir = r->dir.string();
+  r->corpus = r->dir / "corpus", r->crashes = r->dir / "crashes", r->cex = r->dir / "counterexamples";
+  fs::create_directories(r->corpus, ec);
+  if (!ec) fs::create_directories(r->crashes, ec);
+  if (!ec) fs::create_directories(r->cex, ec);
   if (ec) {
-    fmt::print(stderr, "vgc fuzz: cannot create {}: {}\n", dir.string(), ec.message());
+    fmt::print(stderr, "vgc fuzz: cannot create {}: {}\n", r->dir.string(), ec.message());
     return 2;
   }
-  if (!o.empty_corpus && fs::is_directory(src / "corpora" / "fuzz" / target))
-    for (const auto& e : fs::directory_iterator(src / "corpora" / "fuzz" / target))
+  const fs::path committed = r->src / "corpora" / "fuzz" / s.target;
+  if (!o.empty_corpus && fs::is_directory(committed))
+    for (const auto& e : fs::directory_iterator(committed))
       if (e.is_regular_file()) {
-        fs::copy_file(e.path(), corpus / e.path().filename(), fs::copy_options::overwrite_existing, ec);
+        fs::copy_file(e.path(), r->corpus / e.path().filename(), fs::copy_options::overwrite_existing, ec);
         ++s.seed_files;
       }
   for (const std::string& extra : o.extra_corpora)
     if (fs::is_directory(extra, ec))
       for (const auto& e : fs::directory_iterator(extra, ec))
-        if (e.is_regular_file()) fs::copy_file(e.path(), corpus / e.path().filename(), fs::copy_options::skip_existing, ec);
-  ec.clear();
-  const fs::path dict = src / "corpora" / "fuzz" / (target + ".dict");
+        if (e.is_regular_file())
+          fs::copy_file(e.path(), r->corpus / e.path().filename(), fs::copy_options::skip_existing, ec);
+  return 0;
+}
 
-  // One job stopping at the first finding runs libFuzzer in its plain
-  // mode, which stops there by itself; otherwise fork mode (-fork=N). A
-  // live implementation with one job runs plain mode in rounds: restarted
-  // on the same corpus after each finding until --time is spent (a
-  // fork-mode job logs in again every few seconds and first re-runs its
-  // share of the corpus: 50 instead of 140 exec/s against `vgc serve
-  // --verse`; docs/fuzzing.md "Throughput of a live implementation").
-  const bool rounds = !impl.live.empty() && s.jobs == 1 && !o.stop_at_first;
-  const bool plain = (o.stop_at_first && s.jobs == 1) || rounds;
-  std::vector<std::string> argv = {binary.string(),
-                                   plain ? "-runs=-1" : "-fork=" + std::to_string(s.jobs),
+// A live implementation with one job runs libFuzzer's plain mode in
+// rounds: restarted on the same corpus after each finding until --time is
+// spent (a fork-mode job logs in again every few seconds and first re-runs
+// its share of the corpus: 50 instead of 140 exec/s against `vgc serve
+// --verse`; docs/fuzzing.md "Throughput of a live implementation").
+bool live_rounds(const CampaignRun& r) { return !r.impl.live.empty() && r.s.jobs == 1 && !r.o.stop_at_first; }
+
+// libFuzzer's command line. One job stopping at the first finding runs
+// libFuzzer in its plain mode, which stops there by itself (so do the
+// rounds of a live implementation); otherwise fork mode (-fork=N).
+std::vector<std::string> libfuzzer_argv(const CampaignRun& r) {
+  const CampaignOptions& o = r.o;
+  const bool rounds = live_rounds(r);
+  const bool plain = (o.stop_at_first && r.s.jobs == 1) || rounds;
+  std::vector<std::string> argv = {r.binary.string(),
+                                   plain ? "-runs=-1" : "-fork=" + std::to_string(r.s.jobs),
                                    "-max_total_time=" + std::to_string(std::max(1LL, static_cast<long long>(o.time_s))),
                                    "-seed=" + std::to_string(o.seed),
-                                   "-artifact_prefix=" + crashes.string() + "/",
+                                   "-artifact_prefix=" + r.crashes.string() + "/",
                                    "-print_final_stats=1",
                                    "-max_len=" + std::to_string(o.max_len),
                                    // An input still running after 10 s is a hang, saved as
                                    // a timeout-* finding (libFuzzer's default waits 20 min,
-                                   // longer than most campaigns).
-                                   // A live implementation's own hangs are bounded by
-                                   // the call time-out and confirmed on a fresh
-                                   // instance inside the input: more time.
-                                   impl.live.empty() ? "-timeout=10" : "-timeout=120"};
+                                   // longer than most campaigns). A live implementation's
+                                   // own hangs are bounded by the call time-out and
+                                   // confirmed on a fresh instance inside the input: more time.
+                                   r.impl.live.empty() ? "-timeout=10" : "-timeout=120"};
   if (!o.stop_at_first && !rounds) argv.insert(argv.begin() + 2, "-ignore_crashes=1");
   // A live implementation runs in its own process: what LeakSanitizer could
   // find in the fuzzer is the adapter's state, which outlives every input
@@ -655,7 +725,19 @@ int run_campaign(const CampaignOptions& o, CampaignSummary* out) {
   // input and ran a leak scan each time: 27% of the time against `vgc
   // serve --verse`, 206 instead of 1200 exec/s against `vgc serve` over
   // exec (docs/fuzzing.md "Throughput of a live implementation").
-  if (!impl.live.empty()) argv.push_back("-detect_leaks=0");
+  if (!r.impl.live.empty()) argv.push_back("-detect_leaks=0");
+  const fs::path dict = r.src / "corpora" / "fuzz" / (r.s.target + ".dict");
+  if (fs::exists(dict)) argv.push_back("-dict=" + dict.string());
+  argv.push_back(r.corpus.string());
+  return argv;
+}
+
+// Runs libFuzzer until --time (and its grace) with progress on stderr or
+// o.progress, its output into fuzzer.log.
+void run_libfuzzer(CampaignRun* r) {
+  const CampaignOptions& o = r->o;
+  CampaignSummary& s = r->s;
+  const std::vector<std::string> argv = libfuzzer_argv(*r);
   // --stop-at-first in fork mode: the campaign stops the jobs itself once
   // a crash input is saved (one plain job stops there by itself). Saved
   // means written whole: not empty and untouched for a second. Stopping at
@@ -663,8 +745,8 @@ int run_campaign(const CampaignOptions& o, CampaignSummary* out) {
   // fwrite now and then, which left an empty input that replayed to
   // nothing ("did not reproduce").
   std::function<bool()> stop_now;
-  if (o.stop_at_first && !plain)
-    stop_now = [crashes] {
+  if (o.stop_at_first && !(s.jobs == 1))
+    stop_now = [crashes = r->crashes] {
       std::error_code e;
       const auto now = fs::file_time_type::clock::now();
       for (const auto& f : fs::directory_iterator(crashes, e)) {
@@ -675,44 +757,43 @@ int run_campaign(const CampaignOptions& o, CampaignSummary* out) {
       }
       return false;
     };
-  if (fs::exists(dict)) argv.push_back("-dict=" + dict.string());
-  argv.push_back(corpus.string());
   std::string cmdline;
   for (const auto& a : argv) cmdline += (cmdline.empty() ? "" : " ") + shell_quote(a);
-  cmdline = env_prefix(target_env) + cmdline;
+  cmdline = env_prefix(r->target_env) + cmdline;
   s.command = cmdline;
   if (!o.quiet)
-    fmt::print(stderr, "vgc fuzz: {} for {} s, {} job(s), seed {}, {} seed inputs\n  run: {}\n  {}\n", target,
-               o.time_s, s.jobs, o.seed, s.seed_files, dir.string(), cmdline);
+    fmt::print(stderr, "vgc fuzz: {} for {} s, {} job(s), seed {}, {} seed inputs\n  run: {}\n  {}\n", s.target,
+               o.time_s, s.jobs, o.seed, s.seed_files, r->dir.string(), cmdline);
 
-  std::ofstream log(dir / "fuzzer.log");
-  Progress p;
-  const auto t0 = clock::now();
-  const auto sys0 = fs::file_time_type::clock::now();
+  std::ofstream log(r->dir / "fuzzer.log");
+  Progress& p = r->progress;
+  r->t0 = clock::now();
+  r->sys0 = fs::file_time_type::clock::now();
+  const auto t0 = r->t0;
   // libFuzzer is asked to stop at --time; it gets 5 s (grace_s) more to
   // write its final stats, then its process group is killed.
   const double grace = o.grace_s > 0 ? o.grace_s : 5;
   const auto deadline = t0 + std::chrono::duration_cast<clock::duration>(std::chrono::duration<double>(o.time_s + grace));
   auto last_print = t0 - std::chrono::seconds(60);
-  std::vector<CampaignSample> samples;  // for report.html's plots
-  long long execs_before = 0;  // rounds: the executions of the rounds before this one
   const auto on_line = [&](const std::string& line) {
     log << line << '\n';
     if (!parse_progress(line, &p)) return;
     const auto now = clock::now();
     const double t = std::chrono::duration<double>(now - t0).count();
-    samples.push_back({t, p.execs + execs_before, p.cov, p.ft, p.corp});
+    r->samples.push_back({t, p.execs + r->execs_before, p.cov, p.ft, p.corp});
     const std::string figures = fmt::format("execs {}  exec/s {}  cov {}  ft {}  corpus {}  crashes {}",
-                                            p.execs + execs_before, p.exec_s, p.cov, p.ft, p.corp, p.crashes);
+                                            p.execs + r->execs_before, p.exec_s, p.cov, p.ft, p.corp, p.crashes);
     if (o.progress) {
-      o.progress(fmt::format("{} for {:.0f} s: {}", target, o.time_s, figures));
+      o.progress(fmt::format("{} for {:.0f} s: {}", s.target, o.time_s, figures));
     } else if (!o.quiet && now - last_print >= std::chrono::seconds(10)) {
       fmt::print(stderr, "[{:5.0f}/{:.0f} s] {}\n", t, o.time_s, figures);
       last_print = now;
     }
   };
-  RunResult rr = run_streaming(argv, env_add, deadline, on_line, stop_now, o.cpu_time_s);
-  if (rounds) rr = run_more_rounds(argv, env_add, deadline, on_line, o, t0, rr, &p, &execs_before, &log);
+  r->fuzzed = run_streaming(argv, r->env_add, deadline, on_line, stop_now, o.cpu_time_s);
+  if (live_rounds(*r))
+    r->fuzzed = run_more_rounds(argv, r->env_add, deadline, on_line, o, t0, r->fuzzed, &p, &r->execs_before, &log);
+  const RunResult& rr = r->fuzzed;
   if (rr.killed) log << "vgc fuzz: still running " << o.time_s + grace << " s after the start: process group killed\n";
   log.close();
   if (o.progress) o.progress("");
@@ -721,18 +802,17 @@ int run_campaign(const CampaignOptions& o, CampaignSummary* out) {
   s.cpu_s = rr.cpu_s;
   s.cpu_budget_spent = rr.cpu_spent;
   if (rr.killed) fmt::print(stderr, "vgc fuzz: libFuzzer overran --time {} s: killed\n", o.time_s);
+}
 
-  // Crashes: re-run each saved input alone (smallest first, within a budget
-  // of its own: at most 200 inputs and max(10 s, --time / 10), replays of
-  // the counterexamples included), sign it, keep the smallest per signature.
-  struct Group {
-    std::map<fs::path, std::string> shown;    // per input: its signature with exact clause ids
-    std::vector<fs::path> files;
-    std::map<fs::path, std::string> printed;  // the target's own counterexample block, per input
-  };
-  std::map<std::string, Group> unique;
+// Crashes: re-runs each saved input alone (smallest first, within a budget
+// of its own: at most 200 inputs and max(10 s, --time / 10), replays and
+// minimization of the counterexamples included), signs it, groups the
+// inputs by signature (key: digits folded).
+std::map<std::string, CrashGroup> sign_crash_inputs(CampaignRun* r) {
+  CampaignSummary& s = r->s;
+  std::map<std::string, CrashGroup> unique;
   std::vector<fs::path> saved;
-  for (const auto& e : fs::directory_iterator(crashes))
+  for (const auto& e : fs::directory_iterator(r->crashes))
     if (e.is_regular_file()) saved.push_back(e.path());
   std::sort(saved.begin(), saved.end(), [](const fs::path& a, const fs::path& b) {
     const auto sa = fs::file_size(a), sb = fs::file_size(b);
@@ -740,178 +820,253 @@ int run_campaign(const CampaignOptions& o, CampaignSummary* out) {
   });
   s.crash_inputs = saved.size();
   for (const fs::path& f : saved)
-    if (auto t = seconds_since(f, sys0); t && (!s.time_to_first_finding_s || *t < *s.time_to_first_finding_s))
+    if (auto t = seconds_since(f, r->sys0); t && (!s.time_to_first_finding_s || *t < *s.time_to_first_finding_s))
       s.time_to_first_finding_s = t;
-  const auto sign_until = clock::now() + std::chrono::duration_cast<clock::duration>(
-                                             std::chrono::duration<double>(std::max(10.0, o.time_s / 10)));
+  r->sign_until = clock::now() + std::chrono::duration_cast<clock::duration>(
+                                     std::chrono::duration<double>(std::max(10.0, r->o.time_s / 10)));
   // A live implementation costs a process or a login per input re-run:
   // its inputs get half the budget, so that the unique findings are still
   // minimized and replayed on a fresh instance in the other half.
-  const auto sign_inputs_until =
-      impl.live.empty() ? sign_until : clock::now() + (sign_until - clock::now()) / 2;
-  std::map<fs::path, std::optional<double>> first_seen;
+  r->sign_inputs_until = r->impl.live.empty() ? r->sign_until : clock::now() + (r->sign_until - clock::now()) / 2;
   for (const fs::path& f : saved) {
-    if (s.crash_inputs_signed >= 200 || clock::now() >= sign_inputs_until) break;
+    if (s.crash_inputs_signed >= 200 || clock::now() >= r->sign_inputs_until) break;
     ++s.crash_inputs_signed;
-    const std::string output = run_capture("timeout 5 env " + env_prefix(target_env) + shell_quote(binary.string()) +
-                                           " " + shell_quote(f.string()) + " 2>&1");
+    const std::string output = rerun_input(*r, f);
     CrashSignature sig = crash_signature(output);
     // A live implementation's finding that the input alone does not show
     // again (it depended on the instance's history or on timing; the
     // target's own confirmation says which in fuzzer.log): said so, not
     // "unknown".
-    if (!impl.live.empty() && sig.key == "unknown" && output.find("FINDING") == std::string::npos)
+    if (!r->impl.live.empty() && sig.key == "unknown" && output.find("FINDING") == std::string::npos)
       sig = {"not reproduced", "not reproduced: the input alone, re-run on a fresh instance, showed nothing (the "
                                "finding depended on the implementation's history or timing; its FINDING line is in "
                                "fuzzer.log)"};
-    Group& g = unique[sig.key];
+    CrashGroup& g = unique[sig.key];
     g.shown[f] = sig.shown;
     g.files.push_back(f);
-    first_seen[f] = seconds_since(f, sys0);
-    const std::string open = mesh ? "----8<---- mesh.txt\n" : "----8<---- counterexample.vgc\n";
-    if (auto a = output.find(open); a != std::string::npos) {
-      if (auto b = output.find("----8<----\n", a + open.size()); b != std::string::npos)
-        g.printed[f] = output.substr(a + open.size(), b - a - open.size());
-    }
+    g.first_seen[f] = seconds_since(f, r->sys0);
+    if (auto block = printed_block(*r, output)) g.printed[f] = *block;
   }
-  const std::string vgc = o.vgc_binary.empty() ? self_exe().string() : o.vgc_binary;
-  const std::string impl_spec = impl.spec();
-  std::size_t k = 0;
-  for (auto& [key, g] : unique) {
-    CampaignCrash c;
-    const fs::path& rep = g.files.front();  // smallest (saved was sorted by size)
-    c.dedup_key = key;
-    c.signature = g.shown[rep];
-    for (const auto& [file, text] : g.shown)
-      if (text != c.signature && std::find(c.also.begin(), c.also.end(), text) == c.also.end()) c.also.push_back(text);
-    c.inputs = g.files.size();
-    c.input = rep.string();
-    for (const fs::path& f : g.files)
-      if (auto t = first_seen[f]; t && (!c.first_seen_s || *t < *c.first_seen_s)) c.first_seen_s = t;
-    c.clause = clause_of_finding(c.signature);
-    if (!c.clause.empty()) {
-      if (const Clause* cl = find_clause(c.clause)) c.level = clause_level_name(cl->level);
-      c.in_baseline = baseline.reasons.count(c.clause) > 0;
+  return unique;
+}
+
+// The finding's summary fields from its group: signature, other forms,
+// inputs, first seen, clause, level, baseline.
+CampaignCrash describe_crash(const CampaignRun& r, const std::string& key, CrashGroup& g) {
+  CampaignCrash c;
+  const fs::path& rep = g.files.front();  // smallest (saved was sorted by size)
+  c.dedup_key = key;
+  c.signature = g.shown[rep];
+  for (const auto& [file, text] : g.shown)
+    if (text != c.signature && std::find(c.also.begin(), c.also.end(), text) == c.also.end()) c.also.push_back(text);
+  c.inputs = g.files.size();
+  c.input = rep.string();
+  for (const fs::path& f : g.files)
+    if (auto t = g.first_seen[f]; t && (!c.first_seen_s || *t < *c.first_seen_s)) c.first_seen_s = t;
+  c.clause = clause_of_finding(c.signature);
+  if (!c.clause.empty()) {
+    if (const Clause* cl = find_clause(c.clause)) c.level = clause_level_name(cl->level);
+    c.in_baseline = r.baseline.reasons.count(c.clause) > 0;
+  }
+  c.replay_fuzzer = env_prefix(r.target_env) + shell_quote(r.binary.string()) + " " + shell_quote(rep.string());
+  return c;
+}
+
+// Whether the finding's counterexample is a command program that
+// minimize_finding shrinks (a clause finding of a command-stream target);
+// every other finding is raw bytes, minimized by libFuzzer.
+bool shrinks_as_program(const CampaignRun& r, const CampaignCrash& c) {
+  const bool command_stream = r.name != "text" && r.name != "verse_packet" && !r.mesh;
+  return command_stream && !c.clause.empty();
+}
+
+// A raw-bytes finding's input minimized with libFuzzer's -minimize_crash
+// (minimize_input.h) into minimized/, kept only when a fresh run signs it
+// with the group's key. Each group gets an equal share of what is left of
+// the signing budget (at least 5 s). On success the group's smallest input
+// becomes the minimized one (with the target's printed block of it), and
+// *bytes its contents.
+void minimize_raw_input(CampaignRun* r, const std::string& key, CrashGroup& g, std::size_t groups_left,
+                        CampaignCrash* c, std::string* bytes) {
+  const auto now = clock::now();
+  if (now >= r->sign_until) {
+    c->minimize_note = "not minimized: the signing budget was spent";
+    return;
+  }
+  const auto share = (r->sign_until - now) / static_cast<long>(std::max<std::size_t>(1, groups_left));
+  const auto until = std::min(r->sign_until, now + std::max<clock::duration>(share, std::chrono::seconds(5)));
+  std::error_code ec;
+  fs::create_directories(r->dir / "minimized", ec);
+  const fs::path rep = c->input;
+  const fs::path out = r->dir / "minimized" / rep.filename();
+  std::string output;
+  const MinimizedInput m = minimize_input(
+      env_prefix(r->target_env) + shell_quote(r->binary.string()), rep.string(), out.string(),
+      [&](const std::string& candidate) {
+        output = rerun_input(*r, candidate);
+        return crash_signature(output).key == key;
+      },
+      until);
+  if (!m.kept) {
+    c->minimize_note = m.note;
+    return;
+  }
+  c->minimized_input = m.file;
+  c->input_bytes = m.before;
+  c->minimized_bytes = m.after;
+  read_file(m.file, bytes);
+  if (auto block = printed_block(*r, output)) g.printed[m.file] = *block;
+  g.files.front() = m.file;
+  c->replay_fuzzer = env_prefix(r->target_env) + shell_quote(r->binary.string()) + " " + shell_quote(m.file);
+}
+
+// The counterexample of a finding of text, verse_packet or a mesh target:
+// the input itself (text), its bytes in hex (a datagram) or the mesh the
+// target printed; each replays through the target.
+void write_input_counterexample(const CampaignRun& r, const CrashGroup& g, const std::string& bytes,
+                                CampaignCrash* c) {
+  const fs::path cex_file = c->counterexample;
+  const std::string& target = r.s.target;
+  auto printed = g.printed.find(g.files.front());
+  c->replay = c->replay_fuzzer;
+  if (r.name == "text") {
+    write_file(cex_file, bytes);  // the input is text already
+  } else if (r.name == "verse_packet") {  // one datagram: no command file; the input replays
+    std::string text = "# vgc fuzz " + target + " counterexample: " + c->signature + "\n# from " +
+                       g.files.front().string() + "\n# replay: " + c->replay_fuzzer + "\n# the datagram, " +
+                       std::to_string(bytes.size()) + " bytes, in hex:\n";
+    static const char* hex = "0123456789abcdef";
+    for (std::size_t i = 0; i < bytes.size(); ++i) {
+      const auto b = static_cast<unsigned char>(bytes[i]);
+      text += hex[b >> 4];
+      text += hex[b & 15];
+      text += (i % 16 == 15 || i + 1 == bytes.size()) ? '\n' : ' ';
     }
-    std::string bytes;
-    read_file(rep, &bytes);
-    ++k;
-    const fs::path cex_file =
-        cex / fmt::format("crash-{}{}.{}", k, c.clause.empty() ? "" : "-" + c.clause,
-                          name == "text" ? "txt" : mesh ? "mesh.txt" : name == "verse_packet" ? "packet.txt" : "vgc");
-    c.counterexample = cex_file.string();
-    c.replay_fuzzer = env_prefix(target_env) + shell_quote(binary.string()) + " " + shell_quote(rep.string());
-    auto printed = g.printed.find(rep);
-    if (name == "text") {
-      write_file(cex_file, bytes);  // the input is text already
-      c.replay = c.replay_fuzzer;
-    } else if (name == "verse_packet") {  // one datagram: no command file; the input replays
-      std::string text = "# vgc fuzz " + target + " counterexample: " + c.signature + "\n# from " + rep.string() +
-                         "\n# replay: " + c.replay_fuzzer + "\n# the datagram, " + std::to_string(bytes.size()) +
-                         " bytes, in hex:\n";
-      static const char* hex = "0123456789abcdef";
-      for (std::size_t i = 0; i < bytes.size(); ++i) {
-        const auto b = static_cast<unsigned char>(bytes[i]);
-        text += hex[b >> 4];
-        text += hex[b & 15];
-        text += (i % 16 == 15 || i + 1 == bytes.size()) ? '\n' : ' ';
-      }
-      if (printed != g.printed.end()) text += printed->second;
-      write_file(cex_file, text);
-      c.replay = c.replay_fuzzer;
-    } else if (mesh) {  // no command file: a mesh the node may not hold; the input replays
-      std::string text = "# vgc fuzz " + target + " counterexample: " + c.signature + "\n# from " + rep.string() +
-                         "\n# replay: " + c.replay_fuzzer + "\n";
-      text += printed != g.printed.end() ? printed->second : "# the target printed no mesh (a sanitizer finding)\n";
-      write_file(cex_file, text);
-      c.replay = c.replay_fuzzer;
-    } else {
-      // A finding named by clause replays as a certify counterexample,
-      // against the same implementation, with the same environment. So does
-      // a crash of a plugin in fuzz_differential (in process it takes the
-      // fuzzer down unnamed): `vgc replay` runs the plugin isolated and
-      // names the clause, as certify would.
-      const bool plugin_crash = c.clause.empty() && name == "differential" && !plugin.empty();
-      const bool replayable = !c.clause.empty() || plugin_crash;
-      const auto replay_line = [&] {
-        return env_prefix(run_env) + program_command() + " replay " + shell_quote(cex_file.string()) + " --impl " +
-               shell_quote(impl_spec) + replay_options(o);
-      };
-      c.replay = replayable ? replay_line() : env_prefix(run_env) + program_command() + " apply " + shell_quote(cex_file.string());
-      std::string body;
-      if (printed != g.printed.end()) body = printed->second;
-      else if (property) body = "# the target printed no command file (a sanitizer finding): replay the input\n";
-      else body = stream_to_text(bytes);
-      const std::string status = status_of_finding(c.signature);
-      const bool call_failure = status == "crash" || status == "timeout";
-      // A wire host that crashed or hung cannot be replayed on a fresh
-      // instance without the user's restart command.
-      const bool wire = impl.live.rfind("verse:", 0) == 0;
-      const bool confirmable = !call_failure || !wire || !o.restart.empty();
-      if (!c.clause.empty() && clock::now() < sign_until && !(call_failure && wire)) {
-        // Minimized as certify shrinks, before it is written (minimize_finding.h);
-        // a crash stays a crash (an exec: program crashed is restarted by the replay).
-        OpenOptions open;
-        if (o.call_timeout_s > 0) open.timeout_seconds = o.call_timeout_s;
-        if (!o.verse_bone_form.empty()) open.verse_bone_form = o.verse_bone_form;
-        const Minimized min = minimize_finding(body, c.clause, impl_spec, sign_until, 200, status, open);
-        if (min.reproduced && min.after < min.before)
-          body = fmt::format("# minimized from {} to {} commands ({} replays); the input replays the original\n",
-                             min.before, min.after, min.replays) + min.text;
-      }
-      if (call_failure && !confirmable)
-        c.confirmation = "not confirmed: the host is not restarted without --restart CMD, so the counterexample "
-                         "was not replayed on a fresh instance";
-      auto write_cex = [&] {
-        write_file(cex_file, "# vgc fuzz " + target + " counterexample: " + c.signature + "\n# from " +
-                                 rep.string() + "\n# replay: " + c.replay + "\n" + body);
-      };
-      write_cex();
-      if (replayable && confirmable && fs::exists(vgc) && clock::now() < sign_until) {
-        // Which clause does it replay to? (`vgc replay` exits 1 naming it.)
-        // For a crash or hang of a live implementation this is the
-        // confirmation on a fresh instance: `vgc replay` starts a new exec:
-        // process; a wire host is restarted by the user's command first.
-        std::string restarted;
-        if (call_failure && wire && !run_restart_command(o.restart, 60, &restarted))
-          c.confirmation = "not confirmed: " + restarted;
-        const std::string r = run_capture("timeout 60 env " + env_prefix(run_env) + shell_quote(vgc) + " replay " +
-                                          shell_quote(cex_file.string()) + " --impl " + shell_quote(impl_spec) +
-                                          replay_options(o) + " 2>&1; echo \"vgc-replay-exit=$?\"");
-        static const std::regex named(R"(\b([A-Z][A-Z0-9]*(?:-[A-Z0-9]+)*-[0-9]+)\b)");
-        std::string found;
-        if (r.find("vgc-replay-exit=1") != std::string::npos)
-          for (std::sregex_iterator it(r.begin(), r.end(), named), end; it != end; ++it)
-            if (find_clause((*it)[1].str())) {
-              if (found.empty() || (*it)[1].str() == c.clause) found = (*it)[1].str();
-              if (found == c.clause) break;
-            }
-        c.replayed_clause = found;
-        if (call_failure && c.confirmation.empty())
-          c.confirmation = found == c.clause && r.find(status + " ") != std::string::npos
-                               ? "confirmed: `vgc replay` on a fresh instance (" +
-                                     std::string(wire ? "restarted by --restart" : "a new process") + ") shows the " +
-                                     status + " again"
-                               : "not confirmed: `vgc replay` on a fresh instance did not show the " + status +
-                                     " (depends on the instance's history, or flaky)";
-        if (plugin_crash) {
-          if (!found.empty()) {
-            c.clause = found;  // certify's name for the crash
-            if (const Clause* cl = find_clause(c.clause)) c.level = clause_level_name(cl->level);
-            c.in_baseline = baseline.reasons.count(c.clause) > 0;
-          } else {
-            c.replay = env_prefix(run_env) + program_command() + " apply " + shell_quote(cex_file.string());
-            write_cex();
-          }
+    if (printed != g.printed.end()) text += printed->second;
+    write_file(cex_file, text);
+  } else {  // a mesh: no command file (a mesh the node may not hold); the input replays
+    std::string text = "# vgc fuzz " + target + " counterexample: " + c->signature + "\n# from " +
+                       g.files.front().string() + "\n# replay: " + c->replay_fuzzer + "\n";
+    text += printed != g.printed.end() ? printed->second : "# the target printed no mesh (a sanitizer finding)\n";
+    write_file(cex_file, text);
+  }
+}
+
+// The counterexample of a finding of a command-stream target (stream,
+// differential, property_*): a command file. A finding named by clause
+// replays as a certify counterexample, against the same implementation,
+// with the same environment, minimized as certify shrinks. So does a crash
+// of a plugin in fuzz_differential (in process it takes the fuzzer down
+// unnamed): `vgc replay` runs the plugin isolated and names the clause, as
+// certify would.
+void write_program_counterexample(const CampaignRun& r, const CrashGroup& g, const std::string& bytes,
+                                  CampaignCrash* c) {
+  const fs::path cex_file = c->counterexample;
+  const std::string vgc = r.o.vgc_binary.empty() ? self_exe().string() : r.o.vgc_binary;
+  const std::string impl_spec = r.impl.spec();
+  const CampaignOptions& o = r.o;
+  const bool plugin_crash = c->clause.empty() && r.name == "differential" && !r.plugin.empty();
+  const bool replayable = !c->clause.empty() || plugin_crash;
+  const auto replay_line = [&] {
+    return env_prefix(r.run_env) + program_command() + " replay " + shell_quote(cex_file.string()) + " --impl " +
+           shell_quote(impl_spec) + replay_options(o);
+  };
+  const auto apply_line = [&] { return env_prefix(r.run_env) + program_command() + " apply " + shell_quote(cex_file.string()); };
+  c->replay = replayable ? replay_line() : apply_line();
+  std::string body;
+  auto printed = g.printed.find(g.files.front());
+  if (printed != g.printed.end()) body = printed->second;
+  else if (r.property) body = "# the target printed no command file (a sanitizer finding): replay the input\n";
+  else body = stream_to_text(bytes);
+  const std::string status = status_of_finding(c->signature);
+  const bool call_failure = status == "crash" || status == "timeout";
+  // A wire host that crashed or hung cannot be replayed on a fresh
+  // instance without the user's restart command.
+  const bool wire = r.impl.live.rfind("verse:", 0) == 0;
+  const bool confirmable = !call_failure || !wire || !o.restart.empty();
+  if (!c->clause.empty() && clock::now() < r.sign_until && !(call_failure && wire)) {
+    // Minimized as certify shrinks, before it is written (minimize_finding.h);
+    // a crash stays a crash (an exec: program crashed is restarted by the replay).
+    OpenOptions open;
+    if (o.call_timeout_s > 0) open.timeout_seconds = o.call_timeout_s;
+    if (!o.verse_bone_form.empty()) open.verse_bone_form = o.verse_bone_form;
+    const Minimized min = minimize_finding(body, c->clause, impl_spec, r.sign_until, 200, status, open);
+    if (min.reproduced && min.after < min.before)
+      body = fmt::format("# minimized from {} to {} commands ({} replays); the input replays the original\n",
+                         min.before, min.after, min.replays) + min.text;
+  }
+  if (call_failure && !confirmable)
+    c->confirmation = "not confirmed: the host is not restarted without --restart CMD, so the counterexample "
+                      "was not replayed on a fresh instance";
+  auto write_cex = [&] {
+    write_file(cex_file, "# vgc fuzz " + r.s.target + " counterexample: " + c->signature + "\n# from " +
+                             g.files.front().string() + "\n# replay: " + c->replay + "\n" + body);
+  };
+  write_cex();
+  if (replayable && confirmable && fs::exists(vgc) && clock::now() < r.sign_until) {
+    // Which clause does it replay to? (`vgc replay` exits 1 naming it.)
+    // For a crash or hang of a live implementation this is the
+    // confirmation on a fresh instance: `vgc replay` starts a new exec:
+    // process; a wire host is restarted by the user's command first.
+    std::string restarted;
+    if (call_failure && wire && !run_restart_command(o.restart, 60, &restarted))
+      c->confirmation = "not confirmed: " + restarted;
+    const std::string out = run_capture("timeout 60 env " + env_prefix(r.run_env) + shell_quote(vgc) + " replay " +
+                                        shell_quote(cex_file.string()) + " --impl " + shell_quote(impl_spec) +
+                                        replay_options(o) + " 2>&1; echo \"vgc-replay-exit=$?\"");
+    static const std::regex named(R"(\b([A-Z][A-Z0-9]*(?:-[A-Z0-9]+)*-[0-9]+)\b)");
+    std::string found;
+    if (out.find("vgc-replay-exit=1") != std::string::npos)
+      for (std::sregex_iterator it(out.begin(), out.end(), named), end; it != end; ++it)
+        if (find_clause((*it)[1].str())) {
+          if (found.empty() || (*it)[1].str() == c->clause) found = (*it)[1].str();
+          if (found == c->clause) break;
         }
-      } else if (plugin_crash) {
-        c.replay = env_prefix(run_env) + program_command() + " apply " + shell_quote(cex_file.string());
+    c->replayed_clause = found;
+    if (call_failure && c->confirmation.empty())
+      c->confirmation = found == c->clause && out.find(status + " ") != std::string::npos
+                            ? "confirmed: `vgc replay` on a fresh instance (" +
+                                  std::string(wire ? "restarted by --restart" : "a new process") + ") shows the " +
+                                  status + " again"
+                            : "not confirmed: `vgc replay` on a fresh instance did not show the " + status +
+                                  " (depends on the instance's history, or flaky)";
+    if (plugin_crash) {
+      if (!found.empty()) {
+        c->clause = found;  // certify's name for the crash
+        if (const Clause* cl = find_clause(c->clause)) c->level = clause_level_name(cl->level);
+        c->in_baseline = r.baseline.reasons.count(c->clause) > 0;
+      } else {
+        c->replay = apply_line();
         write_cex();
       }
     }
-    s.crashes.push_back(std::move(c));
+  } else if (plugin_crash) {
+    c->replay = apply_line();
+    write_cex();
   }
-  // Group by clause.
+}
+
+// One finding per signature: described, its input minimized (raw bytes)
+// or its program shrunk (clause findings), its counterexample written.
+void write_findings(CampaignRun* r, std::map<std::string, CrashGroup>& unique) {
+  std::size_t k = 0;
+  for (auto& [key, g] : unique) {
+    CampaignCrash c = describe_crash(*r, key, g);
+    std::string bytes;
+    read_file(c.input, &bytes);
+    if (!shrinks_as_program(*r, c)) minimize_raw_input(r, key, g, unique.size() - k, &c, &bytes);
+    ++k;
+    const char* ext = r->name == "text" ? "txt" : r->mesh ? "mesh.txt" : r->name == "verse_packet" ? "packet.txt" : "vgc";
+    c.counterexample = (r->cex / fmt::format("crash-{}{}.{}", k, c.clause.empty() ? "" : "-" + c.clause, ext)).string();
+    if (r->name == "text" || r->name == "verse_packet" || r->mesh) write_input_counterexample(*r, g, bytes, &c);
+    else write_program_counterexample(*r, g, bytes, &c);
+    r->s.crashes.push_back(std::move(c));
+  }
+}
+
+// The findings grouped by clause ("" last), and the count of new ones.
+void group_by_clause(CampaignRun* r) {
+  CampaignSummary& s = r->s;
   std::map<std::string, CampaignClause> by_clause;
   for (std::size_t i = 0; i < s.crashes.size(); ++i) {
     const CampaignCrash& c = s.crashes[i];
@@ -919,7 +1074,7 @@ int run_campaign(const CampaignOptions& o, CampaignSummary* out) {
     g.clause = c.clause;
     g.level = c.level;
     g.in_baseline = c.in_baseline;
-    if (c.in_baseline) g.baseline_reason = baseline.reasons.at(c.clause);
+    if (c.in_baseline) g.baseline_reason = r->baseline.reasons.at(c.clause);
     g.crashes.push_back(i);
     g.inputs += c.inputs;
     if (c.first_seen_s && (!g.first_seen_s || *c.first_seen_s < *g.first_seen_s)) g.first_seen_s = c.first_seen_s;
@@ -928,23 +1083,34 @@ int run_campaign(const CampaignOptions& o, CampaignSummary* out) {
   for (auto& [id, g] : by_clause)
     if (!id.empty()) s.clauses.push_back(std::move(g));
   if (by_clause.count("")) s.clauses.push_back(std::move(by_clause[""]));
+}
 
-  for (const auto& e : fs::directory_iterator(corpus))
+// The corpus and speed figures of the summary.
+void count_corpus_and_speed(CampaignRun* r) {
+  CampaignSummary& s = r->s;
+  const Progress& p = r->progress;
+  for (const auto& e : fs::directory_iterator(r->corpus))
     if (e.is_regular_file()) {
       ++s.corpus_files;
       s.corpus_bytes += e.file_size();
     }
-  s.wall_s = std::chrono::duration<double>(clock::now() - t0).count();
-  s.executions = p.execs + execs_before;
+  s.wall_s = std::chrono::duration<double>(clock::now() - r->t0).count();
+  s.executions = p.execs + r->execs_before;
   s.exec_per_s_last = p.exec_s;
   s.cov = p.cov;
   s.ft = p.ft;
-  const double fuzz_wall = std::min(s.wall_s, o.time_s + grace);
+  const double grace = r->o.grace_s > 0 ? r->o.grace_s : 5;
+  const double fuzz_wall = std::min(s.wall_s, r->o.time_s + grace);
   s.exec_per_s_mean = fuzz_wall > 0 ? static_cast<double>(s.executions) / fuzz_wall : 0.0;
+}
 
+// summary.json and summary.md (each written whole or not at all: a
+// temporary file, then renamed) and report.html. Returns 0, or 2.
+int write_campaign_reports(CampaignRun* r) {
+  const CampaignSummary& s = r->s;
   const std::string json = summary_json(s), md = summary_markdown(s);
-  // Written whole or not at all: a temporary file, then renamed.
-  for (const auto& [file, text] : {std::pair{dir / "summary.json", json}, std::pair{dir / "summary.md", md}}) {
+  std::error_code ec;
+  for (const auto& [file, text] : {std::pair{r->dir / "summary.json", json}, std::pair{r->dir / "summary.md", md}}) {
     fs::path tmp = file;
     tmp += ".tmp";
     if (!write_file(tmp, text)) {
@@ -959,7 +1125,7 @@ int run_campaign(const CampaignOptions& o, CampaignSummary* out) {
   page.seed = s.seed, page.jobs = s.jobs, page.time_s = s.time_s, page.wall_s = s.wall_s;
   page.executions = s.executions, page.exec_per_s_last = s.exec_per_s_last, page.exec_per_s_mean = s.exec_per_s_mean;
   page.coverage = s.cov, page.features = s.ft, page.corpus_files = s.corpus_files, page.corpus_bytes = s.corpus_bytes;
-  page.seed_files = s.seed_files, page.crash_inputs = s.crash_inputs, page.samples = std::move(samples);
+  page.seed_files = s.seed_files, page.crash_inputs = s.crash_inputs, page.samples = std::move(r->samples);
   for (const CampaignCrash& c : s.crashes) {
     CampaignFinding f;
     f.signature = c.signature, f.also = c.also, f.inputs = c.inputs, f.counterexample = c.counterexample;
@@ -968,19 +1134,34 @@ int run_campaign(const CampaignOptions& o, CampaignSummary* out) {
     f.counterexample_text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
     page.findings.push_back(std::move(f));
   }
-  if (std::string error; !write_campaign_html(dir.string(), page, &error)) fmt::print(stderr, "vgc fuzz: {}\n", error);
-  if (!o.quiet) {
+  if (std::string error; !write_campaign_html(r->dir.string(), page, &error)) fmt::print(stderr, "vgc fuzz: {}\n", error);
+  if (!r->o.quiet) {
     fmt::print("{}", md);
-    fmt::print("summary: {}\n", (dir / "summary.json").string());
+    fmt::print("summary: {}\n", (r->dir / "summary.json").string());
   }
-  const bool ran_nothing = p.execs == 0 && s.crash_inputs == 0;
-  if (out) *out = s;
+  return 0;
+}
+
+}  // namespace
+
+int run_campaign(const CampaignOptions& o, CampaignSummary* out) {
+  CampaignRun r(o);
+  if (int rc = check_campaign_options(&r)) return rc;
+  if (int rc = claim_run_directory(&r)) return rc;
+  run_libfuzzer(&r);
+  std::map<std::string, CrashGroup> unique = sign_crash_inputs(&r);
+  write_findings(&r, unique);
+  group_by_clause(&r);
+  count_corpus_and_speed(&r);
+  if (int rc = write_campaign_reports(&r)) return rc;
+  const bool ran_nothing = r.progress.execs == 0 && r.s.crash_inputs == 0;
+  if (out) *out = r.s;
   if (ran_nothing) {
-    fmt::print(stderr, "vgc fuzz: libFuzzer ran no inputs (exit {}); see {}\n", rr.exit,
-               (dir / "fuzzer.log").string());
+    fmt::print(stderr, "vgc fuzz: libFuzzer ran no inputs (exit {}); see {}\n", r.fuzzed.exit,
+               (r.dir / "fuzzer.log").string());
     return 2;
   }
-  return s.new_crashes == 0 ? 0 : 1;
+  return r.s.new_crashes == 0 ? 0 : 1;
 }
 
 std::string summary_json(const CampaignSummary& s) {
@@ -1001,7 +1182,14 @@ std::string summary_json(const CampaignSummary& s) {
                        {"replay_fuzzer", c.replay_fuzzer},
                        {"replayed_clause", c.replayed_clause ? json(*c.replayed_clause) : json(nullptr)},
                        {"confirmation", c.confirmation},
-                       {"first_seen_s", opt(c.first_seen_s)}});
+                       {"first_seen_s", opt(c.first_seen_s)},
+                       {"minimized", c.minimized_input.empty()
+                                         ? json(nullptr)
+                                         : json{{"input", c.minimized_input},
+                                                {"from_bytes", c.input_bytes},
+                                                {"to_bytes", c.minimized_bytes},
+                                                {"by", "libFuzzer -minimize_crash"}}},
+                       {"minimize_note", c.minimize_note}});
   json clauses = json::array();
   for (const CampaignClause& g : s.clauses)
     clauses.push_back({{"clause", g.clause},
@@ -1078,6 +1266,11 @@ std::string summary_markdown(const CampaignSummary& s) {
       for (const auto& a : c.also) md += fmt::format("  - also: {}\n", a);
       md += fmt::format("  - counterexample: `{}`\n  - replay: `{}`\n  - replay the input: `{}`\n", c.counterexample,
                         c.replay, c.replay_fuzzer);
+      if (!c.minimized_input.empty())
+        md += fmt::format("  - input minimized from {} to {} bytes (libFuzzer -minimize_crash): `{}`\n", c.input_bytes,
+                          c.minimized_bytes, c.minimized_input);
+      else if (!c.minimize_note.empty())
+        md += fmt::format("  - input not minimized: {}\n", c.minimize_note);
       if (!c.confirmation.empty()) md += fmt::format("  - {}\n", c.confirmation);
       if (c.replayed_clause)
         md += fmt::format("  - replayed: {}\n", c.replayed_clause->empty() ? "no clause named (did not reproduce)"

@@ -93,6 +93,13 @@ struct CampaignCrash {
   // whether it was confirmed on a fresh instance, and how (or why not).
   std::string confirmation;
   std::optional<double> first_seen_s;  // seconds from the start to the first input of this crash
+  // A raw-bytes finding (one not shrunk as a command program) has its input
+  // minimized by libFuzzer's -minimize_crash (minimize_input.h): the
+  // minimized input ("" when none was kept; the counterexample and
+  // replay_fuzzer use it), its size and the original's, or why not.
+  std::string minimized_input;
+  std::size_t input_bytes = 0, minimized_bytes = 0;
+  std::string minimize_note;
 };
 
 // The crashes of one clause ("" groups those without one).

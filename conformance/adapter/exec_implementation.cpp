@@ -5,7 +5,6 @@
 #include <fcntl.h>
 #include <poll.h>
 #include <signal.h>
-#include <spawn.h>
 #include <string.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -20,7 +19,6 @@
 #include "command_text.h"
 #include "number_text.h"
 
-extern char** environ;
 
 namespace vgc {
 namespace {
@@ -31,7 +29,7 @@ constexpr std::size_t kQuoteBytes = 200;
 
 // The suite must survive writing to a program that has gone: ignore SIGPIPE
 // (write() then fails with EPIPE). Done once, and only when nobody chose a
-// handler of their own. Children get the default back (posix_spawn SETSIGDEF).
+// handler of their own. Children get the default back (reaped_process.cpp).
 void ignore_sigpipe_once() {
   static std::once_flag once;
   std::call_once(once, [] {
@@ -135,51 +133,22 @@ bool ExecImplementation::spawn(std::string* error) {
     close_all();
     return false;
   }
-  posix_spawn_file_actions_t actions;
-  posix_spawnattr_t attr;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawnattr_init(&attr);
-  posix_spawn_file_actions_adddup2(&actions, in[0], 0);
-  posix_spawn_file_actions_adddup2(&actions, out[1], 1);
-  posix_spawn_file_actions_adddup2(&actions, err[1], 2);
-#if defined(__GLIBC__) && (__GLIBC__ > 2 || (__GLIBC__ == 2 && __GLIBC_MINOR__ >= 34))
-  // Nothing else of ours leaks into it, even descriptors opened without O_CLOEXEC.
-  posix_spawn_file_actions_addclosefrom_np(&actions, 3);
-#endif
-  // Own process group (so a timeout kills everything it started), default
-  // signal dispositions, nothing blocked.
-  sigset_t defaults, empty;
-  sigemptyset(&defaults);
-  for (int sig : {SIGPIPE, SIGINT, SIGQUIT, SIGTERM, SIGCHLD, SIGHUP}) sigaddset(&defaults, sig);
-  sigemptyset(&empty);
-  posix_spawnattr_setpgroup(&attr, 0);
-  posix_spawnattr_setsigdefault(&attr, &defaults);
-  posix_spawnattr_setsigmask(&attr, &empty);
-  posix_spawnattr_setflags(&attr, POSIX_SPAWN_SETPGROUP | POSIX_SPAWN_SETSIGDEF | POSIX_SPAWN_SETSIGMASK);
   std::string sh = "/bin/sh", dash_c = "-c";
   char* argv[] = {sh.data(), dash_c.data(), command_.data(), nullptr};
-  pid_t pid = -1;
-  const int rc = posix_spawn(&pid, "/bin/sh", &actions, &attr, argv, environ);
-  posix_spawn_file_actions_destroy(&actions);
-  posix_spawnattr_destroy(&attr);
+  ReapedProcess proc;
+  std::string why;
+  const bool started = spawn_reaped("/bin/sh", argv, in[0], out[1], err[1], &proc, &why);
   close(in[0]);
   close(out[1]);
   close(err[1]);
   in[0] = out[1] = err[1] = -1;
-  if (rc != 0) {
-    *error = std::string("cannot start /bin/sh: ") + strerror(rc);
-    close_all();
-    return false;
-  }
-  if (std::string why; !guard_.watch(pid, &why)) {
-    kill(-pid, SIGKILL);
-    kill(pid, SIGKILL);
-    while (waitpid(pid, nullptr, 0) < 0 && errno == EINTR) {
-    }
+  if (!started) {
     *error = why;
     close_all();
     return false;
   }
+  const pid_t pid = proc.pid;
+  control_fd_ = proc.control_fd;
   pid_ = pid;
   ++starts_;
   in_fd_ = in[1];
@@ -361,13 +330,11 @@ std::string ExecImplementation::kill_and_reap(std::chrono::milliseconds grace) {
     if (Clock::now() >= until) break;
     std::this_thread::sleep_for(std::chrono::milliseconds(2));
   }
-  kill(-pid_, SIGKILL);  // its whole process group, children included
-  kill(pid_, SIGKILL);   // and itself, should it have left the group
-  guard_.release();      // before the reap, while the group id is still ours
-  int status = 0;
-  while (waitpid(pid_, &status, 0) < 0 && errno == EINTR) {
-  }
+  // The reaper kills its group and everything it started, then ends as it did.
+  ReapedProcess proc{pid_, control_fd_};
+  const int status = stop_reaped(&proc);
   pid_ = -1;
+  control_fd_ = -1;
   drain_stderr();
   close_fds();
   if (ended) return describe_status(status);

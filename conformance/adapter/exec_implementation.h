@@ -11,8 +11,10 @@
 // runs in its own process group, every read and write is non-blocking and
 // bounded by a deadline (poll), stderr is drained all the time (the last
 // lines are kept for the report), answers are bounded in size, SIGPIPE is
-// ignored, and the child is always reaped. A watcher (process_group_guard.h)
-// kills the program's process group when vgc ends, even by SIGKILL. A failed call (Crash, Timeout,
+// ignored, and the child is always reaped. It runs under a reaper of its
+// own (reaped_process.h) that kills the program's group and everything it
+// started, setsid'd and double-forked processes included, when the program
+// ends or vgc does, even by SIGKILL. A failed call (Crash, Timeout,
 // ProtocolError) kills the program; every later call returns the same
 // failure without talking to it, until reset() starts it again.
 #pragma once
@@ -24,7 +26,7 @@
 #include <sys/types.h>
 
 #include "implementation.h"
-#include "process_group_guard.h"
+#include "reaped_process.h"
 
 namespace vgc {
 
@@ -93,9 +95,9 @@ class ExecImplementation final : public Implementation {
   OpenOptions options_;
   std::string display_name_;
   std::string hello_name_;
-  pid_t pid_ = -1;
+  pid_t pid_ = -1;            // the program's reaper (its wait status is the program's)
+  int control_fd_ = -1;       // closing it makes the reaper stop the program (reaped_process.h)
   std::uint64_t starts_ = 0;  // programs started so far
-  ProcessGroupGuard guard_;  // kills the program's group if vgc ends first, however
   int in_fd_ = -1;   // the program's stdin
   int out_fd_ = -1;  // its stdout
   int err_fd_ = -1;  // its stderr

@@ -33,8 +33,149 @@ struct Indexed {
   std::map<std::uint32_t, int> vertex, face;
 };
 
+// (Past 4096 elements, a user's whole mesh: duplicates are let in and
+// removed once at the end, dedupe_highlights, instead of a quadratic scan.)
 void add_unique(std::vector<int>* v, int i) {
-  if (std::find(v->begin(), v->end(), i) == v->end()) v->push_back(i);
+  if (v->size() >= 4096 || std::find(v->begin(), v->end(), i) == v->end()) v->push_back(i);
+}
+
+void dedupe_highlights(MeshPicture* pic) {
+  for (std::vector<int>* v : {&pic->highlight_vertices, &pic->highlight_faces})
+    if (v->size() >= 4096) {
+      std::sort(v->begin(), v->end());
+      v->erase(std::unique(v->begin(), v->end()), v->end());
+    }
+}
+
+// A picture of a large mesh (a user's, certify --mesh) would be a smear of
+// 10^5 faces and megabytes of SVG: it keeps the kPictureFaces faces nearest
+// to what the finding is about (the first highlighted element, divergent
+// point or mark: one compact patch around the first difference; several
+// differences spread over the mesh would make a long strip), with every
+// point, mark and segment inside its bounding box, and says so. Returns
+// the sentence for the caption.
+constexpr std::size_t kLargeMesh = 600, kPictureFaces = 64;
+
+std::string focus_on_finding(MeshPicture* pic) {
+  const std::size_t all_faces = pic->faces.size();
+  if (all_faces <= kLargeMesh) return {};
+  auto centroid = [&](const std::vector<int>& f) {
+    Point3 c{0, 0, 0};
+    for (int v : f)
+      for (int k = 0; k < 3; ++k) c[static_cast<std::size_t>(k)] += pic->positions[static_cast<std::size_t>(v)][static_cast<std::size_t>(k)];
+    for (auto& x : c) x /= static_cast<double>(std::max<std::size_t>(1, f.size()));
+    return c;
+  };
+  std::vector<Point3> focus;
+  auto add_focus = [&](const Point3& p) {
+    if (focus.empty() && std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2])) focus.push_back(p);
+  };
+  for (int v : pic->highlight_vertices)
+    if (v >= 0 && static_cast<std::size_t>(v) < pic->positions.size()) add_focus(pic->positions[static_cast<std::size_t>(v)]);
+  for (int f : pic->highlight_faces)
+    if (f >= 0 && static_cast<std::size_t>(f) < all_faces) add_focus(centroid(pic->faces[static_cast<std::size_t>(f)]));
+  for (const auto& [a, b] : pic->highlight_edges)
+    if (a >= 0 && static_cast<std::size_t>(a) < pic->positions.size()) add_focus(pic->positions[static_cast<std::size_t>(a)]);
+  for (int i : pic->divergent_expected)
+    if (i >= 0 && static_cast<std::size_t>(i) < pic->expected_points.size()) add_focus(pic->expected_points[static_cast<std::size_t>(i)]);
+  for (int i : pic->divergent_observed)
+    if (i >= 0 && static_cast<std::size_t>(i) < pic->observed_points.size()) add_focus(pic->observed_points[static_cast<std::size_t>(i)]);
+  for (const auto& p : pic->observed_marks) add_focus(p);
+  const bool centred = focus.empty();
+  if (centred) add_focus(centroid(pic->faces[all_faces / 2]));
+  // The faces nearest to the focus.
+  std::vector<std::pair<double, std::size_t>> by_distance(all_faces);
+  for (std::size_t f = 0; f < all_faces; ++f) {
+    const Point3 c = centroid(pic->faces[f]);
+    double best = HUGE_VAL;
+    for (const auto& p : focus) {
+      const double dx = c[0] - p[0], dy = c[1] - p[1], dz = c[2] - p[2];
+      best = std::min(best, dx * dx + dy * dy + dz * dz);
+    }
+    by_distance[f] = {std::isfinite(best) ? best : HUGE_VAL, f};
+  }
+  std::nth_element(by_distance.begin(), by_distance.begin() + static_cast<std::ptrdiff_t>(kPictureFaces - 1),
+                   by_distance.end());
+  std::vector<std::size_t> kept;
+  for (std::size_t i = 0; i < kPictureFaces; ++i) kept.push_back(by_distance[i].second);
+  std::sort(kept.begin(), kept.end());
+  // Their vertices, renumbered; the bounding box of what is kept.
+  std::vector<int> new_index(pic->positions.size(), -1);
+  MeshPicture out;
+  double lo[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi[3] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
+  auto keep_vertex = [&](int v) {
+    if (v < 0 || static_cast<std::size_t>(v) >= pic->positions.size()) return -1;
+    int& n = new_index[static_cast<std::size_t>(v)];
+    if (n < 0) {
+      n = static_cast<int>(out.positions.size());
+      out.positions.push_back(pic->positions[static_cast<std::size_t>(v)]);
+      if (pic->vertex_labels.size() == pic->positions.size()) out.vertex_labels.push_back(pic->vertex_labels[static_cast<std::size_t>(v)]);
+      for (int k = 0; k < 3; ++k) {
+        lo[k] = std::min(lo[k], out.positions.back()[static_cast<std::size_t>(k)]);
+        hi[k] = std::max(hi[k], out.positions.back()[static_cast<std::size_t>(k)]);
+      }
+    }
+    return n;
+  };
+  std::vector<int> new_face(all_faces, -1);
+  for (std::size_t f : kept) {
+    std::vector<int> face;
+    for (int v : pic->faces[f]) face.push_back(keep_vertex(v));
+    new_face[f] = static_cast<int>(out.faces.size());
+    out.faces.push_back(std::move(face));
+    if (pic->face_labels.size() == all_faces) out.face_labels.push_back(pic->face_labels[f]);
+  }
+  double extent = 0;
+  for (int k = 0; k < 3; ++k) extent = std::max(extent, hi[k] - lo[k]);
+  // Refined points and normals: those over the patch. What the
+  // implementation showed instead (marks, outlines) may lie off the
+  // surface: half the patch's size around it.
+  auto within = [&](const Point3& p, double pad) {
+    for (int k = 0; k < 3; ++k)
+      if (!(p[static_cast<std::size_t>(k)] >= lo[k] - pad && p[static_cast<std::size_t>(k)] <= hi[k] + pad)) return false;
+    return true;
+  };
+  auto inside = [&](const Point3& p) { return within(p, extent * 0.05); };
+  auto near = [&](const Point3& p) { return within(p, extent * 0.5); };
+  for (int v : pic->highlight_vertices)
+    if (v >= 0 && static_cast<std::size_t>(v) < new_index.size() && new_index[static_cast<std::size_t>(v)] >= 0)
+      out.highlight_vertices.push_back(new_index[static_cast<std::size_t>(v)]);
+  for (int f : pic->highlight_faces)
+    if (f >= 0 && static_cast<std::size_t>(f) < all_faces && new_face[static_cast<std::size_t>(f)] >= 0)
+      out.highlight_faces.push_back(new_face[static_cast<std::size_t>(f)]);
+  for (const auto& [a, b] : pic->highlight_edges) {
+    const int na = a >= 0 && static_cast<std::size_t>(a) < new_index.size() ? new_index[static_cast<std::size_t>(a)] : -1;
+    const int nb = b >= 0 && static_cast<std::size_t>(b) < new_index.size() ? new_index[static_cast<std::size_t>(b)] : -1;
+    if (na >= 0 && nb >= 0) out.highlight_edges.push_back({na, nb});
+  }
+  for (const auto& p : pic->observed_marks)
+    if (near(p)) out.observed_marks.push_back(p);
+  for (const auto& o : pic->observed_outlines)
+    if (!o.empty() && near(o.front())) out.observed_outlines.push_back(o);
+  auto keep_points = [&](const std::vector<Point3>& from, const std::vector<int>& divergent, std::vector<Point3>* to,
+                         std::vector<int>* to_divergent) {
+    std::vector<int> index(from.size(), -1);
+    for (std::size_t i = 0; i < from.size(); ++i)
+      if (inside(from[i])) {
+        index[i] = static_cast<int>(to->size());
+        to->push_back(from[i]);
+      }
+    for (int i : divergent)
+      if (i >= 0 && static_cast<std::size_t>(i) < from.size() && index[static_cast<std::size_t>(i)] >= 0)
+        to_divergent->push_back(index[static_cast<std::size_t>(i)]);
+  };
+  keep_points(pic->expected_points, pic->divergent_expected, &out.expected_points, &out.divergent_expected);
+  keep_points(pic->observed_points, pic->divergent_observed, &out.observed_points, &out.divergent_observed);
+  for (const auto& s : pic->expected_segments)
+    if (inside(s.first)) out.expected_segments.push_back(s);
+  for (const auto& s : pic->observed_segments)
+    if (inside(s.first)) out.observed_segments.push_back(s);
+  *pic = std::move(out);
+  return " The mesh has " + std::to_string(all_faces) + " polygons: the picture shows the " +
+         std::to_string(kPictureFaces) +
+         (centred ? " in the middle of the list (nothing is highlighted)"
+                  : " nearest to the first thing the finding is about") +
+         " and what lies within them; the OBJ file below holds the whole mesh.";
 }
 
 // The element a command names: a vertex or a polygon of the final state
@@ -366,6 +507,8 @@ FindingPicture picture_of_finding(const ClauseOutcome& co) {
                     !pic.highlight_edges.empty() || !pic.observed_marks.empty() || !pic.observed_outlines.empty() ||
                     !pic.divergent_expected.empty() || !pic.divergent_observed.empty() ||
                     !pic.observed_segments.empty() || !pic.expected_segments.empty();
+  dedupe_highlights(&pic);
+  what += focus_on_finding(&pic);
   // Shrinking often leaves every vertex at one point: say so, or the
   // picture (one dot) would look broken.
   bool one_point = out.mesh.vertex_count() > 1;

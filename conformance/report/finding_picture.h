@@ -33,6 +33,10 @@ struct FindingPicture {
   // is filled when false.
   bool has_mesh = false;
   MeshArrays mesh;  // the reference's final state (the OBJ file)
+  // The drawing. For a mesh of more than 600 polygons (a user's mesh,
+  // certify --mesh) it is a patch of 64 polygons around the first thing
+  // the finding is about, renumbered (its indices are its own, not mesh's),
+  // and the caption says so; `mesh` is always whole.
   MeshPicture picture;
   // What is drawn and what is highlighted, for the reader (plain text).
   std::string caption;

@@ -55,7 +55,7 @@ bool read_reports(const std::vector<std::string>& dirs, std::vector<json>* out, 
 // Same run but the shard; every shard 1..N exactly once.
 bool check_shards(const std::vector<json>& reports, const std::vector<std::string>& dirs, std::string* error) {
   for (const char* key : {"seed", "cases_per_property", "max_size", "budget_seconds", "clauses_selected",
-                          "implementation", "strict"}) {
+                          "implementation", "strict", "environment_prefix"}) {
     for (std::size_t i = 1; i < reports.size(); ++i)
       if (reports[i].value(key, json()) != reports[0].value(key, json())) {
         *error = "the runs differ in " + std::string(key) + ": " + dirs[0] + " has " + reports[0].value(key, json()).dump() +
@@ -104,6 +104,7 @@ PropertyOutcome property_from(const json& p) {
   o.set_aside = p.value("set_aside", 0);
   o.not_judged = p.value("not_judged", 0);
   o.rounds = p.value("rounds", 0);
+  o.steps_taken_out = p.value("steps_taken_out", 0);
   o.seconds = p.value("seconds", 0.0);
   for (const auto& f : p.value("findings", json::array())) {
     PropertyFinding pf;
@@ -146,6 +147,11 @@ ClauseOutcome clause_from(const Clause& clause, const json& c) {
     co.found_by = c.value("found_by", std::string());
     co.seed = c.value("seed", std::uint64_t{0});
     co.tolerated_from_start = c.value("tolerated_from_start", false);
+    // What the implementation showed: report.html draws the finding from it.
+    co.finding->shown_by = c.value("shown_by", std::string());
+    co.finding->observed_document = c.value("observed_document", std::string());
+    co.finding->expected_line = c.value("expected_line", std::string());
+    co.finding->observed_line = c.value("observed_line", std::string());
     std::string text;
     for (const auto& line : c.value("counterexample_commands", json::array())) text += line.get<std::string>() + "\n";
     TextError e;
@@ -230,6 +236,9 @@ bool merge_runs(const std::vector<std::string>& run_dirs, MergedRun* out, std::s
       const json rejected = k.value("rejected", json::object());
       for (const auto& [reason, n] : rejected.items()) c.rejected[reason] += n.get<long>();
     }
+    // Each property ran in one shard: the rules its steps used add up.
+    const json rules = r.value("rule_uses", json::object());
+    for (const auto& [rule, n] : rules.items()) run.rule_uses[rule] += n.get<long>();
     for (const auto& c : r["clauses"])
       if (c.contains("baseline_reason"))
         out->baseline.reasons[c["id"].get<std::string>()] = c["baseline_reason"].get<std::string>();
@@ -252,6 +261,9 @@ bool merge_runs(const std::vector<std::string>& run_dirs, MergedRun* out, std::s
     if (p.status == "stopped") run.complete = false;
 
   out->ctx.implementation_spec = first.value("implementation", std::string());
+  // The shards' VGC_* variables (VGC_FAULT, ...), not merge's own, start the
+  // replay commands (a report.json of before version 4 has none: merge's).
+  if (first.contains("environment_prefix")) out->ctx.environment_prefix = first["environment_prefix"].get<std::string>();
   out->ctx.started = started;
   // The shard's re-run command without its --shard: the unsharded run.
   out->ctx.command_line = std::regex_replace(first.value("rerun", std::string()), std::regex(" --shard [0-9]+/[0-9]+"), "");

@@ -11,8 +11,10 @@
 // exercised counts summed, unchecked when a shard that judged it could not.
 // Shards of different seeds, cases, sizes, budgets, clause selections,
 // strictness or implementations are refused, and so is a set with a shard
-// missing or given twice. What report.json does not keep (the document an
-// implementation showed for a capability finding, per-property exercised
+// missing or given twice. report.json keeps what report.html and summary.md
+// need of a shard: the document an implementation showed for a finding
+// (the picture is drawn from it), the rules used, the VGC_* environment of
+// the replay commands. What it does not keep (per-property exercised
 // counts) is not in the merged run either.
 #pragma once
 

@@ -12,6 +12,7 @@
 // it is whole or absent; reports/latest then points at it.
 #pragma once
 
+#include <optional>
 #include <string>
 
 #include "baseline.h"
@@ -30,6 +31,10 @@ struct ReportContext {
   std::string run_dir;              // where the run's files end up (final path)
   const Baseline* baseline = nullptr;
   std::string baseline_path;
+  // The VGC_* variables the run's implementation ran with, as a command
+  // prefix ("VGC_FAULT='a,b' "; vgc_environment_prefix()), for the replay
+  // commands; unset: this process's. `vgc merge` sets the shards' own.
+  std::optional<std::string> environment_prefix;
 };
 
 // "reports/<implementation slug>/<started>-seed<seed>[-shard<i>of<n>]"
@@ -41,8 +46,16 @@ bool claim_run_dir(const std::string& reports_root, const RunResult& run, Report
 
 // File name, relative to the run directory, of a clause's counterexample.
 std::string counterexample_path(const ClauseOutcome& co);
+// The counterexample's program as summary.md and report.html show it
+// inline: the whole of it up to kInlineCommands commands; beyond (a user's
+// mesh, `certify --mesh`), its first and last commands and a line naming
+// the file that holds all of it.
+inline constexpr std::size_t kInlineCommands = 200;
+std::string inline_program(const ClauseOutcome& co);
 // The one-line command that replays a counterexample file.
 std::string replay_command(const std::string& file, const std::string& implementation_spec);
+// The same for this run's implementation and environment (ctx).
+std::string replay_command(const std::string& file, const ReportContext& ctx);
 // "VGC_FAULT='a,b' " for every VGC_* variable of this process's environment
 // (sorted), so a printed command repeats the run with what the
 // implementation under test may read; empty when there is none.

@@ -79,6 +79,17 @@ std::string counterexample_path(const ClauseOutcome& co) {
   return "counterexamples/" + std::string(co.clause->id) + ".vgc";
 }
 
+std::string inline_program(const ClauseOutcome& co) {
+  const std::size_t n = co.program.commands.size();
+  if (n <= kInlineCommands) return print_program(co.program);
+  Program head, tail;
+  head.commands.assign(co.program.commands.begin(), co.program.commands.begin() + 20);
+  tail.commands.assign(co.program.commands.end() - 20, co.program.commands.end());
+  tail.request = co.program.request;
+  return print_program(head) + "# ... " + std::to_string(n - 40) + " more commands (" + std::to_string(n) +
+         " in all: " + counterexample_path(co) + " holds every one) ...\n" + print_program(tail);
+}
+
 std::string vgc_environment_prefix() {
   std::vector<std::string> vars;
   for (char** e = environ; e && *e; ++e) {
@@ -97,6 +108,11 @@ std::string replay_command(const std::string& file, const std::string& implement
   return vgc_environment_prefix() + program_command() + " replay " + shell_quote(file) + " --impl " + shell_quote(implementation_spec);
 }
 
+std::string replay_command(const std::string& file, const ReportContext& ctx) {
+  return ctx.environment_prefix.value_or(vgc_environment_prefix()) + program_command() + " replay " +
+         shell_quote(file) + " --impl " + shell_quote(ctx.implementation_spec);
+}
+
 std::string render_counterexample(const ClauseOutcome& co, const ReportContext& ctx) {
   const std::string file = (fs::path(ctx.run_dir) / counterexample_path(co)).string();
   std::string out;
@@ -109,7 +125,7 @@ std::string render_counterexample(const ClauseOutcome& co, const ReportContext& 
     if (ch == '\n') ch = ' ';
   out += "# finding: " + msg + "\n";
   out += "# spec (" + std::string(co.clause->source) + "): " + std::string(co.clause->text) + "\n";
-  out += "# replay: " + replay_command(file, ctx.implementation_spec) + "\n";
+  out += "# replay: " + replay_command(file, ctx) + "\n";
   if (co.program.request) {
     out += "# " + std::to_string(co.program.commands.size()) +
            " commands from a fresh node; then the check of the capability \"" + co.program.request->capability +

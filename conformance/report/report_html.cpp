@@ -146,9 +146,9 @@ void finding_section(pugi::xml_node parent, const ClauseOutcome& co, const Verdi
   auto link = add(h4, "a", counterexample_path(co));
   link.append_attribute("href") = counterexample_path(co).c_str();
   add_text(h4, ")");
-  add(sec, "pre", print_program(co.program), "program");
+  add(sec, "pre", inline_program(co), "program");
   add(sec, "h4", "Replay");
-  add(sec, "pre", replay_command(file, ctx.implementation_spec), "replay");
+  add(sec, "pre", replay_command(file, ctx), "replay");
 }
 
 }  // namespace

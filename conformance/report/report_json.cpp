@@ -47,6 +47,8 @@ std::string render_report_json(const RunResult& run, const Verdict& v, const Rep
                       {"status", finding_status_name(run.preflight->status)},
                       {"message", run.preflight->message}};
   if (ctx.baseline) j["baseline"] = ctx.baseline_path;
+  // The VGC_* variables of the run, as the replay commands start with them.
+  j["environment_prefix"] = ctx.environment_prefix.value_or(vgc_environment_prefix());
 
   // Per shown status (verdict.h), the same counts as stdout, summary.md and
   // report.html: "fail" is a failure that gates; a SHOULD one is counted
@@ -80,12 +82,23 @@ std::string render_report_json(const RunResult& run, const Verdict& v, const Rep
       for (const auto& cmd : co.program.commands) lines.push_back(print_command(cmd));
       c["counterexample_commands"] = lines;
       if (co.tolerated_from_start) c["tolerated_from_start"] = true;
+      // What the implementation showed (report.html's picture is drawn from
+      // it; `vgc merge` reads it back): the document or capability request,
+      // its whole text, the first differing lines.
+      const Finding& f = *co.finding;
+      if (!f.shown_by.empty()) c["shown_by"] = f.shown_by;
+      // (Up to 4 MiB: an answer about a user's whole mesh, certify --mesh, can
+      // be far larger; report.html then draws that finding from the run itself.)
+      if (!f.observed_document.empty() && f.observed_document.size() <= (4u << 20))
+        c["observed_document"] = f.observed_document;
+      if (!f.expected_line.empty()) c["expected_line"] = f.expected_line;
+      if (!f.observed_line.empty()) c["observed_line"] = f.observed_line;
       if (co.program.request) {  // the capability check vgc replay repeats after the commands
         c["capability_check"] = {{"capability", co.program.request->capability},
                                  {"variant", co.program.request->variant}};
         if (co.program.request->draw) c["capability_check"]["draw"] = *co.program.request->draw;
       }
-      c["replay"] = replay_command((std::filesystem::path(ctx.run_dir) / file).string(), ctx.implementation_spec);
+      c["replay"] = replay_command((std::filesystem::path(ctx.run_dir) / file).string(), ctx);
     }
     clauses.push_back(c);
   }

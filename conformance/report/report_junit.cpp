@@ -71,8 +71,7 @@ std::string render_junit(const RunResult& run, const Verdict& v, const ReportCon
       f.append_attribute("message") = co.finding->message.c_str();
       std::ostringstream body;
       body << co.clause->text << "\n\nFound by " << co.found_by << " (seed " << co.seed << ").\nReplay: "
-           << replay_command((std::filesystem::path(ctx.run_dir) / counterexample_path(co)).string(),
-                             ctx.implementation_spec)
+           << replay_command((std::filesystem::path(ctx.run_dir) / counterexample_path(co)).string(), ctx)
            << "\n";
       f.text().set(body.str().c_str());
       ++(is_error ? errors : failures);

@@ -68,8 +68,8 @@ std::string render_summary(const RunResult& run, const Verdict& v, const ReportC
       out += fmt::format("{} ({} commands, from a fresh node; found by `{}`, seed {}):\n\n```\n{}```\n\n",
                          co.tolerated_from_start ? "First program it was seen on (tolerated from the start, not shrunk)"
                                                  : "Shrunk counterexample",
-                         co.program.commands.size(), co.found_by, co.seed, print_program(co.program));
-      out += fmt::format("Replay: `{}`\n\n", replay_command(file, ctx.implementation_spec));
+                         co.program.commands.size(), co.found_by, co.seed, inline_program(co));
+      out += fmt::format("Replay: `{}`\n\n", replay_command(file, ctx));
     }
   };
   section(v.new_failures, "Failures", "");

@@ -105,4 +105,20 @@ check(any(any(isinstance(v, dict) and "vgc merge" in " ".join(map(str, v.get("sc
               "certify" in v.get("needs", []) for v in y.values()) for y, _ in gitlab),
       "docs/ci.md: the GitLab CI file merges the shards (vgc merge) in a job after them")
 
+# The nightly wire soak: a CPU budget whose wall-clock cap, with the time to
+# build, ends inside the job's timeout (a soak killed by the runner writes no
+# table).
+batch = load((root / ".github" / "workflows" / "cflite_batch.yml").read_text(), "cflite_batch.yml") or {}
+soak = (batch.get("jobs") or {}).get("WireSoak") or {}
+runs = [str(s.get("run", "")) for s in soak.get("steps") or [] if "fuzz --all" in str(s.get("run", ""))]
+check(len(runs) == 1, "cflite_batch.yml: the WireSoak job runs one vgc fuzz --all")
+if runs:
+    m_time = re.search(r"--time (\d+)", runs[0])
+    m_cap = re.search(r"--wall-cap ([\d.]+)", runs[0])
+    check("--cpu-time" in runs[0] and m_time and m_cap, "WireSoak: a --cpu-time soak with --time and --wall-cap")
+    if m_time and m_cap:
+        cap_min = float(m_time.group(1)) * float(m_cap.group(1)) / 60
+        check(cap_min + 20 <= float(soak.get("timeout-minutes", 0)),
+              f"WireSoak: its wall cap ({cap_min:.0f} min) and 20 min of build fit in timeout-minutes")
+
 sys.exit(1 if problems else 0)

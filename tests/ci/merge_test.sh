@@ -1,25 +1,33 @@
 #!/usr/bin/env bash
-# merge_test.sh VGC FAULT_PLUGIN PYTHON3 — `vgc merge` of the four shards of
-# a run gives the unsharded run (issue 19, item 7): for the reference and
-# for the fault plugin (VGC_FAULT=base-layer-destroyable), the merged
-# report.json has the unsharded verdict, exit code, counts, per-clause
-# status, exercised counts, notes and findings (message, found_by,
-# counterexample), and the same properties; merge's exit code is the
+# merge_test.sh VGC FAULT_PLUGIN PYTHON3 REQUESTS_PLUGIN — `vgc merge` of
+# the four shards of a run gives the unsharded run (issue 19, item 7): for
+# the reference, for the fault plugin (VGC_FAULT=base-layer-destroyable)
+# and for the fault plugin answering capability requests with three
+# capability faults (findings whose pictures are drawn from what the
+# implementation showed), the merged report.json has the unsharded
+# verdict, exit code, counts, per-clause status, exercised counts, notes
+# and findings (message, found_by, counterexample), and the same
+# properties; report.html and summary.md are the unsharded ones but for
+# the run directory, times and the start time (the pictures of capability
+# findings, the replay commands' VGC_* environment and the rules used
+# included: the merge lacked all three); merge's exit code is the
 # unsharded one. It refuses shards of different seeds and names a missing
 # shard. (There was no merge: reports/latest pointed at the last shard.)
 set -uo pipefail
-[ $# -ge 3 ] || { echo "usage: $0 VGC FAULT_PLUGIN PYTHON3" >&2; exit 2; }
-vgc=$1 plugin=$2 python=$3
+[ $# -ge 4 ] || { echo "usage: $0 VGC FAULT_PLUGIN PYTHON3 REQUESTS_PLUGIN" >&2; exit 2; }
+vgc=$1 plugin=$2 python=$3 requests=$4
 tmp=$(mktemp -d "${TMPDIR:-/tmp}/vgc_merge.XXXXXX")
 trap 'rm -rf "$tmp"' EXIT
 cd "$tmp" || exit 2
 fail() { echo "merge: $*" >&2; exit 1; }
 run_dir() { sed -n 's/^report: \(.*\)\/summary.md$/\1/p' "$1"; }
 
-for impl in reference "plugin:$plugin"; do
+for impl in reference "plugin:$plugin" "plugin:$requests"; do
   name=${impl%%:*}
   env=()
-  [ "$name" = plugin ] && env=(VGC_FAULT=base-layer-destroyable)
+  [ "$impl" = "plugin:$plugin" ] && env=(VGC_FAULT=base-layer-destroyable)
+  [ "$impl" = "plugin:$requests" ] && name=requests &&
+    env=(VGC_FAULT=subdivision-ignores-creases,classify-misses-boundary,normals-flat)
   env "${env[@]}" "$vgc" certify --quiet --cases 40 --impl "$impl" --reports "$name/whole" >"$name.whole.out" 2>&1
   whole_rc=$?
   shards=()
@@ -51,8 +59,29 @@ PY
   for f in summary.md report.html junit.xml; do
     [ -s "$(run_dir "$name.merge.out")/$f" ] || fail "$name: merged $f missing"
   done
-  [ "$(head -1 "$(run_dir "$name.whole.out")/summary.md")" = "$(head -1 "$(run_dir "$name.merge.out")/summary.md")" ] ||
-    fail "$name: merged summary.md's headline differs from the unsharded one"
+  # report.html and summary.md: the same but for the run directory, the
+  # times and the start time.
+  for f in report.html summary.md; do
+    "$python" - "$(run_dir "$name.whole.out")" "$(run_dir "$name.merge.out")" "$f" >"$name.$f.diff" <<'PY' ||
+import difflib, re, sys
+def norm(run_dir, f):
+    t = open(run_dir + "/" + f, encoding="utf-8").read().replace(run_dir, "RUN")
+    t = re.sub(r"\b\d+\.\d+ s\b", "T s", t)                        # the run's seconds
+    t = re.sub(r"<td>\d+\.\d\d</td>", "<td>T</td>", t)               # a property's seconds (html)
+    t = re.sub(r"\| \d+\.\d\d \|$", "| T |", t, flags=re.M)          # a property's seconds (md)
+    t = re.sub(r"\d{4}-\d\d-\d\dT\d\d:\d\d:\d\dZ", "STARTED", t)
+    return t.replace("><", ">\n<").splitlines()
+a, b = norm(sys.argv[1], sys.argv[3]), norm(sys.argv[2], sys.argv[3])
+d = list(difflib.unified_diff(a, b, "unsharded", "merged", lineterm="", n=1))
+print("\n".join(d[:40]))
+sys.exit(1 if d else 0)
+PY
+      { cat "$name.$f.diff" >&2; fail "$name: merged $f differs from the unsharded one (above)"; }
+  done
+  if [ "$name" = requests ]; then  # the capability findings have their pictures
+    n=$(grep -o 'class="hl-edge"\|class="expected-point"\|class="observed-point"' "$(run_dir "$name.merge.out")/report.html" | wc -l)
+    [ "$n" -gt 0 ] || fail "requests: the merged report.html draws no highlighted edge or refined point"
+  fi
   # junit.xml: the same test cases with the same results (times aside).
   strip() { sed -E 's/ time="[^"]*"//; s/ name="vgc certify [^"]*"//' "$1" | grep -v "Replay:\|replay '"; }
   diff <(strip "$(run_dir "$name.whole.out")/junit.xml") <(strip "$(run_dir "$name.merge.out")/junit.xml") >"$name.junit.diff" ||

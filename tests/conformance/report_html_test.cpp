@@ -288,6 +288,45 @@ TEST(FindingPicture, AMovedVertexIsHighlightedAndItsObservedPlaceMarked) {
   EXPECT_EQ(fp.picture.observed_marks[0], (Point3{2, 2, 4}));
 }
 
+TEST(FindingPicture, ALargeMeshIsCroppedToThePatchAroundTheFinding) {
+  // A user's mesh (certify --mesh): a 40x40 grid of quads, 1,600 polygons,
+  // with vertex 820 (row 20, column 20) moved. The picture keeps a small
+  // patch around it, labelled, instead of a smear of the whole mesh, and
+  // says so; the OBJ (fp.mesh) keeps everything.
+  ClauseOutcome co;
+  co.clause = find_clause("VERTEX-SET-1");
+  std::string text;
+  for (int j = 0; j <= 40; ++j)
+    for (int i = 0; i <= 40; ++i) text += "vertex_set_xyz_real64 0 " + std::to_string(j * 41 + i) + " " +
+                                          std::to_string(i) + " " + std::to_string(j) + " 0\n";
+  for (int j = 0; j < 40; ++j)
+    for (int i = 0; i < 40; ++i) {
+      const int a = j * 41 + i;
+      text += "polygon_set_corner_uint32 1 " + std::to_string(j * 40 + i) + " " + std::to_string(a) + " " +
+              std::to_string(a + 41) + " " + std::to_string(a + 42) + " " + std::to_string(a + 1) + "\n";
+    }
+  TextError e;
+  ASSERT_TRUE(parse_commands(text, &co.program.commands, &e)) << e.to_string();
+  Finding f{"VERTEX-SET-1", FindingStatus::Fail, "moved"};
+  f.shown_by = "snapshot";
+  f.expected_line = "vertex 840 20 20 0";
+  f.observed_line = "vertex 840 20 20 1";
+  co.finding = f;
+  const FindingPicture fp = picture_of_finding(co);
+  ASSERT_TRUE(fp.has_mesh);
+  EXPECT_EQ(fp.mesh.face_count(), 1600);
+  EXPECT_LE(fp.picture.faces.size(), 100u) << "the picture draws the whole mesh";
+  EXPECT_GE(fp.picture.faces.size(), 16u);
+  ASSERT_EQ(fp.picture.highlight_vertices.size(), 1u);
+  ASSERT_EQ(fp.picture.vertex_labels.size(), fp.picture.positions.size());
+  EXPECT_EQ(fp.picture.vertex_labels[static_cast<std::size_t>(fp.picture.highlight_vertices[0])], "840");
+  EXPECT_EQ(fp.picture.observed_marks.size(), 1u);
+  for (const auto& p : fp.picture.positions) EXPECT_LE(std::hypot(p[0] - 20, p[1] - 20), 8.0);
+  EXPECT_NE(fp.caption.find("The mesh has 1600 polygons"), std::string::npos) << fp.caption;
+  const std::string svg = render_mesh_svg(fp.picture, 600, 450);
+  EXPECT_LT(svg.size(), 100000u);
+}
+
 TEST(FindingPicture, VerticesAllAtOnePointAreSaidToBe) {
   ClauseOutcome co;
   co.clause = find_clause("POLY-DELETE-1");

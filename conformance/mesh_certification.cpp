@@ -1,0 +1,205 @@
+// mesh_certification.cpp — see mesh_certification.h.
+#include "mesh_certification.h"
+
+#include <algorithm>
+#include <chrono>
+
+#include "capability.h"
+#include "clause.h"
+#include "command_text.h"
+#include "document_diff.h"
+#include "node.h"
+#include "snapshot.h"
+
+namespace vgc {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+
+// The mesh on a fresh instance and on the reference: verdicts per command,
+// the snapshots once at the end.
+std::optional<Finding> build(const ObjMesh& mesh, Implementation& sut, Node* model) {
+  const Answer fresh = sut.reset();
+  if (fresh.status != CallStatus::Ok) return call_failure("STABLE-1", fresh.status, "resetting to a fresh node", fresh.detail);
+  for (const Command& c : mesh.program.commands) {
+    const Reason want = model->apply(c);
+    const Answer got = sut.apply(c);
+    if (got.status != CallStatus::Ok)
+      return call_failure("STABLE-1", got.status, "applying `" + print_command(c) + "`", got.detail);
+    if (got.applied != (want == Reason::Ok))
+      return Finding("ACCEPT-1", FindingStatus::Fail,
+                     "`" + print_command(c) + "` of the mesh: expected " +
+                         (want == Reason::Ok ? std::string("applied") : std::string("rejected ") + std::string(reason_name(want))) +
+                         ", observed " + (got.applied ? "applied" : "rejected " + got.reason));
+  }
+  const Document snap = sut.snapshot();
+  if (snap.status != CallStatus::Ok) return call_failure("STABLE-1", snap.status, "showing the snapshot", snap.detail);
+  if (auto d = diff_documents(print_snapshot(*model), snap.text)) {
+    // Blamed by the kind of the first differing line (a generated case
+    // localizes the rule; a mesh of 10^5 commands is compared once).
+    Finding f(d->kind == "polygon" ? "POLY-CORNERS-1" : "VERTEX-SET-1", FindingStatus::Fail,
+              "after the mesh's " + std::to_string(mesh.program.commands.size()) +
+                  " commands, the snapshot differs: " + d->describe());
+    f.shown_by = "snapshot";
+    f.observed_document = snap.text;
+    f.expected_line = d->expected_line;
+    f.observed_line = d->observed_line;
+    return f;
+  }
+  return std::nullopt;
+}
+
+bool all_triangles(const ObjMesh& mesh) { return mesh.quads == 0 && mesh.triangles > 0; }
+
+}  // namespace
+
+bool MeshCertification::any_judged() const {
+  for (const auto& c : checks)
+    if (c.status == "pass" || c.status == "fail") return true;
+  return false;
+}
+
+bool MeshCertification::any_failed() const {
+  if (build_failure) return true;
+  for (const auto& c : checks)
+    if (c.status == "fail") return true;
+  return false;
+}
+
+MeshCertification certify_mesh(const ObjMesh& mesh, Implementation& sut, int levels) {
+  MeshCertification out;
+  out.commands = mesh.program.commands.size();
+  Node model;
+  const auto t0 = Clock::now();
+  out.build_failure = build(mesh, sut, &model);
+  out.build_seconds = since(t0);
+  if (out.build_failure) return out;
+  const std::vector<std::string> claimed = query_capabilities(sut);
+  struct Planned {
+    const char* capability;
+    const char* clause;
+    int level;
+  };
+  std::vector<Planned> plan = {{"manifold", "MESH-CLASSIFY-1", 0}, {"normals", "NORMALS-SPLIT-1", 0}};
+  for (int l = 1; l <= levels; ++l) plan.push_back({"subdivision", "SUBD-CATMARK-1", l});
+  if (all_triangles(mesh))
+    for (int l = 1; l <= levels; ++l) plan.push_back({"loop", "LOOP-TRIANGLE-1", l});
+  for (const Planned& p : plan) {
+    MeshCheckOutcome o;
+    o.capability = p.capability;
+    o.clause = p.clause;
+    o.level = p.level;
+    const bool is_claimed = std::find(claimed.begin(), claimed.end(), p.capability) != claimed.end();
+    const CapabilityCheck* check = find_capability_check(p.capability);
+    if (!is_claimed) {
+      o.status = "not-claimed";
+      o.note = sut.name() + " does not claim \"" + p.capability + "\"";
+    } else if (!check || (!check->check && !check->check_drawn)) {
+      o.status = "no-oracle";
+      o.note = "this vgc has no oracle linked for \"" + std::string(p.capability) + "\"";
+    } else {
+      const auto t = Clock::now();
+      const CapabilityRequest request{p.capability, p.level == 0 ? 1 : p.level, std::nullopt};
+      std::optional<Finding> f = run_capability_check(*check, model, sut, request);
+      o.seconds = since(t);
+      if (!f) {
+        o.status = "pass";
+      } else if (f->status == FindingStatus::NotJudged) {
+        o.status = "not-judged";
+        o.note = f->message;
+      } else {
+        o.status = "fail";
+        o.finding = std::move(f);
+      }
+    }
+    out.checks.push_back(std::move(o));
+  }
+  return out;
+}
+
+RunResult mesh_run_result(const MeshCertification& m, const ObjMesh& mesh, const std::string& implementation,
+                          double seconds) {
+  RunResult run;
+  run.implementation = implementation;
+  run.options.cases = 1;
+  run.options.seed = 0;
+  run.seconds = seconds;
+  run.conformant = !m.any_failed();
+  run.complete = true;
+  const std::string found_by = "mesh";
+  if (m.build_failure) {
+    ClauseOutcome co;
+    co.clause = find_clause(m.build_failure->clause);
+    co.status = "fail";
+    co.finding = m.build_failure;
+    co.found_by = found_by + ".build";
+    co.program = mesh.program;
+    co.exercised = 1;
+    co.properties = {co.found_by};
+    if (co.clause) run.clauses.push_back(std::move(co));
+    PropertyOutcome p;
+    p.id = found_by + ".build";
+    p.status = "fail";
+    p.cases = p.cases_target = p.judged = 1;
+    p.seconds = m.build_seconds;
+    run.properties.push_back(p);
+    return run;
+  }
+  // Clauses in the order of the checks (catalog order for these four).
+  std::vector<std::string> order;
+  for (const auto& c : m.checks)
+    if (std::find(order.begin(), order.end(), c.clause) == order.end()) order.push_back(c.clause);
+  for (const auto& c : m.checks) {
+    PropertyOutcome p;
+    p.id = found_by + "." + c.capability + (c.level ? ".level" + std::to_string(c.level) : "");
+    p.status = c.status == "pass" || c.status == "fail" ? c.status : "skipped";
+    if (p.status == "skipped") p.note = c.note;
+    p.cases_target = 1;
+    p.cases = c.status == "not-claimed" || c.status == "no-oracle" ? 0 : 1;
+    p.judged = c.status == "pass" || c.status == "fail" ? 1 : 0;
+    p.not_judged = c.status == "not-judged" ? 1 : 0;
+    p.seconds = c.seconds;
+    if (c.finding) {
+      PropertyFinding pf;
+      pf.finding = *c.finding;
+      p.findings.push_back(pf);
+    }
+    run.properties.push_back(p);
+  }
+  for (const std::string& id : order) {
+    ClauseOutcome co;
+    co.clause = find_clause(id);
+    if (!co.clause) continue;
+    bool any_pass = false, claimed = false;
+    std::string unjudged;
+    for (const auto& c : m.checks) {
+      if (c.clause != id) continue;
+      const std::string prop = found_by + "." + c.capability + (c.level ? ".level" + std::to_string(c.level) : "");
+      if (c.status != "not-claimed") claimed = true;
+      if (c.status == "pass" || c.status == "fail") {
+        co.properties.push_back(prop);
+        ++co.exercised;
+      }
+      if (c.status == "pass") any_pass = true;
+      if ((c.status == "not-judged" || c.status == "no-oracle") && unjudged.empty())
+        unjudged = prop + ": " + c.note;
+      if (c.status == "fail" && !co.finding) {
+        co.finding = c.finding;
+        co.found_by = prop;
+        co.program.commands = mesh.program.commands;
+        co.program.request = CapabilityRequest{c.capability, c.level == 0 ? 1 : c.level, std::nullopt};
+      }
+    }
+    if (co.finding) co.status = "fail";
+    else if (!claimed) co.status = "not-claimed", co.note = "the implementation does not claim it";
+    else if (!unjudged.empty() && !any_pass) co.status = "unchecked", co.note = unjudged;
+    else co.status = "pass";
+    if (co.status == "unchecked") run.complete = false;
+    run.clauses.push_back(std::move(co));
+  }
+  return run;
+}
+
+}  // namespace vgc

@@ -1,0 +1,68 @@
+// mesh_certification.h — the derived-geometry checks on a team's own mesh:
+// what `vgc certify --mesh FILE.obj` runs (cli/cmd_certify.cpp).
+//
+// Spec: clauses MESH-CLASSIFY-1 (capability "manifold", against CGAL),
+// SUBD-CATMARK-1 ("subdivision", against OpenSubdiv, per level),
+// NORMALS-SPLIT-1 ("normals") and LOOP-TRIANGLE-1 ("loop", per level, on an
+// all-triangle mesh), through the checks the oracle layer registers
+// (capability.h); the mesh as obj_import.h builds it.
+//
+// Rationale: generated cases hold a handful of polygons; a production mesh
+// holds 10^4 to 10^6 and may show what they never do. The mesh is built on
+// a fresh instance of the implementation and on the reference, command by
+// command, each verdict compared (a rejected polygon is a finding before
+// any geometry is judged), then the two snapshots compared once at the end
+// (not after every command: that would cost the square of the mesh). Then
+// each capability the implementation claims is judged by the same check
+// certify uses, at each level up to `levels` for the leveled ones, and
+// reported per level like any capability check: pass, fail (with the
+// finding), not judged (the oracle refuses the mesh, says why), or
+// not-claimed. Nothing here throws for anything the implementation does.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "check_step.h"
+#include "implementation.h"
+#include "obj_import.h"
+#include "runner.h"
+
+namespace vgc {
+
+struct MeshCheckOutcome {
+  std::string capability;  // "manifold", "subdivision", "normals", "loop"
+  std::string clause;      // MESH-CLASSIFY-1, ...
+  int level = 0;           // the subdivision level (0 for manifold and normals)
+  std::string status;      // "pass", "fail", "not-judged", "not-claimed", "no-oracle"
+  std::optional<Finding> finding;  // for "fail"
+  std::string note;        // for "not-judged", "not-claimed", "no-oracle"
+  double seconds = 0;
+};
+
+struct MeshCertification {
+  // Building the mesh on the implementation: the first disagreement with
+  // the reference (a verdict, a crash, the final snapshot), if any; the
+  // checks are not run then.
+  std::optional<Finding> build_failure;
+  std::size_t commands = 0;
+  double build_seconds = 0;
+  std::vector<MeshCheckOutcome> checks;
+  bool any_judged() const;
+  bool any_failed() const;
+};
+
+MeshCertification certify_mesh(const ObjMesh& mesh, Implementation& sut, int levels);
+
+// The certification as a run the report writers take (report.h): one
+// "property" per check and level (mesh.<capability>[.level<N>], one case
+// each), one clause outcome per clause judged (fail when any level
+// failed: the finding of the first, its program the mesh's commands and
+// the capability check; pass when every judged level passed; not-claimed,
+// or unchecked when no level could be judged). A mesh the implementation
+// did not build as the reference is the build finding's clause, failed.
+RunResult mesh_run_result(const MeshCertification& m, const ObjMesh& mesh, const std::string& implementation,
+                          double seconds);
+
+}  // namespace vgc

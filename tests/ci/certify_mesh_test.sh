@@ -1,0 +1,70 @@
+#!/usr/bin/env bash
+# certify_mesh_test.sh VGC REQUESTS_PLUGIN PLAIN_PLUGIN — a user's own mesh
+# (issue 21 item 3). `vgc import` turns an OBJ grid of quads into a command
+# file and refuses a 5-corner face naming file:line:col with foreign bytes
+# escaped; `vgc certify --mesh` builds the mesh on the implementation and
+# judges each claimed derived-geometry capability per level: the reference
+# passes all four checks (exit 0); an exec implementation whose ?subdivide
+# answers are skewed (subdivision_skew_proxy.py) fails SUBD-CATMARK-1 at
+# levels 1 and 2 and nothing else (exit 1); the fault plugin with
+# classify-misses-boundary fails MESH-CLASSIFY-1; a plugin claiming no
+# capability has nothing judged (exit 2). The skewed run's directory holds
+# the report, its picture marking the divergent refined points.
+set -uo pipefail
+[ $# -ge 3 ] || { echo "usage: $0 VGC REQUESTS_PLUGIN PLAIN_PLUGIN" >&2; exit 2; }
+vgc=$1 requests=$2 plain=$3
+here=$(cd "$(dirname "$0")" && pwd)
+tmp=$(mktemp -d "${TMPDIR:-/tmp}/vgc_certify_mesh.XXXXXX")
+trap 'rm -rf "$tmp"' EXIT
+cd "$tmp" || exit 2
+fail() { echo "certify_mesh: $*" >&2; exit 1; }
+
+# A 3x3 grid of quads with one raised vertex (open: one boundary loop).
+for j in 0 1 2 3; do for i in 0 1 2 3; do
+  z=0; [ "$i$j" = 11 ] && z=0.3
+  echo "v $i $j $z"
+done; done >grid.obj
+for j in 0 1 2; do for i in 0 1 2; do
+  a=$((j * 4 + i + 1)); echo "f $a $((a + 1)) $((a + 5)) $((a + 4))"
+done; done >>grid.obj
+
+"$vgc" import grid.obj >grid.vgc 2>import.err || { cat import.err >&2; fail "vgc import of a quad grid failed"; }
+[ "$(grep -c '^vertex_set_xyz_real64 0 ' grid.vgc)" = 16 ] || fail "import: expected 16 vertices"
+[ "$(grep -c '^polygon_set_corner_uint32 1 ' grid.vgc)" = 9 ] || fail "import: expected 9 polygons"
+grep -q 'OBJ has no creases' grid.vgc || fail "import: the file does not say what becomes of sharpness"
+"$vgc" apply --strict grid.vgc >/dev/null || fail "the imported file does not apply on the reference"
+
+bad=$'five\x1b[31m.obj'
+printf 'v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 2 2 2\nf 1 2 3 4 5\n' >"$bad"
+"$vgc" import "$bad" >/dev/null 2>bad.err && fail "import accepted a 5-corner face"
+grep -q '^five\\x1b\[31m\.obj:6:3: error: a face of 5 corners' bad.err || { cat -v bad.err >&2; fail "import's error does not name file:line:col escaped"; }
+
+check() {  # check NAME EXPECTED_RC LINE-REGEX... : certify --mesh output has each line
+  local name=$1 want=$2 rc
+  shift 2
+  rc=$(cat "$name.rc")
+  [ "$rc" = "$want" ] || { cat "$name.out" >&2; fail "$name: exit $rc, expected $want"; }
+  for re in "$@"; do grep -Eq "$re" "$name.out" || { cat "$name.out" >&2; fail "$name: no line matching $re"; }; done
+}
+
+"$vgc" certify --mesh grid.obj --levels 2 >ref.out 2>&1; echo $? >ref.rc
+check ref 0 '^  pass +MESH-CLASSIFY-1 +manifold' '^  pass +NORMALS-SPLIT-1 +normals' \
+  '^  pass +SUBD-CATMARK-1 +subdivision level 1' '^  pass +SUBD-CATMARK-1 +subdivision level 2' ': conformant on grid.obj'
+
+"$vgc" certify --mesh grid.obj --levels 2 --impl "exec:$here/subdivision_skew_proxy.py $vgc" --reports R \
+  >skew.out 2>&1; echo $? >skew.rc
+check skew 1 '^  fail +SUBD-CATMARK-1 +subdivision level 1 .*OpenSubdiv' '^  fail +SUBD-CATMARK-1 +subdivision level 2' \
+  '^  pass +MESH-CLASSIFY-1' '^  pass +NORMALS-SPLIT-1' 'not conformant on grid.obj \(2 fail, 2 pass\)'
+# Its run directory: the finding with the picture of the refined points.
+run=$(sed -n 's/^report: \(.*\)\/summary.md$/\1/p' skew.out)
+[ -s "$run/report.json" ] && [ -s "$run/counterexamples/SUBD-CATMARK-1.vgc" ] || fail "skew: no run directory written"
+grep -q 'class="divergent-expected"' "$run/report.html" || fail "skew: report.html draws no divergent point"
+grep -q '"id": "mesh.subdivision.level1"' "$run/report.json" || fail "skew: report.json has no per-level check"
+
+VGC_FAULT=classify-misses-boundary "$vgc" certify --mesh grid.obj --impl "plugin:$requests" >classify.out 2>&1
+echo $? >classify.rc
+check classify 1 '^  fail +MESH-CLASSIFY-1 +manifold .*boundary_loops' '^  pass +SUBD-CATMARK-1 +subdivision level 2'
+
+"$vgc" certify --mesh grid.obj --impl "plugin:$plain" >plain.out 2>&1; echo $? >plain.rc
+check plain 2 '^  not-claimed +SUBD-CATMARK-1' 'incomplete on grid.obj' 'nothing was judged'
+echo "certify_mesh: import and certify --mesh judge a user's mesh per capability and level; faults are caught"

@@ -1,0 +1,37 @@
+#!/usr/bin/env python3
+"""subdivision_skew_proxy.py VGC — an exec implementation whose Catmull-Clark
+subdivision is wrong: it forwards every line to a child `VGC serve` (the
+reference) and relays the answers, except that in the answer to
+`?subdivide N` the x of every 7th refined vertex is moved by 0.25. A
+stand-in for a node whose subdivision code is broken on real meshes
+(tests/ci/certify_mesh_test.sh)."""
+import subprocess
+import sys
+
+child = subprocess.Popen([sys.argv[1], "serve"], stdin=subprocess.PIPE, stdout=subprocess.PIPE, text=True, bufsize=1)
+for line in sys.stdin:
+    child.stdin.write(line)
+    child.stdin.flush()
+    request = line.strip()
+    skew = request.startswith("?subdivide ")
+    single = request in ("?hello", "?reset", "?quit") or not request.startswith("?")
+    answer = child.stdout.readline()
+    if not answer:
+        sys.exit(3)
+    out = [answer]
+    k = 0
+    while not single and not answer.startswith("error") and answer.strip() != "end":
+        answer = child.stdout.readline()
+        if not answer:
+            sys.exit(3)
+        if skew and answer.startswith("vertex "):
+            k += 1
+            if k % 7 == 0:
+                w = answer.split()
+                w[1] = repr(float(w[1]) + 0.25)
+                answer = " ".join(w) + "\n"
+        out.append(answer)
+    sys.stdout.write("".join(out))
+    sys.stdout.flush()
+    if request == "?quit":
+        break
