@@ -4,6 +4,15 @@
 //
 //   vgc fuzz TARGET [--time S] [--jobs N] [--impl plugin:PATH] [--seed N]
 //                   [--baseline FILE] [--empty-corpus] [--stop-at-first]
+//   vgc fuzz differential --impl exec:CMD|verse:HOST[:PORT] [--timeout S]
+//                   [--verse-bone-form F] [--restart CMD] ...
+//                                      a live implementation, through the
+//                                      adapters certify uses
+//   vgc fuzz wire --impl verse:HOST[:PORT] [--time S] [--seed N] [--restart CMD]
+//                   [--max-inputs N] [--stop-at-first]
+//                                      hostile wire traffic (fuzz/wire_fuzz.h)
+//   vgc fuzz wire --write-seeds DIR [--seed N] [--max-inputs N]
+//                                      its inputs as fuzz_verse_packet seeds
 //   vgc fuzz --all [--time S] [--target-time NAME=S]... [--jobs N] [--seed N]
 //                  [--targets A,B] [--work-corpus DIR]
 //                                      a soak of every target (fuzz/soak.h)
@@ -27,6 +36,7 @@
 
 #include "campaign.h"
 #include "soak.h"
+#include "wire_fuzz.h"
 #include "command_binary.h"
 #include "command_text.h"
 #include "progress_line.h"
@@ -46,7 +56,34 @@ struct FuzzArgs {
   std::vector<std::string> target_times;  // NAME=S
   std::vector<std::string> only;          // --targets
   std::string work_corpus;
+  std::uint64_t max_inputs = 0;  // wire
+  std::string write_seeds;       // wire
 };
+
+// `vgc fuzz wire`: hostile Verse traffic against a running host.
+int run_wire(const FuzzArgs& a) {
+  const fuzz::CampaignOptions& c = a.campaign;
+  if (!a.write_seeds.empty()) {
+    const std::size_t n = fuzz::write_wire_seeds(c.seed, a.max_inputs ? a.max_inputs : 3, a.write_seeds);
+    say("vgc fuzz wire: {} packets written to {}\n", n, a.write_seeds);
+    return n ? 0 : 2;
+  }
+  if (c.jobs != 1 || !c.baseline.empty() || c.empty_corpus) {
+    say(stderr, "vgc fuzz wire: one host, one campaign: --jobs, --baseline and --empty-corpus do not apply\n");
+    return 2;
+  }
+  fuzz::WireFuzzOptions o;
+  o.impl = c.impl;
+  o.time_s = c.time_s;
+  o.seed = c.seed;
+  o.max_inputs = a.max_inputs;
+  if (c.call_timeout_s > 0) o.timeout_s = c.call_timeout_s;
+  o.verse_bone_form = c.verse_bone_form;
+  o.restart = c.restart;
+  o.source_dir = fuzz::campaign_source_dir(c);
+  o.stop_at_first = c.stop_at_first;
+  return fuzz::run_wire_campaign(o);
+}
 
 // `vgc fuzz --all`: the campaign options that apply to a soak, and the
 // per-target times.
@@ -149,6 +186,7 @@ int run_fuzz(const FuzzArgs& a) {
     say(stderr, "vgc fuzz: --cpu-time and --wall-cap are for a soak (--all); one campaign's --time is wall-clock\n");
     return 2;
   }
+  if (a.campaign.target == "wire") return run_wire(a);
   if (a.campaign.target.empty()) {
     say(stderr, "vgc fuzz: name a target (stream, text, differential, verse_packet, mesh_manifold, mesh_subdivision, "
                        "property_<group>) or use --to-text / --to-binary\n");
@@ -172,7 +210,9 @@ void add_fuzz(CLI::App& app, int* exit_code) {
   auto a = std::make_shared<FuzzArgs>();
   fuzz::CampaignOptions& o = a->campaign;
   CLI::App* sub = app.add_subcommand("fuzz", "Run a libFuzzer campaign on a fuzz target, or convert fuzz inputs");
-  sub->add_option("target", o.target, "stream, text, differential, verse_packet, mesh_manifold, mesh_subdivision or property_<group>");
+  sub->add_option("target", o.target,
+                  "stream, text, differential, verse_packet, mesh_manifold, mesh_subdivision, property_<group>, or "
+                  "wire (hostile traffic against a running Verse host, --impl verse:HOST[:PORT])");
   sub->add_option("--time", o.time_s, "Campaign length in seconds, a wall-clock limit (default 60)");
   sub->add_option("--jobs", o.jobs,
                   "Parallel fuzzing jobs (libFuzzer -fork=N, default 1); with --all, targets fuzzed at a time");
@@ -190,15 +230,30 @@ void add_fuzz(CLI::App& app, int* exit_code) {
   sub->add_option("--targets", a->only, "With --all: only these targets (comma-separated)")->delimiter(',');
   sub->add_option("--work-corpus", a->work_corpus,
                   "With --all: the work corpus directory (default reports/fuzz/work-corpus)");
-  sub->add_option("--impl", o.impl, "differential, property_<group>: the implementation under test, plugin:PATH");
+  sub->add_option("--impl", o.impl,
+                  "differential, property_<group>: the implementation under test, plugin:PATH; differential also "
+                  "exec:CMD or verse:[NAME@]HOST[:PORT], a running implementation (docs/fuzzing.md)");
+  sub->add_option("--timeout", o.call_timeout_s,
+                  "exec:/verse: seconds the implementation has per answer (default 5); longer is a hang (timeout)");
+  sub->add_option("--verse-bone-form", o.verse_bone_form,
+                  "verse: the bone_create form to speak: auto (default), spec or r6 (docs/verse_wire.md section 4)")
+      ->check(CLI::IsMember({"auto", "spec", "r6"}));
+  sub->add_option("--restart", o.restart,
+                  "verse: a shell command that starts a fresh host (and returns once it listens); run before a "
+                  "crash or hang is confirmed on a fresh instance. Without it such findings are reported unconfirmed");
   sub->add_option("--seed", o.seed, "libFuzzer seed (default 1)");
   sub->add_option("--max-len", o.max_len, "Longest input in bytes (libFuzzer -max_len, default 1024)");
   sub->add_option("--baseline", o.baseline,
-                  "Known deviations (the certify baseline format): their clauses are marked, not new");
+                  "Known deviations (the certify baseline format): their clauses are marked, not new; with "
+                  "--impl exec:/verse: the target also passes over them (a crash or hang excepted)");
   sub->add_flag("--empty-corpus", o.empty_corpus, "Start from no input, not the committed corpus");
   sub->add_flag("--stop-at-first", o.stop_at_first, "Stop at the first finding (time to find)");
   sub->add_option("--fuzz-build", o.fuzz_build, "The clang -DVGC_FUZZ=ON build directory");
   sub->add_option("--source-dir", o.source_dir, "The vgc source tree (corpora/, reports/)");
+  sub->add_option("--max-inputs", a->max_inputs, "wire: stop after this many inputs (default: only --time)");
+  sub->add_option("--write-seeds", a->write_seeds,
+                  "wire: write the first inputs of every kind (--max-inputs per kind, default 3) as fuzz_verse_packet "
+                  "seeds into DIR; no host needed");
   sub->add_option("--to-text", a->to_text, "Print the binary stream FILE as a command file");
   sub->add_option("--to-binary", a->to_binary, "Encode the command file FILE as a binary stream (-o OUT)");
   sub->add_option("-o,--output", a->output, "Output file of --to-text / --to-binary");

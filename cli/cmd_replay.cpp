@@ -32,6 +32,7 @@
 #include "runner.h"
 #include "subcommand.h"
 #include "verdict.h"
+#include "wire_fuzz.h"
 #include "terminal_text.h"
 
 namespace vgc::cli {
@@ -43,9 +44,21 @@ struct Options {
   double timeout = 5;
   std::string verse_bone_form = "auto";  // --verse-bone-form
   bool strict = false;  // as certify --strict: IMPLEMENTATION-DEFINED readings gate
+  bool wire = false;    // the file is a `vgc fuzz wire` transcript (fuzz/wire_fuzz.h)
 };
 
 int run(const Options& o) {
+  if (o.wire) {
+    if (o.impl.rfind("verse:", 0) != 0) {
+      say(stderr, "vgc replay --wire: a wire transcript is sent to a Verse host: --impl verse:HOST[:PORT]\n");
+      return 2;
+    }
+    fuzz::WireFuzzOptions w;
+    w.impl = o.impl;
+    w.timeout_s = o.timeout;
+    if (o.verse_bone_form != "auto") w.verse_bone_form = o.verse_bone_form;
+    return fuzz::replay_wire_transcript(o.file, w);
+  }
   std::string text;
   if (!read_file(o.file, &text)) {
     say(stderr,
@@ -147,6 +160,9 @@ void add(CLI::App& app, int* exit_code) {
                   "(Verse spec 2.6.3) or r6 (r6's last release; docs/verse_wire.md section 4)")
       ->check(CLI::IsMember({"auto", "spec", "r6"}))
       ->capture_default_str();
+  sub->add_flag("--wire", o->wire,
+                "FILE is a `vgc fuzz wire` transcript: send its packets again to a fresh node of --impl "
+                "verse:HOST and check the host answers and holds what it acknowledged (exit 1 when not)");
   sub->add_flag("--strict", o->strict,
                 "Say the verdict as certify --strict would (IMPLEMENTATION-DEFINED readings gate); the exit "
                 "code is the same");

@@ -32,6 +32,7 @@
 #include "display_text.h"
 #include "program_command.h"
 #include "exec_implementation.h"
+#include "live_implementation.h"
 #include "minimize_finding.h"
 #include "minimize_input.h"
 #include "process_cpu.h"
@@ -385,6 +386,111 @@ std::optional<double> seconds_since(const fs::path& f, fs::file_time_type start)
   return std::max(0.0, std::chrono::duration<double>(t - start).count());
 }
 
+// Which implementation a campaign fuzzes (--impl) and the environment
+// variables that name it to the target: VGC_FUZZ_PLUGIN for a plugin in
+// process; VGC_FUZZ_IMPL (and VGC_FUZZ_TIMEOUT, VGC_FUZZ_VERSE_BONE_FORM,
+// VGC_FUZZ_RESTART) for a live one (fuzz/live_implementation.h).
+struct ImplementationChoice {
+  std::string plugin;             // absolute path, or ""
+  std::string live;               // exec:CMD or verse:..., or ""
+  std::vector<std::string> env;   // NAME=value
+  std::string spec() const { return !live.empty() ? live : plugin.empty() ? "reference" : "plugin:" + plugin; }
+};
+
+bool is_implementation_variable(const std::string& v) {
+  for (const char* n : {"VGC_FUZZ_PLUGIN=", "VGC_FUZZ_IMPL=", "VGC_FUZZ_TIMEOUT=", "VGC_FUZZ_VERSE_BONE_FORM=",
+                        "VGC_FUZZ_RESTART=", "VGC_FUZZ_BASELINE="})
+    if (v.rfind(n, 0) == 0) return true;
+  return false;
+}
+
+bool choose_implementation(const CampaignOptions& o, const std::string& name, bool property,
+                           ImplementationChoice* out) {
+  const bool live = o.impl.rfind("exec:", 0) == 0 || o.impl.rfind("verse:", 0) == 0;
+  if (!live && (o.call_timeout_s > 0 || !o.verse_bone_form.empty() || !o.restart.empty())) {
+    fmt::print(stderr, "vgc fuzz: --timeout, --verse-bone-form and --restart are for --impl exec:CMD or verse:HOST\n");
+    return false;
+  }
+  if (!o.restart.empty() && o.impl.rfind("verse:", 0) != 0) {
+    fmt::print(stderr, "vgc fuzz: --restart is for --impl verse:HOST (an exec: program is restarted by vgc)\n");
+    return false;
+  }
+  if (o.impl.empty() || o.impl == "reference") return true;
+  if (live) {
+    if (name != "differential") {
+      fmt::print(stderr, "vgc fuzz: --impl {} (a live implementation) is for the differential target only\n",
+                 o.impl.substr(0, o.impl.find(':')) + ":...");
+      return false;
+    }
+    out->live = o.impl;
+    out->env.push_back("VGC_FUZZ_IMPL=" + o.impl);
+    if (o.call_timeout_s > 0) out->env.push_back(fmt::format("VGC_FUZZ_TIMEOUT={}", o.call_timeout_s));
+    if (!o.verse_bone_form.empty()) out->env.push_back("VGC_FUZZ_VERSE_BONE_FORM=" + o.verse_bone_form);
+    if (!o.restart.empty()) out->env.push_back("VGC_FUZZ_RESTART=" + o.restart);
+    // Known deviations do not stop libFuzzer (live_implementation.h).
+    if (!o.baseline.empty()) out->env.push_back("VGC_FUZZ_BASELINE=" + fs::absolute(o.baseline).string());
+    return true;
+  }
+  if ((name != "differential" && !property) || o.impl.rfind("plugin:", 0) != 0) {
+    fmt::print(stderr,
+               "vgc fuzz: --impl takes plugin:PATH (or reference) for the differential and property targets, or "
+               "exec:CMD / verse:HOST[:PORT] for the differential target\n");
+    return false;
+  }
+  out->plugin = fs::absolute(o.impl.substr(7)).string();
+  if (!fs::exists(out->plugin)) {
+    fmt::print(stderr, "vgc fuzz: no such plugin {}: give --impl plugin:PATH the path of your plugin's shared library\n",
+               out->plugin);
+    return false;
+  }
+  out->env.push_back("VGC_FUZZ_PLUGIN=" + out->plugin);
+  return true;
+}
+
+// The status a finding line names ("CLAUSE (LEVEL, status): ..."), or "".
+std::string status_of_finding(const std::string& line) {
+  static const std::regex form(R"(-[0-9]+ \([A-Z-]+, ([a-z-]+)\): )");
+  std::smatch m;
+  return std::regex_search(line, m, form) ? m[1].str() : std::string{};
+}
+
+// ` --timeout T --verse-bone-form F` for `vgc replay` of a live
+// implementation's counterexample, as the campaign ran it.
+std::string replay_options(const CampaignOptions& o) {
+  std::string out;
+  if (o.call_timeout_s > 0) out += fmt::format(" --timeout {}", o.call_timeout_s);
+  if (!o.verse_bone_form.empty()) out += " --verse-bone-form " + shell_quote(o.verse_bone_form);
+  return out;
+}
+
+// Plain-mode rounds of a live implementation's campaign (see run_campaign):
+// while libFuzzer stopped at a finding and a second or more of --time
+// is left, it runs again on the same corpus with the next seed. Returns
+// the last round's result with the CPU time of all of them.
+RunResult run_more_rounds(std::vector<std::string> argv, const std::vector<std::string>& env_add,
+                          std::chrono::steady_clock::time_point deadline,
+                          const std::function<void(const std::string&)>& on_line, const CampaignOptions& o,
+                          std::chrono::steady_clock::time_point t0, RunResult rr, Progress* p,
+                          long long* execs_before, std::ofstream* log) {
+  using clock = std::chrono::steady_clock;
+  for (unsigned round = 1; !rr.killed && rr.exit != 0; ++round) {
+    const double left = o.time_s - std::chrono::duration<double>(clock::now() - t0).count();
+    if (left < 1 || p->execs == 0) break;  // no time left, or the round ran nothing (it could not start)
+    *execs_before += p->execs;
+    p->execs = 0;
+    for (std::string& a : argv) {
+      if (a.rfind("-max_total_time=", 0) == 0) a = "-max_total_time=" + std::to_string(std::max(1LL, static_cast<long long>(left)));
+      if (a.rfind("-seed=", 0) == 0) a = "-seed=" + std::to_string(o.seed + round);
+    }
+    *log << "vgc fuzz: libFuzzer stopped (exit " << rr.exit << ", a finding): round " << round + 1 << ", seed "
+         << o.seed + round << ", " << static_cast<long long>(left) << " s left\n";
+    const double cpu = rr.cpu_s;
+    rr = run_streaming(argv, env_add, deadline, on_line, {});
+    rr.cpu_s += cpu;
+  }
+  return rr;
+}
+
 }  // namespace
 
 std::string stream_to_text(const std::string& bytes) {
@@ -428,7 +534,8 @@ struct CampaignRun {
   bool property = false, mesh = false;
   Baseline baseline;
   fs::path src, binary, dir, corpus, crashes, cex;
-  std::string plugin;                    // absolute path, "" for the reference
+  ImplementationChoice impl;             // --impl: a plugin, a live implementation or the reference
+  std::string plugin;                    // absolute path, "" for the reference or a live implementation
   std::vector<std::string> env_add;      // what the target runs with beyond this process's environment
   std::vector<std::string> run_env;      // VGC_* of this process, without the plugin (for vgc replay)
   std::vector<std::string> target_env;   // run_env and the plugin (for the target)
@@ -439,6 +546,8 @@ struct CampaignRun {
   Progress progress;
   std::vector<CampaignSample> samples;   // for report.html's plots
   RunResult fuzzed;
+  long long execs_before = 0;            // live rounds: executions of the rounds before the last
+  clock::time_point sign_inputs_until;   // re-running crash inputs stops here (sign_crash_inputs)
 };
 
 // The crash inputs of one signature.
@@ -461,8 +570,11 @@ std::optional<std::string> printed_block(const CampaignRun& r, const std::string
 
 // Re-runs one input through the target alone (its output, stdout and stderr).
 std::string rerun_input(const CampaignRun& r, const fs::path& f) {
-  return run_capture("timeout 5 env " + env_prefix(r.target_env) + shell_quote(r.binary.string()) + " " +
-                     shell_quote(f.string()) + " 2>&1");
+  // A live implementation's input also starts it (a process, a login) and
+  // confirms a crash on a fresh instance inside the target: more time.
+  return run_capture(std::string(r.impl.live.empty() ? "timeout 5" : "timeout 60") + " env " +
+                     env_prefix(r.target_env) + shell_quote(r.binary.string()) + " " + shell_quote(f.string()) +
+                     " 2>&1");
 }
 
 // The target's name, --time, --baseline, the binary and --impl, checked
@@ -509,39 +621,25 @@ int check_campaign_options(CampaignRun* r) {
                r->binary.string(), r->src.string(), fbuild.string(), fbuild.string(), target);
     return 2;
   }
-  if (!o.impl.empty() && o.impl != "reference") {
-    if ((name != "differential" && !r->property) || o.impl.rfind("plugin:", 0) != 0) {
-      fmt::print(stderr,
-                 "vgc fuzz: --impl takes plugin:PATH (or reference), for the differential and property targets only\n");
-      return 2;
-    }
-    r->plugin = fs::absolute(o.impl.substr(7)).string();
-    if (!fs::exists(r->plugin)) {
-      fmt::print(stderr,
-                 "vgc fuzz: no such plugin {}: give --impl plugin:PATH the path of your plugin's shared library\n",
-                 r->plugin);
-      return 2;
-    }
-    r->env_add.push_back("VGC_FUZZ_PLUGIN=" + r->plugin);
-  }
+  // The implementation under test and the variables that tell the target.
+  if (!choose_implementation(o, name, r->property, &r->impl)) return 2;
+  r->plugin = r->impl.plugin;
+  r->env_add = r->impl.env;
   // Every VGC_* variable the target runs with: ours (VGC_FAULT,
-  // VGC_FUZZ_MESH_FAULT, ...) and the plugin's path.
+  // VGC_FUZZ_MESH_FAULT, ...) and the implementation's (the plugin's path,
+  // a live implementation's spec and options).
   r->run_env = vgc_environment();
-  r->run_env.erase(std::remove_if(r->run_env.begin(), r->run_env.end(),
-                                  [](const std::string& v) { return v.rfind("VGC_FUZZ_PLUGIN=", 0) == 0; }),
-                   r->run_env.end());
+  r->run_env.erase(std::remove_if(r->run_env.begin(), r->run_env.end(), is_implementation_variable), r->run_env.end());
   r->target_env = r->run_env;
-  if (!r->plugin.empty()) {
-    r->target_env.push_back("VGC_FUZZ_PLUGIN=" + r->plugin);
-    std::sort(r->target_env.begin(), r->target_env.end());
-  }
+  r->target_env.insert(r->target_env.end(), r->env_add.begin(), r->env_add.end());
+  std::sort(r->target_env.begin(), r->target_env.end());
   CampaignSummary& s = r->s;
   s.target = target;
   s.seed = o.seed;
   s.jobs = std::max(1, o.jobs);
   s.time_s = o.time_s;
   s.binary = r->binary.string();
-  s.implementation = r->plugin.empty() ? "reference" : "plugin:" + r->plugin;
+  s.implementation = r->impl.spec();
   s.environment = r->target_env;
   s.empty_corpus = o.empty_corpus;
   s.stop_at_first = o.stop_at_first;
@@ -592,12 +690,20 @@ int claim_run_directory(CampaignRun* r) {
   return 0;
 }
 
+// A live implementation with one job runs libFuzzer's plain mode in
+// rounds: restarted on the same corpus after each finding until --time is
+// spent (a fork-mode job logs in again every few seconds and first re-runs
+// its share of the corpus: 50 instead of 140 exec/s against `vgc serve
+// --verse`; docs/fuzzing.md "Throughput of a live implementation").
+bool live_rounds(const CampaignRun& r) { return !r.impl.live.empty() && r.s.jobs == 1 && !r.o.stop_at_first; }
+
 // libFuzzer's command line. One job stopping at the first finding runs
-// libFuzzer in its plain mode, which stops there by itself; otherwise fork
-// mode (-fork=N).
+// libFuzzer in its plain mode, which stops there by itself (so do the
+// rounds of a live implementation); otherwise fork mode (-fork=N).
 std::vector<std::string> libfuzzer_argv(const CampaignRun& r) {
   const CampaignOptions& o = r.o;
-  const bool plain = o.stop_at_first && r.s.jobs == 1;
+  const bool rounds = live_rounds(r);
+  const bool plain = (o.stop_at_first && r.s.jobs == 1) || rounds;
   std::vector<std::string> argv = {r.binary.string(),
                                    plain ? "-runs=-1" : "-fork=" + std::to_string(r.s.jobs),
                                    "-max_total_time=" + std::to_string(std::max(1LL, static_cast<long long>(o.time_s))),
@@ -607,9 +713,19 @@ std::vector<std::string> libfuzzer_argv(const CampaignRun& r) {
                                    "-max_len=" + std::to_string(o.max_len),
                                    // An input still running after 10 s is a hang, saved as
                                    // a timeout-* finding (libFuzzer's default waits 20 min,
-                                   // longer than most campaigns).
-                                   "-timeout=10"};
-  if (!o.stop_at_first) argv.insert(argv.begin() + 2, "-ignore_crashes=1");
+                                   // longer than most campaigns). A live implementation's
+                                   // own hangs are bounded by the call time-out and
+                                   // confirmed on a fresh instance inside the input: more time.
+                                   r.impl.live.empty() ? "-timeout=10" : "-timeout=120"};
+  if (!o.stop_at_first && !rounds) argv.insert(argv.begin() + 2, "-ignore_crashes=1");
+  // A live implementation runs in its own process: what LeakSanitizer could
+  // find in the fuzzer is the adapter's state, which outlives every input
+  // on purpose (its process or session, the recent history for confirming
+  // a crash), so libFuzzer saw more mallocs than frees on nearly every
+  // input and ran a leak scan each time: 27% of the time against `vgc
+  // serve --verse`, 206 instead of 1200 exec/s against `vgc serve` over
+  // exec (docs/fuzzing.md "Throughput of a live implementation").
+  if (!r.impl.live.empty()) argv.push_back("-detect_leaks=0");
   const fs::path dict = r.src / "corpora" / "fuzz" / (r.s.target + ".dict");
   if (fs::exists(dict)) argv.push_back("-dict=" + dict.string());
   argv.push_back(r.corpus.string());
@@ -659,21 +775,24 @@ void run_libfuzzer(CampaignRun* r) {
   const double grace = o.grace_s > 0 ? o.grace_s : 5;
   const auto deadline = t0 + std::chrono::duration_cast<clock::duration>(std::chrono::duration<double>(o.time_s + grace));
   auto last_print = t0 - std::chrono::seconds(60);
-  r->fuzzed = run_streaming(argv, r->env_add, deadline, [&](const std::string& line) {
+  const auto on_line = [&](const std::string& line) {
     log << line << '\n';
     if (!parse_progress(line, &p)) return;
     const auto now = clock::now();
     const double t = std::chrono::duration<double>(now - t0).count();
-    r->samples.push_back({t, p.execs, p.cov, p.ft, p.corp});
-    const std::string figures = fmt::format("execs {}  exec/s {}  cov {}  ft {}  corpus {}  crashes {}", p.execs,
-                                            p.exec_s, p.cov, p.ft, p.corp, p.crashes);
+    r->samples.push_back({t, p.execs + r->execs_before, p.cov, p.ft, p.corp});
+    const std::string figures = fmt::format("execs {}  exec/s {}  cov {}  ft {}  corpus {}  crashes {}",
+                                            p.execs + r->execs_before, p.exec_s, p.cov, p.ft, p.corp, p.crashes);
     if (o.progress) {
       o.progress(fmt::format("{} for {:.0f} s: {}", s.target, o.time_s, figures));
     } else if (!o.quiet && now - last_print >= std::chrono::seconds(10)) {
       fmt::print(stderr, "[{:5.0f}/{:.0f} s] {}\n", t, o.time_s, figures);
       last_print = now;
     }
-  }, stop_now, o.cpu_time_s);
+  };
+  r->fuzzed = run_streaming(argv, r->env_add, deadline, on_line, stop_now, o.cpu_time_s);
+  if (live_rounds(*r))
+    r->fuzzed = run_more_rounds(argv, r->env_add, deadline, on_line, o, t0, r->fuzzed, &p, &r->execs_before, &log);
   const RunResult& rr = r->fuzzed;
   if (rr.killed) log << "vgc fuzz: still running " << o.time_s + grace << " s after the start: process group killed\n";
   log.close();
@@ -705,11 +824,23 @@ std::map<std::string, CrashGroup> sign_crash_inputs(CampaignRun* r) {
       s.time_to_first_finding_s = t;
   r->sign_until = clock::now() + std::chrono::duration_cast<clock::duration>(
                                      std::chrono::duration<double>(std::max(10.0, r->o.time_s / 10)));
+  // A live implementation costs a process or a login per input re-run:
+  // its inputs get half the budget, so that the unique findings are still
+  // minimized and replayed on a fresh instance in the other half.
+  r->sign_inputs_until = r->impl.live.empty() ? r->sign_until : clock::now() + (r->sign_until - clock::now()) / 2;
   for (const fs::path& f : saved) {
-    if (s.crash_inputs_signed >= 200 || clock::now() >= r->sign_until) break;
+    if (s.crash_inputs_signed >= 200 || clock::now() >= r->sign_inputs_until) break;
     ++s.crash_inputs_signed;
     const std::string output = rerun_input(*r, f);
-    const CrashSignature sig = crash_signature(output);
+    CrashSignature sig = crash_signature(output);
+    // A live implementation's finding that the input alone does not show
+    // again (it depended on the instance's history or on timing; the
+    // target's own confirmation says which in fuzzer.log): said so, not
+    // "unknown".
+    if (!r->impl.live.empty() && sig.key == "unknown" && output.find("FINDING") == std::string::npos)
+      sig = {"not reproduced", "not reproduced: the input alone, re-run on a fresh instance, showed nothing (the "
+                               "finding depended on the implementation's history or timing; its FINDING line is in "
+                               "fuzzer.log)"};
     CrashGroup& g = unique[sig.key];
     g.shown[f] = sig.shown;
     g.files.push_back(f);
@@ -832,12 +963,13 @@ void write_program_counterexample(const CampaignRun& r, const CrashGroup& g, con
                                   CampaignCrash* c) {
   const fs::path cex_file = c->counterexample;
   const std::string vgc = r.o.vgc_binary.empty() ? self_exe().string() : r.o.vgc_binary;
-  const std::string impl_spec = r.plugin.empty() ? std::string("reference") : "plugin:" + r.plugin;
+  const std::string impl_spec = r.impl.spec();
+  const CampaignOptions& o = r.o;
   const bool plugin_crash = c->clause.empty() && r.name == "differential" && !r.plugin.empty();
   const bool replayable = !c->clause.empty() || plugin_crash;
   const auto replay_line = [&] {
     return env_prefix(r.run_env) + program_command() + " replay " + shell_quote(cex_file.string()) + " --impl " +
-           shell_quote(impl_spec);
+           shell_quote(impl_spec) + replay_options(o);
   };
   const auto apply_line = [&] { return env_prefix(r.run_env) + program_command() + " apply " + shell_quote(cex_file.string()); };
   c->replay = replayable ? replay_line() : apply_line();
@@ -846,23 +978,42 @@ void write_program_counterexample(const CampaignRun& r, const CrashGroup& g, con
   if (printed != g.printed.end()) body = printed->second;
   else if (r.property) body = "# the target printed no command file (a sanitizer finding): replay the input\n";
   else body = stream_to_text(bytes);
-  if (!c->clause.empty() && clock::now() < r.sign_until) {
-    // Minimized as certify shrinks, before it is written (minimize_finding.h).
-    const Minimized min = minimize_finding(body, c->clause, impl_spec, r.sign_until);
+  const std::string status = status_of_finding(c->signature);
+  const bool call_failure = status == "crash" || status == "timeout";
+  // A wire host that crashed or hung cannot be replayed on a fresh
+  // instance without the user's restart command.
+  const bool wire = r.impl.live.rfind("verse:", 0) == 0;
+  const bool confirmable = !call_failure || !wire || !o.restart.empty();
+  if (!c->clause.empty() && clock::now() < r.sign_until && !(call_failure && wire)) {
+    // Minimized as certify shrinks, before it is written (minimize_finding.h);
+    // a crash stays a crash (an exec: program crashed is restarted by the replay).
+    OpenOptions open;
+    if (o.call_timeout_s > 0) open.timeout_seconds = o.call_timeout_s;
+    if (!o.verse_bone_form.empty()) open.verse_bone_form = o.verse_bone_form;
+    const Minimized min = minimize_finding(body, c->clause, impl_spec, r.sign_until, 200, status, open);
     if (min.reproduced && min.after < min.before)
       body = fmt::format("# minimized from {} to {} commands ({} replays); the input replays the original\n",
                          min.before, min.after, min.replays) + min.text;
   }
+  if (call_failure && !confirmable)
+    c->confirmation = "not confirmed: the host is not restarted without --restart CMD, so the counterexample "
+                      "was not replayed on a fresh instance";
   auto write_cex = [&] {
     write_file(cex_file, "# vgc fuzz " + r.s.target + " counterexample: " + c->signature + "\n# from " +
                              g.files.front().string() + "\n# replay: " + c->replay + "\n" + body);
   };
   write_cex();
-  if (replayable && fs::exists(vgc) && clock::now() < r.sign_until) {
+  if (replayable && confirmable && fs::exists(vgc) && clock::now() < r.sign_until) {
     // Which clause does it replay to? (`vgc replay` exits 1 naming it.)
-    const std::string out = run_capture("timeout 20 env " + env_prefix(r.run_env) + shell_quote(vgc) + " replay " +
+    // For a crash or hang of a live implementation this is the
+    // confirmation on a fresh instance: `vgc replay` starts a new exec:
+    // process; a wire host is restarted by the user's command first.
+    std::string restarted;
+    if (call_failure && wire && !run_restart_command(o.restart, 60, &restarted))
+      c->confirmation = "not confirmed: " + restarted;
+    const std::string out = run_capture("timeout 60 env " + env_prefix(r.run_env) + shell_quote(vgc) + " replay " +
                                         shell_quote(cex_file.string()) + " --impl " + shell_quote(impl_spec) +
-                                        " 2>&1; echo \"vgc-replay-exit=$?\"");
+                                        replay_options(o) + " 2>&1; echo \"vgc-replay-exit=$?\"");
     static const std::regex named(R"(\b([A-Z][A-Z0-9]*(?:-[A-Z0-9]+)*-[0-9]+)\b)");
     std::string found;
     if (out.find("vgc-replay-exit=1") != std::string::npos)
@@ -872,6 +1023,13 @@ void write_program_counterexample(const CampaignRun& r, const CrashGroup& g, con
           if (found == c->clause) break;
         }
     c->replayed_clause = found;
+    if (call_failure && c->confirmation.empty())
+      c->confirmation = found == c->clause && out.find(status + " ") != std::string::npos
+                            ? "confirmed: `vgc replay` on a fresh instance (" +
+                                  std::string(wire ? "restarted by --restart" : "a new process") + ") shows the " +
+                                  status + " again"
+                            : "not confirmed: `vgc replay` on a fresh instance did not show the " + status +
+                                  " (depends on the instance's history, or flaky)";
     if (plugin_crash) {
       if (!found.empty()) {
         c->clause = found;  // certify's name for the crash
@@ -937,13 +1095,13 @@ void count_corpus_and_speed(CampaignRun* r) {
       s.corpus_bytes += e.file_size();
     }
   s.wall_s = std::chrono::duration<double>(clock::now() - r->t0).count();
-  s.executions = p.execs;
+  s.executions = p.execs + r->execs_before;
   s.exec_per_s_last = p.exec_s;
   s.cov = p.cov;
   s.ft = p.ft;
   const double grace = r->o.grace_s > 0 ? r->o.grace_s : 5;
   const double fuzz_wall = std::min(s.wall_s, r->o.time_s + grace);
-  s.exec_per_s_mean = fuzz_wall > 0 ? static_cast<double>(p.execs) / fuzz_wall : 0.0;
+  s.exec_per_s_mean = fuzz_wall > 0 ? static_cast<double>(s.executions) / fuzz_wall : 0.0;
 }
 
 // summary.json and summary.md (each written whole or not at all: a
@@ -1023,6 +1181,7 @@ std::string summary_json(const CampaignSummary& s) {
                        {"replay", c.replay},
                        {"replay_fuzzer", c.replay_fuzzer},
                        {"replayed_clause", c.replayed_clause ? json(*c.replayed_clause) : json(nullptr)},
+                       {"confirmation", c.confirmation},
                        {"first_seen_s", opt(c.first_seen_s)},
                        {"minimized", c.minimized_input.empty()
                                          ? json(nullptr)
@@ -1112,6 +1271,7 @@ std::string summary_markdown(const CampaignSummary& s) {
                           c.minimized_bytes, c.minimized_input);
       else if (!c.minimize_note.empty())
         md += fmt::format("  - input not minimized: {}\n", c.minimize_note);
+      if (!c.confirmation.empty()) md += fmt::format("  - {}\n", c.confirmation);
       if (c.replayed_clause)
         md += fmt::format("  - replayed: {}\n", c.replayed_clause->empty() ? "no clause named (did not reproduce)"
                                                  : *c.replayed_clause == c.clause ? "same clause"

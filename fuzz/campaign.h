@@ -39,7 +39,16 @@ struct CampaignOptions {
   // a shared machine gets its budget however busy the machine is.
   double cpu_time_s = 0;
   int jobs = 1;               // libFuzzer -fork=N
-  std::string impl;           // "", "reference" or "plugin:PATH" (differential, property_*)
+  std::string impl;           // "", "reference" or "plugin:PATH" (differential, property_*);
+                              // exec:CMD or verse:HOST[:PORT] (differential: a live implementation,
+                              // fuzz/live_implementation.h)
+  // A live implementation (exec:, verse:): seconds per call (0: 5), the
+  // bone_create form of a Verse host ("": auto), and for verse: a shell
+  // command that starts a fresh host, run before a finding is confirmed
+  // ("": a crash or hang of the host is reported unconfirmed).
+  double call_timeout_s = 0;
+  std::string verse_bone_form;
+  std::string restart;
   unsigned seed = 1;
   std::size_t max_len = 1024;
   std::string fuzz_build;     // the clang -DVGC_FUZZ=ON build ("" : $VGC_FUZZ_BUILD_DIR or build-fuzz)
@@ -80,6 +89,9 @@ struct CampaignCrash {
   // `vgc replay` of the counterexample was run: the clause it named ("" if
   // none); only for findings with a clause.
   std::optional<std::string> replayed_clause;
+  // A crash or hang of a live implementation (status crash / timeout):
+  // whether it was confirmed on a fresh instance, and how (or why not).
+  std::string confirmation;
   std::optional<double> first_seen_s;  // seconds from the start to the first input of this crash
   // A raw-bytes finding (one not shrunk as a command program) has its input
   // minimized by libFuzzer's -minimize_crash (minimize_input.h): the

@@ -10,19 +10,21 @@
 namespace vgc::fuzz {
 
 Minimized minimize_finding(const std::string& program_text, const std::string& clause, const std::string& impl_spec,
-                           std::chrono::steady_clock::time_point deadline, int max_replays) {
+                           std::chrono::steady_clock::time_point deadline, int max_replays,
+                           const std::string& status, const OpenOptions& open) {
   Minimized m;
   Program program;
   TextError error;
   if (clause.empty() || !parse_program(program_text, &program, &error)) return m;
   std::string open_error;
-  std::unique_ptr<Implementation> sut = open_implementation(impl_spec, OpenOptions{}, &open_error);
+  std::unique_ptr<Implementation> sut = open_implementation(impl_spec, open, &open_error);
   if (!sut) return m;
   auto shows = [&](const Program& p) {
     if (m.replays >= max_replays || std::chrono::steady_clock::now() >= deadline) return false;
     ++m.replays;
     const ReplayResult r = replay_program(p, *sut);
-    return r.failure && r.failure->clause == clause;
+    return r.failure && r.failure->clause == clause &&
+           (status.empty() || finding_status_name(r.failure->status) == status);
   };
   m.before = program.commands.size();
   if (!shows(program)) return m;

@@ -16,6 +16,8 @@
 #include <chrono>
 #include <string>
 
+#include "implementation.h"
+
 namespace vgc::fuzz {
 
 struct Minimized {
@@ -26,8 +28,12 @@ struct Minimized {
 };
 
 // `program_text` is a command file (program_text.h); `clause` the clause it
-// shows against `impl_spec` ("reference", "plugin:PATH").
+// shows against `impl_spec` ("reference", "plugin:PATH", "exec:CMD",
+// "verse:HOST"), opened with `open`. A non-empty `status` ("crash",
+// "timeout", "fail") must be shown too: a crash is not minimized into a
+// mere divergence at the same clause.
 Minimized minimize_finding(const std::string& program_text, const std::string& clause, const std::string& impl_spec,
-                           std::chrono::steady_clock::time_point deadline, int max_replays = 200);
+                           std::chrono::steady_clock::time_point deadline, int max_replays = 200,
+                           const std::string& status = {}, const OpenOptions& open = {});
 
 }  // namespace vgc::fuzz

@@ -46,28 +46,40 @@ struct ClientSession::Impl {
   Status pump(Clock::time_point deadline, const std::function<bool()>& done, const char* waiting_for) {
     if (!connected) return Status::closed("not connected");
     std::size_t drained_late = 0;  // a host flooding us cannot keep a late call going
+    // A packet unacknowledged past the limit ends the session only once
+    // nothing more has arrived: the ack may be waiting, unread, in the
+    // socket (a session idle for longer than the limit between two calls
+    // was declared closed with its ack in the buffer).
+    bool inbox_checked = false;
     for (;;) {
       Status st = flush();
       if (!st.ok()) return st;
       if (done()) return {};
       const Clock::time_point now = Clock::now();
-      if (options.unacknowledged_limit_s > 0 && channel->oldest_unacknowledged() != Clock::time_point::max() &&
+      const bool overdue =
+          options.unacknowledged_limit_s > 0 && channel->oldest_unacknowledged() != Clock::time_point::max() &&
           now - channel->oldest_unacknowledged() >
-              std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(options.unacknowledged_limit_s))) {
+              std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(options.unacknowledged_limit_s));
+      if (overdue && inbox_checked) {
         connected = false;
         return Status::closed("the host has not acknowledged a packet for " +
                               std::to_string(options.unacknowledged_limit_s) + " s: it no longer knows this session");
       }
       const bool late = now >= deadline;  // then only what has already arrived is read
       Clock::time_point wake = std::min({deadline, channel->next_resend_due(), now + std::chrono::milliseconds(50)});
-      const double wait = late ? 0.0 : std::chrono::duration<double>(wake - now).count();
+      const double wait = late || overdue ? 0.0 : std::chrono::duration<double>(wake - now).count();
       std::string bytes;
       PeerAddress from;
       st = socket.receive(&bytes, &from, wait > 0 ? wait : 0);
       if (st.code == Status::Code::Timeout) {
+        if (overdue) {
+          inbox_checked = true;
+          continue;
+        }
         if (late) return Status::timeout(std::string("the host did not send ") + waiting_for + " in time");
         continue;
       }
+      inbox_checked = false;
       if (late && ++drained_late > 1024)
         return Status::timeout(std::string("the host did not send ") + waiting_for + " in time");
       if (st.code == Status::Code::ProtocolError) {
@@ -262,6 +274,17 @@ Status ClientSession::send_geometry(std::uint32_t node_id, const vgc::Command& c
   return impl_->send(wire::Geometry{node_id, command});
 }
 Status ClientSession::send(const WireCommand& command, bool own_packet) { return impl_->send(command, own_packet); }
+Status ClientSession::send_raw(std::uint32_t id, const std::string& clear) {
+  Impl& s = *impl_;
+  if (!s.connected || !s.channel) return Status::closed("not connected");
+  return s.socket.send_to(s.host, s.channel->raw_datagram(id, clear));
+}
+std::uint32_t ClientSession::take_packet_id() { return impl_->channel ? impl_->channel->take_raw_id() : 0; }
+Status ClientSession::send_datagram(const std::string& bytes) {
+  Impl& s = *impl_;
+  if (!s.connected) return Status::closed("not connected");
+  return s.socket.send_to(s.host, bytes);
+}
 Status ClientSession::send_burst(const std::vector<WireCommand>& commands) {
   Impl& s = *impl_;
   if (!s.connected) return Status::closed("not connected");

@@ -97,6 +97,16 @@ class ClientSession {
   // (as r6's client sends a flush; tests of docs/verse_wire.md section 6).
   Status send_burst(const std::vector<WireCommand>& commands);
 
+  // Hostile traffic (`vgc fuzz wire`): `clear` as one data packet under
+  // packet id `id`, encrypted (Channel::raw_datagram); take_packet_id() is
+  // the next id in order. Whatever the host makes of it, this session
+  // stays usable only if every id taken is sent once (in any order).
+  Status send_raw(std::uint32_t id, const std::string& clear);
+  std::uint32_t take_packet_id();
+  // A datagram exactly as given (no id, no encryption): packets of the
+  // login's ids, or bytes that are no packet at all.
+  Status send_datagram(const std::string& bytes);
+
   // The next decoded incoming command, waiting up to timeout_s (0: only
   // what has already arrived). Timeout when none came.
   Status receive(WireCommand* out, double timeout_s);

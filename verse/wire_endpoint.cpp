@@ -120,6 +120,12 @@ Channel::Channel(const DataKey& key, double resend_interval_s)
       resend_interval_(std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(resend_interval_s))),
       last_heard_(Clock::now()) {}
 
+std::string Channel::raw_datagram(std::uint32_t id, const std::string& clear) const {
+  std::string datagram = build_packet(id, clear);
+  xor_packet(&datagram, key_);
+  return datagram;
+}
+
 std::uint32_t Channel::take_id() {
   const std::uint32_t id = next_out_id_++;
   if (next_out_id_ == 0) next_out_id_ = kFirstDataPacketId;  // r6 skips 0 on wrap; 1 belongs to the login

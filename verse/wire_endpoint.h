@@ -98,6 +98,15 @@ class Channel {
   Status on_datagram(const std::uint8_t* data, std::size_t size, Clock::time_point now,
                      std::vector<WireCommand>* delivered);
 
+  // Hostile traffic (`vgc fuzz wire`, fuzz/wire_fuzz.h): `clear` (any bytes,
+  // parsed or not) as the body of one datagram under packet id `id`,
+  // encrypted with the data key. Nothing is queued, remembered or resent;
+  // the peer's ack or nak for it is ignored like any for an unknown id.
+  // take_raw_id() hands out the next id in order, so that the ids this
+  // channel sends stay contiguous however the caller orders its packets.
+  std::string raw_datagram(std::uint32_t id, const std::string& clear) const;
+  std::uint32_t take_raw_id() { return take_id(); }
+
   // Called with every datagram's clear bytes before it is parsed.
   void set_tap(std::function<void(const std::uint8_t*, std::size_t)> tap) { tap_ = std::move(tap); }
 

@@ -74,6 +74,12 @@ class VerseImplementation final : public Implementation {
   Document derived() override;
   RouteLimits limits() const override;
 
+  // The geometry node the commands go to now (changes at every reset()),
+  // and the bone_create form spoken: for `vgc fuzz wire` (fuzz/wire_fuzz.h),
+  // which sends its own traffic to the same node from a session of its own.
+  std::uint32_t node_id() const { return node_; }
+  verse::BoneForm bone_form() const { return bone_form_; }
+
  private:
   Answer connect();
   Answer make_node(double create_timeout_s = 0);  // 0: the call time-out

@@ -1,0 +1,987 @@
+// wire_fuzz.cpp — see wire_fuzz.h.
+#include "wire_fuzz.h"
+
+#include <fmt/core.h>
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdlib>
+#include <ctime>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <map>
+#include <memory>
+#include <optional>
+#include <random>
+#include <sstream>
+#include <thread>
+
+#include "check_step.h"
+#include "clause.h"
+#include "command_text.h"
+#include "display_text.h"
+#include "document_diff.h"
+#include "snapshot.h"
+#include "live_implementation.h"
+#include "node.h"
+#include "verse_client.h"
+#include "verse_implementation.h"
+#include "wire_commands.h"
+#include "wire_packet.h"
+
+namespace vgc::fuzz {
+namespace {
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+// ---- bodies: hex pairs and {node} tokens ----
+
+std::string hex_of(const std::string& bytes) {
+  static const char* digits = "0123456789abcdef";
+  std::string out;
+  for (unsigned char b : bytes) {
+    out += digits[b >> 4];
+    out += digits[b & 15];
+  }
+  return out;
+}
+
+constexpr const char* kNodeToken = "{node}";
+
+// A command for our node as a body: its number, {node}, the rest. The node
+// id is the 4 bytes after the number in every command addressed to a node
+// (docs/verse_wire.md sections 3-4).
+std::string node_command_body(const verse::WireCommand& c) {
+  std::string bytes;
+  if (!verse::encode_command(c, &bytes).ok() || bytes.size() < 5) return {};
+  return hex_of(bytes.substr(0, 1)) + kNodeToken + hex_of(bytes.substr(5));
+}
+
+std::string geometry_body(const Command& c) { return node_command_body(verse::wire::Geometry{0, c}); }
+
+// A body's length in bytes.
+std::size_t body_size(const std::string& body) {
+  std::size_t n = 0;
+  for (std::size_t i = 0; i < body.size();) {
+    if (body.compare(i, 6, kNodeToken) == 0) {
+      n += 4;
+      i += 6;
+    } else {
+      n += 1;
+      i += 2;
+    }
+  }
+  return n;
+}
+
+// The first `k` bytes of a body (a {node} cut in the middle becomes zeros).
+std::string body_prefix(const std::string& body, std::size_t k) {
+  std::string out;
+  std::size_t n = 0;
+  for (std::size_t i = 0; i < body.size() && n < k;) {
+    if (body.compare(i, 6, kNodeToken) == 0) {
+      if (k - n >= 4) out += kNodeToken;
+      else out += std::string(2 * (k - n), '0');
+      n += std::min<std::size_t>(4, k - n);
+      i += 6;
+    } else {
+      out += body.substr(i, 2);
+      ++n;
+      i += 2;
+    }
+  }
+  return out;
+}
+
+WireDatagram data_packet(std::int64_t offset, std::string body, std::vector<Command> applies = {}) {
+  WireDatagram g;
+  g.offset = offset;
+  g.body = std::move(body);
+  g.applies = std::move(applies);
+  return g;
+}
+
+WireDatagram raw_packet(std::string bytes) {
+  WireDatagram g;
+  g.raw = true;
+  g.body = std::move(bytes);
+  return g;
+}
+
+// ---- the input generator ----
+
+class Draw {
+ public:
+  Draw(std::uint64_t seed, std::uint64_t index) : rng_(seed * 0x9E3779B97F4A7C15ull ^ (index + 1) * 0xBF58476D1CE4E5B9ull) {}
+  std::uint64_t below(std::uint64_t n) { return n == 0 ? 0 : rng_() % n; }
+  bool coin() { return below(2) == 0; }
+  std::string bytes(std::size_t n) {
+    std::string out(n, '\0');
+    for (char& c : out) c = static_cast<char>(below(256));
+    return out;
+  }
+  template <class T>
+  const T& pick(const std::vector<T>& v) { return v[below(v.size())]; }
+
+ private:
+  std::mt19937_64 rng_;
+};
+
+// Ids at every magnitude (docs/verse_wire.md: u16 layer and bone ids, u32
+// node, vertex, polygon and packet ids).
+const std::vector<std::uint32_t>& magnitudes32() {
+  static const std::vector<std::uint32_t> v = {0u, 1u, 2u, 0x7Fu, 0xFFu, 0x100u, 0x1004u, 0x1005u, 0x7FFFu,
+                                               0xFFFFu, 0x10000u, 0xFFFFFFu, 0x1000000u, 0x7FFFFFFFu,
+                                               0x80000000u, 0xFFFFFFFEu, 0xFFFFFFFFu};
+  return v;
+}
+
+// A command that changes nothing whether a host acts on it or not: a
+// vertex write on a layer no input creates (rejected: NO_SUCH_LAYER).
+Command no_op() { return cmd::VertexSetXyzReal64{0x7777, 0, 1, 2, 3}; }
+
+// A well-formed vertex write on layer 0 that a conforming host applies:
+// vertex ids 3..99 (the base program holds 0..2, the probes 100..163).
+Command vertex_write(Draw& d) {
+  static const std::vector<double> values = {0.0, 1.0, -1.0, 0.5, -0.0, 1e-300, 1e300, 123.25};
+  cmd::VertexSetXyzReal64 v;
+  v.layer_id = 0;
+  v.vertex_id = static_cast<std::uint32_t>(3 + d.below(97));
+  v.x = d.pick(values);
+  v.y = d.pick(values);
+  v.z = static_cast<double>(d.below(1000)) / 8;
+  return v;
+}
+
+// Any command a client might send, for truncation and padding.
+Command some_command(Draw& d) {
+  switch (d.below(4)) {
+    case 0: {
+      cmd::LayerCreate l;
+      l.layer_id = static_cast<std::uint16_t>(d.below(8));
+      l.name = "wire_" + std::to_string(d.below(100));
+      l.type = static_cast<std::uint8_t>(d.below(6));
+      return l;
+    }
+    case 1: {
+      cmd::PolygonSetCornerUint32 p;
+      p.layer_id = 1;
+      p.polygon_id = static_cast<std::uint32_t>(d.below(50));
+      p.v = {0, 1, 2, 0xFFFFFFFFu};
+      return p;
+    }
+    case 2: {
+      cmd::BoneCreate b;
+      b.bone_id = static_cast<std::uint16_t>(d.below(8));
+      b.weight = "w";
+      b.parent = 0xFFFF;
+      b.rot = {0, 0, 0, 1};
+      return b;
+    }
+    default: return vertex_write(d);
+  }
+}
+
+WireInput truncated(Draw& d) {
+  WireInput in;
+  in.kind = "truncated";
+  const std::string body = geometry_body(some_command(d));
+  const std::size_t size = body_size(body);
+  const std::size_t k = 1 + d.below(std::max<std::size_t>(1, size - 1));
+  in.what = fmt::format("a {}-byte command cut after {} bytes", size, k);
+  in.ids = 1;
+  in.datagrams.push_back(data_packet(0, body_prefix(body, k)));
+  return in;
+}
+
+WireInput over_long(Draw& d) {
+  WireInput in;
+  in.kind = "over-long";
+  // Junk after a command: up to and past r6's 1500-byte receive buffer.
+  static const std::vector<std::size_t> lengths = {1, 100, 1300, 1392, 1496, 1600, 4000, 9000};
+  const std::size_t n = d.pick(lengths);
+  Command c = vertex_write(d);
+  std::vector<Command> applies;
+  if (4 + body_size(geometry_body(c)) + n <= 1500) {
+    applies.push_back(c);  // what comes before the junk is acted on (docs/verse_wire.md section 8)
+  } else {
+    // Past 1500 bytes a host may drop the datagram whole (vgc's does) or read
+    // its first 1500 bytes (r6's buffer): the command is one that changes
+    // nothing either way.
+    c = no_op();
+  }
+  std::string junk = d.bytes(n);
+  // The junk starts with an unknown command number, so nothing of it is a
+  // command a host could act on.
+  junk[0] = static_cast<char>(0x41 + d.below(0xBE));  // 65..254: beyond the geometry commands
+  in.what = fmt::format("a vertex write followed by {} bytes of junk (packet of {} bytes)", n,
+                        4 + body_size(geometry_body(c)) + n);
+  in.ids = 1;
+  in.datagrams.push_back(data_packet(0, geometry_body(c) + hex_of(junk), applies));
+  return in;
+}
+
+WireInput unknown_command(Draw& d) {
+  WireInput in;
+  in.kind = "unknown-command";
+  static const std::vector<std::uint8_t> unknown = {3, 4, 5, 6, 12, 13, 14, 15, 17, 18, 20, 32, 47, 65, 66, 128, 200, 255};
+  const std::uint8_t number = d.pick(unknown);
+  const std::string tail = d.bytes(d.below(64));
+  in.what = fmt::format("command number {} and {} bytes", number, tail.size());
+  in.ids = 1;
+  in.datagrams.push_back(data_packet(0, hex_of(std::string(1, static_cast<char>(number))) + hex_of(tail)));
+  return in;
+}
+
+WireInput long_string(Draw& d) {
+  WireInput in;
+  in.kind = "long-string";
+  in.ids = 1;
+  switch (d.below(4)) {
+    case 0: {  // node_name_set with a name far past r6's 16 bytes; no NUL at all when cut at the end
+      const std::size_t n = 600 + d.below(500);
+      const bool terminated = d.coin();
+      in.what = fmt::format("node_name_set of {} bytes, {}", n, terminated ? "NUL-terminated" : "with no NUL");
+      std::string body = node_command_body(verse::wire::NodeNameSet{0, "x"});
+      body = body_prefix(body, body_size(body) - 2) + hex_of(std::string(n, 'n')) + (terminated ? "00" : "");
+      in.datagrams.push_back(data_packet(0, body));
+      break;
+    }
+    case 1: {  // layer_create with a name over 15 bytes: the spec rejects it (LAYER-NAME-1)
+      cmd::LayerCreate l;
+      l.layer_id = static_cast<std::uint16_t>(2 + d.below(4));
+      l.name = std::string(16 + d.below(48), 'L');
+      l.type = 2;
+      in.what = fmt::format("layer_create {} with a {}-byte name", l.layer_id, l.name.size());
+      in.datagrams.push_back(data_packet(0, geometry_body(l), {l}));
+      break;
+    }
+    case 2: {  // a string running to the end of the packet
+      cmd::LayerCreate l;
+      l.layer_id = 2;
+      l.name = "unterminated";
+      std::string body = geometry_body(l);
+      // Its number, the node id, the layer id (7 bytes), then the name's bytes: the packet ends there.
+      const std::size_t cut = 7 + l.name.size();
+      in.what = "layer_create whose name has no NUL before the packet ends";
+      in.datagrams.push_back(data_packet(0, body_prefix(body, cut)));
+      break;
+    }
+    default: {  // connect_terminate with a text far past its 512 bytes
+      const std::size_t n = 513 + d.below(800);
+      in.what = fmt::format("connect_terminate with a {}-byte text, no NUL", n);
+      in.datagrams.push_back(data_packet(0, "02" + hex_of(std::string(n, 't'))));
+      break;
+    }
+  }
+  return in;
+}
+
+WireInput id_magnitude(Draw& d) {
+  WireInput in;
+  in.kind = "id-magnitude";
+  in.ids = 1;
+  const std::uint32_t id = d.pick(magnitudes32());
+  switch (d.below(4)) {
+    case 0: {  // a geometry command to a node id of every magnitude
+      // A command that changes nothing, should the id be our node's (node
+      // ids are the host's to pick).
+      const Command v = no_op();
+      std::string bytes;
+      (void)verse::encode_command(verse::wire::Geometry{id, v}, &bytes);
+      in.what = fmt::format("vertex_set_xyz_real64 on node {:#x}", id);
+      in.datagrams.push_back(data_packet(0, hex_of(bytes)));
+      in.kind = "id-magnitude-node";
+      break;
+    }
+    case 1: {  // a vertex id on our node, applied as the spec says
+      cmd::VertexSetXyzReal64 v;
+      v.vertex_id = id;
+      v.x = 2;
+      v.y = 3;
+      in.what = fmt::format("vertex_set_xyz_real64 0 {:#x} on our node", id);
+      in.datagrams.push_back(data_packet(0, geometry_body(v), {v}));
+      break;
+    }
+    case 2: {  // a layer id on our node that does not exist (rejected: nothing changes)
+      cmd::VertexSetXyzReal64 v;
+      v.layer_id = static_cast<std::uint16_t>(std::max<std::uint32_t>(2, id & 0xFFFF));
+      v.vertex_id = 7;
+      in.what = fmt::format("vertex_set_xyz_real64 on layer {:#x} of our node", v.layer_id);
+      in.datagrams.push_back(data_packet(0, geometry_body(v), {v}));
+      break;
+    }
+    default: {  // a packet id far from the session's (earlier: dropped; later: a gap)
+      // Acted on or not, nothing changes.
+      const Command c = no_op();
+      static const std::vector<std::int64_t> offsets = {-1, -2, -1000, 2, 1000, 1025, 1 << 20};
+      const std::int64_t off = d.pick(offsets);
+      in.ids = 0;  // takes no id in order: the session's next id is untouched
+      in.what = fmt::format("a vertex write under packet id next{:+d} (out of the session's order)", off);
+      in.datagrams.push_back(data_packet(off, geometry_body(c)));
+      in.kind = "packet-id";
+      // Not applied: an earlier id is a duplicate; a later one leaves a gap
+      // the session does not fill in order (a host may act on it or wait:
+      // not judged), and the session is logged in again after it.
+      break;
+    }
+  }
+  return in;
+}
+
+WireInput packet_order(Draw& d) {
+  WireInput in;
+  in.kind = "packet-order";
+  const std::uint32_t n = static_cast<std::uint32_t>(2 + d.below(4));
+  in.ids = n;
+  std::vector<std::string> bodies;
+  std::vector<Command> commands;
+  for (std::uint32_t i = 0; i < n; ++i) {
+    Command c = vertex_write(d);
+    auto& v = std::get<cmd::VertexSetXyzReal64>(c);
+    v.vertex_id = 3 + i * 20 + static_cast<std::uint32_t>(d.below(20));
+    commands.push_back(c);
+    bodies.push_back(geometry_body(c));
+  }
+  std::vector<std::uint32_t> order(n);
+  for (std::uint32_t i = 0; i < n; ++i) order[i] = i;
+  for (std::uint32_t i = n - 1; i > 0; --i) std::swap(order[i], order[d.below(i + 1)]);
+  const bool duplicate = d.coin();
+  for (std::uint32_t k : order) {
+    in.datagrams.push_back(data_packet(k, bodies[k], {commands[k]}));
+    if (duplicate && d.coin()) in.datagrams.push_back(data_packet(k, bodies[k], {commands[k]}));  // resent, same bytes
+  }
+  if (d.coin()) {  // an id already sent, with other bytes: a duplicate, not acted on
+    cmd::VertexSetXyzReal64 v;
+    v.vertex_id = 1;
+    v.x = 99;
+    in.datagrams.push_back(data_packet(order[0], geometry_body(v), {v}));
+  }
+  std::string shown;
+  for (const WireDatagram& g : in.datagrams) shown += (shown.empty() ? "" : ",") + std::to_string(g.offset);
+  in.what = fmt::format("{} vertex writes in packets sent in the order {}{}", n, shown,
+                        duplicate ? " (some resent)" : "");
+  return in;
+}
+
+WireInput burst(Draw& d) {
+  WireInput in;
+  in.kind = "burst";
+  const std::size_t n = 50 + d.below(250);
+  if (d.coin()) {  // reliable: through the session's channel, packed as a client flushes
+    for (std::size_t i = 0; i < n; ++i) {
+      const Command c = vertex_write(d);
+      in.reliable.push_back(c);
+    }
+    in.what = fmt::format("a burst of {} vertex writes in as few packets as they fit", n);
+  } else {  // junk datagrams as fast as they go (unknown command numbers: nothing to apply)
+    in.ids = static_cast<std::uint32_t>(n);
+    for (std::uint32_t i = 0; i < n; ++i)
+      in.datagrams.push_back(data_packet(i, hex_of(std::string(1, static_cast<char>(0xF0 + d.below(15)))) +
+                                            hex_of(d.bytes(d.below(200)))));
+    in.what = fmt::format("a burst of {} junk packets in order", n);
+  }
+  return in;
+}
+
+WireInput raw_datagram(Draw& d) {
+  WireInput in;
+  in.kind = "raw-datagram";
+  switch (d.below(3)) {
+    case 0:
+      in.what = "a login-stage packet (id 0, stage 0) in the middle of a session";
+      in.datagrams.push_back(raw_packet("00000000" "0000" + hex_of(d.bytes(d.below(140)))));
+      break;
+    case 1:
+      in.what = "a datagram shorter than a packet id";
+      in.datagrams.push_back(raw_packet(hex_of(d.bytes(d.below(4)))));
+      break;
+    default:
+      in.what = "a datagram past 1500 bytes";
+      in.datagrams.push_back(raw_packet(hex_of(d.bytes(1501 + d.below(3000)))));
+      break;
+  }
+  return in;
+}
+
+// ---- transcripts ----
+
+std::string transcript_text(const WireInput& in, const std::string& header) {
+  std::string out = header;
+  out += "input " + in.kind + ": " + in.what + "\n";
+  out += "ids " + std::to_string(in.ids) + "\n";
+  for (const Command& c : in.reliable) out += "reliable " + print_command(c) + "\n";
+  for (const WireDatagram& g : in.datagrams) {
+    out += g.raw ? "datagram " + g.body + "\n" : fmt::format("packet {} {}\n", g.offset, g.body);
+    for (const Command& c : g.applies) out += "applies " + print_command(c) + "\n";
+  }
+  return out;
+}
+
+bool parse_transcript(const std::string& text, WireInput* in, std::string* error) {
+  std::istringstream lines(text);
+  std::string line;
+  int n = 0;
+  auto command = [&](const std::string& s, std::vector<Command>* out) {
+    std::vector<Command> cs;
+    TextError e;
+    if (!parse_commands(s + "\n", &cs, &e) || cs.size() != 1) {
+      *error = fmt::format("line {}: not a command: {} ({})", n, s, e.message);
+      return false;
+    }
+    out->push_back(cs[0]);
+    return true;
+  };
+  while (std::getline(lines, line)) {
+    ++n;
+    if (line.empty() || line[0] == '#') continue;
+    const auto sp = line.find(' ');
+    const std::string key = line.substr(0, sp), rest = sp == std::string::npos ? "" : line.substr(sp + 1);
+    if (key == "input") {
+      in->kind = rest.substr(0, rest.find(':'));
+      in->what = rest.find(": ") == std::string::npos ? "" : rest.substr(rest.find(": ") + 2);
+    } else if (key == "ids") {
+      in->ids = static_cast<std::uint32_t>(std::strtoul(rest.c_str(), nullptr, 10));
+    } else if (key == "reliable") {
+      if (!command(rest, &in->reliable)) return false;
+    } else if (key == "applies") {  // what the packet before it does to a conforming host's node
+      if (in->datagrams.empty() || in->datagrams.back().raw) {
+        *error = fmt::format("line {}: 'applies' follows a packet line", n);
+        return false;
+      }
+      if (!command(rest, &in->datagrams.back().applies)) return false;
+    } else if (key == "datagram") {
+      in->datagrams.push_back(raw_packet(rest));
+    } else if (key == "packet") {
+      const auto sp2 = rest.find(' ');
+      char* end = nullptr;
+      const long long off = std::strtoll(rest.c_str(), &end, 10);
+      if (sp2 == std::string::npos || end != rest.c_str() + sp2) {
+        *error = fmt::format("line {}: expected packet OFFSET BODY", n);
+        return false;
+      }
+      in->datagrams.push_back(data_packet(off, rest.substr(sp2 + 1)));
+    } else {
+      *error = fmt::format("line {}: unknown line '{}' (input, ids, reliable, packet, datagram, applies)", n, key);
+      return false;
+    }
+  }
+  if (in->kind.empty()) {
+    *error = "no 'input' line: not a vgc fuzz wire transcript";
+    return false;
+  }
+  return true;
+}
+
+// ---- running inputs against a host ----
+
+// The base program: the node holds something before the hostile inputs.
+std::vector<Command> base_program() {
+  std::vector<Command> cs;
+  TextError e;
+  parse_commands(
+      "vertex_set_xyz_real64 0 0 0 0 0\nvertex_set_xyz_real64 0 1 1 0 0\nvertex_set_xyz_real64 0 2 0 1 0\n"
+      "polygon_set_corner_uint32 1 0 0 1 2 0xFFFFFFFF\n",
+      &cs, &e);
+  return cs;
+}
+
+// One probe after every input: it needs the host to answer (the adapter's
+// barrier) and shows the whole node (check_step's snapshot).
+Command probe(std::uint64_t index) {
+  cmd::VertexSetXyzReal64 v;
+  v.vertex_id = static_cast<std::uint32_t>(100 + index % 64);
+  v.x = static_cast<double>(index % 1000);
+  v.y = 0.25;
+  return v;
+}
+
+struct Session {
+  std::unique_ptr<Implementation> owner;
+  VerseImplementation* sut = nullptr;
+  std::unique_ptr<verse::ClientSession> hostile;
+  Node model;
+  std::string host;
+  std::uint16_t port = 0;
+  std::string login;
+  std::size_t hostile_logins = 0;
+};
+
+OpenOptions open_options(const WireFuzzOptions& o) {
+  OpenOptions op;
+  op.timeout_seconds = o.timeout_s;
+  if (!o.verse_bone_form.empty()) op.verse_bone_form = o.verse_bone_form;
+  return op;
+}
+
+// The hostile session: a normal login, subscribed to the node (for its
+// own barrier, which says the session is still known to the host).
+bool login_hostile(Session* s, const WireFuzzOptions& o, std::string* why) {
+  if (s->hostile) s->hostile->disconnect("");
+  s->hostile = std::make_unique<verse::ClientSession>();
+  verse::ClientOptions co;
+  co.name = "vgc-wire";
+  if (const char* pw = std::getenv("VERSE_PASSWORD")) co.password = pw;
+  co.login_timeout_s = o.timeout_s;
+  co.bone_form = s->sut->bone_form();
+  co.unacknowledged_limit_s = 1.0;
+  if (const verse::Status st = s->hostile->connect(s->host, s->port, co); !st.ok()) {
+    *why = "the hostile session could not log in: " + st.to_string();
+    return false;
+  }
+  ++s->hostile_logins;
+  (void)s->hostile->subscribe_node(s->sut->node_id());
+  return true;
+}
+
+// Opens the host (a new VerseImplementation: a fresh node) and runs the
+// base program through check_step. nullopt, or why it could not.
+std::optional<std::string> open_session(Session* s, const WireFuzzOptions& o) {
+  std::string error;
+  s->sut = nullptr;
+  s->owner = open_implementation(o.impl, open_options(o), &error);
+  if (!s->owner) return error;
+  s->sut = dynamic_cast<VerseImplementation*>(s->owner.get());
+  if (!s->sut) return "'" + o.impl + "' is not a Verse host (vgc fuzz wire takes verse:HOST[:PORT])";
+  std::string name;
+  if (!parse_verse_address(o.impl.substr(6), &s->login, &s->host, &s->port, &error)) return error;
+  s->model = Node();
+  for (const Command& c : base_program()) {
+    Node after;
+    const StepResult r = check_step(s->model, c, *s->sut, &after);
+    if (r.failure)
+      return "the host fails the base program (`" + print_command(c) + "`: " + r.failure->clause + " " +
+             r.failure->message + "): certify it first (vgc certify --impl " + o.impl + ")";
+    s->model = std::move(after);
+  }
+  if (!login_hostile(s, o, &error)) return error;
+  return std::nullopt;
+}
+
+// Sends one input on the hostile session. Returns the commands a
+// conforming host applies from it, in order.
+std::vector<Command> send_input(Session* s, const WireInput& in) {
+  std::vector<Command> applied;
+  const std::uint32_t node = s->sut->node_id();
+  if (!in.reliable.empty()) {
+    std::vector<verse::WireCommand> burst;
+    for (const Command& c : in.reliable) burst.push_back(verse::wire::Geometry{node, c});
+    (void)s->hostile->send_burst(burst);
+  }
+  bool data = false;
+  for (const WireDatagram& g : in.datagrams) data = data || !g.raw;
+  // The ids the input takes in order; an input that takes none but sends
+  // data packets (ids out of the session's order) is placed relative to the
+  // next id, which is then sent (empty) after it, so the session's ids stay
+  // contiguous.
+  std::vector<std::uint32_t> ids;
+  for (std::uint32_t i = 0; i < in.ids; ++i) ids.push_back(s->hostile->take_packet_id());
+  const bool reference_only = ids.empty() && data;
+  const std::uint32_t first = !ids.empty() ? ids.front() : reference_only ? s->hostile->take_packet_id() : 0;
+  applied = in.reliable;
+  std::int64_t expected = first;  // the id the host expects next (the session's ids are contiguous so far)
+  for (const WireDatagram& g : in.datagrams) {
+    const std::string bytes = wire_bytes(g.body, node);
+    if (g.raw) {
+      (void)s->hostile->send_datagram(bytes);
+      continue;
+    }
+    const std::int64_t id = static_cast<std::int64_t>(first) + g.offset;
+    (void)s->hostile->send_raw(static_cast<std::uint32_t>(id), bytes);
+    if (id >= expected) {  // acted on; an earlier id is a duplicate, dropped
+      expected = id + 1;
+      applied.insert(applied.end(), g.applies.begin(), g.applies.end());
+    }
+  }
+  if (reference_only) (void)s->hostile->send_raw(first, "");
+  return applied;
+}
+
+// The implementation as check_step sees it when the command judged was
+// already sent by the hostile session: apply() sends a command that
+// changes nothing through the adapter instead, which waits for the
+// host's round trip and answers `done`; the state is then read and
+// compared as for any command.
+class AlreadySent final : public Implementation {
+ public:
+  explicit AlreadySent(Implementation& sut) : sut_(sut) {}
+  std::string name() const override { return sut_.name(); }
+  RouteLimits limits() const override { return sut_.limits(); }
+  Answer reset() override { return sut_.reset(); }
+  Answer apply(const Command&) override { return sut_.apply(no_op()); }
+  Document snapshot() override { return sut_.snapshot(); }
+  Document derived() override { return sut_.derived(); }
+
+ private:
+  Implementation& sut_;
+};
+
+struct Outcome {
+  std::optional<Finding> finding;
+  bool hostile_lost = false;  // the host ended or forgot the hostile session (not a finding)
+};
+
+// After an input: a round trip on the hostile session first (the host has
+// taken in everything the input sent, in the session's order; no answer:
+// the host ended or forgot the session, which a host may do to a client
+// that sends garbage), then the probe on the certify adapter's session:
+// the host answers, and its node is what the model says.
+Outcome check_after(Session* s, const WireInput& in, const std::vector<Command>& applied, std::uint64_t index,
+                    const WireFuzzOptions& o) {
+  Outcome out;
+  std::vector<verse::WireCommand> before;
+  out.hostile_lost = !s->hostile->connected() ||
+                     !s->hostile->barrier(s->sut->node_id(), std::min(1.0, o.timeout_s), &before).ok();
+  auto found = [&](Finding f) {
+    if (f.status != FindingStatus::Fail) {
+      // The command was only there to see the host answer: a host that
+      // stops answering (any session, a login) after an input breaks
+      // STABLE-1, whatever the command's own clause.
+      f.clause = "STABLE-1";
+      f.rules.clear();
+      f.message = "the host stopped answering: " + f.message;
+    }
+    f.message = fmt::format("after hostile input {} ({}: {}): {}", index, in.kind, in.what, f.message);
+    out.finding = std::move(f);
+    return out;
+  };
+  // The input's own effect, judged as certify judges a command: the last
+  // command it should have applied (the model takes the others first), or
+  // one that changes nothing when it should have applied none.
+  Node model = s->model, after;
+  for (std::size_t i = 0; i + 1 < applied.size(); ++i) model.apply(applied[i]);
+  AlreadySent sent(*s->sut);
+  const StepResult judged = check_step(model, applied.empty() ? no_op() : applied.back(), sent, &after);
+  if (judged.failure && applied.empty() && judged.failure->status == FindingStatus::Fail) {
+    // The input held no command a conforming host applies, yet the node
+    // changed: the host acted on malformed bytes (ATOMIC-1: what is not
+    // applied changes nothing). What changed is the snapshot's difference.
+    Finding f = *judged.failure;
+    f.clause = "ATOMIC-1";
+    f.rules.clear();
+    const Document snap = s->sut->snapshot();
+    const auto d = diff_documents(without_subscriptions(print_snapshot(model)), without_subscriptions(snap.text));
+    f.message = "the input holds no command a conforming host applies, yet the node changed: " +
+                (d ? d->describe() : f.message);
+    return found(f);
+  }
+  if (judged.failure) return found(*judged.failure);
+  s->model = std::move(after);
+  // Then a probe: the host still applies a command sent the normal way.
+  const StepResult r = check_step(s->model, probe(index), *s->sut, &after);
+  if (r.failure) return found(*r.failure);
+  s->model = std::move(after);
+  return out;
+}
+
+std::string utc_stamp() {
+  const std::time_t t = std::time(nullptr);
+  std::tm tm{};
+  gmtime_r(&t, &tm);
+  char buf[32];
+  std::strftime(buf, sizeof buf, "%Y%m%dT%H%M%SZ", &tm);
+  return buf;
+}
+
+struct WireFindingGroup {
+  std::string key;  // kind + clause + status
+  std::string clause, status, first_message, transcript_file, confirmation;
+  std::uint64_t first_input = 0;
+  std::size_t count = 0;
+  double first_seen_s = 0;
+};
+
+bool write_text(const fs::path& p, const std::string& s) {
+  std::ofstream out(p, std::ios::binary);
+  out << s;
+  return static_cast<bool>(out);
+}
+
+// Replays a finding's input on a fresh instance (the restart command, then
+// a new session and node): whether it fails again with the same clause.
+std::string confirm_wire_finding(const WireFuzzOptions& o, const WireInput& in, std::uint64_t index,
+                                 const Finding& f) {
+  const bool down = f.status != FindingStatus::Fail;
+  if (down && o.restart.empty())
+    return "not confirmed: the host stopped answering and is not restarted without --restart CMD";
+  if (!o.restart.empty()) {
+    std::string why;
+    if (!run_restart_command(o.restart, 60, &why)) return "not confirmed: " + why;
+  }
+  Session fresh;
+  std::optional<std::string> error;
+  for (int attempt = 0; attempt < 30; ++attempt) {  // a restarted host takes a moment to listen
+    error = open_session(&fresh, o);
+    if (!error) break;
+    std::this_thread::sleep_for(std::chrono::milliseconds(200));
+  }
+  if (error) return "not confirmed: " + *error;
+  const std::vector<Command> applied = send_input(&fresh, in);
+  const Outcome again = check_after(&fresh, in, applied, index, o);
+  if (again.finding && again.finding->clause == f.clause && again.finding->status == f.status)
+    return std::string("confirmed: the input alone fails a fresh ") + (o.restart.empty() ? "node" : "host") +
+           " the same way";
+  return "not confirmed: the input alone does not fail a fresh " + std::string(o.restart.empty() ? "node" : "host") +
+         " (it depends on what came before it)";
+}
+
+}  // namespace
+
+std::string wire_bytes(const std::string& body, std::uint32_t node) {
+  std::string out;
+  for (std::size_t i = 0; i < body.size();) {
+    if (body.compare(i, 6, kNodeToken) == 0) {
+      out += static_cast<char>(node >> 24);
+      out += static_cast<char>(node >> 16);
+      out += static_cast<char>(node >> 8);
+      out += static_cast<char>(node);
+      i += 6;
+    } else {
+      out += static_cast<char>(std::stoi(body.substr(i, 2), nullptr, 16));
+      i += 2;
+    }
+  }
+  return out;
+}
+
+WireInput make_wire_input(std::uint64_t seed, std::uint64_t index) {
+  Draw d(seed, index);
+  switch (d.below(8)) {
+    case 0: return truncated(d);
+    case 1: return over_long(d);
+    case 2: return unknown_command(d);
+    case 3: return long_string(d);
+    case 4: return id_magnitude(d);
+    case 5: return packet_order(d);
+    case 6: return burst(d);
+    default: return raw_datagram(d);
+  }
+}
+
+std::vector<std::string> wire_input_packets(const WireInput& in) {
+  std::vector<std::string> out;
+  for (const WireDatagram& g : in.datagrams) {
+    const std::string bytes = wire_bytes(g.body, 1);
+    if (g.raw) out.push_back(bytes);
+    else out.push_back(verse::build_packet(static_cast<std::uint32_t>(2 + std::max<std::int64_t>(0, g.offset)), bytes));
+  }
+  return out;
+}
+
+std::size_t write_wire_seeds(std::uint64_t seed, std::uint64_t count, const std::string& dir) {
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  // `count` inputs of every kind, at most two packets of each: the seeds
+  // cover every kind without a burst's hundred packets.
+  std::map<std::string, std::uint64_t> per_kind;
+  std::size_t written = 0;
+  for (std::uint64_t i = 0; i < count * 64; ++i) {
+    const WireInput in = make_wire_input(seed, i);
+    if (per_kind[in.kind] >= count) continue;
+    ++per_kind[in.kind];
+    const std::vector<std::string> packets = wire_input_packets(in);
+    for (std::size_t k = 0; k < packets.size() && k < 2; ++k)
+      if (write_text(fs::path(dir) / fmt::format("wire-{}-{}-{}.bin", in.kind, i, k), packets[k])) ++written;
+  }
+  return written;
+}
+
+int run_wire_campaign(const WireFuzzOptions& o) {
+  if (o.impl.rfind("verse:", 0) != 0) {
+    fmt::print(stderr, "vgc fuzz wire: --impl takes verse:[NAME@]HOST[:PORT] (a running Verse host)\n");
+    return 2;
+  }
+  const auto t0 = Clock::now();
+  const auto deadline = t0 + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(o.time_s));
+  Session s;
+  if (auto error = open_session(&s, o)) {
+    fmt::print(stderr, "vgc fuzz wire: {}: {}\n", o.impl, escape_unprintable(*error));
+    return 2;
+  }
+  // The run's directory.
+  fs::path src = o.source_dir.empty() ? fs::path(std::getenv("VGC_SOURCE_DIR") ? std::getenv("VGC_SOURCE_DIR") : ".")
+                                      : fs::path(o.source_dir);
+  const fs::path runs = src / "reports" / "fuzz" / "wire";
+  std::error_code ec;
+  fs::create_directories(runs, ec);
+  std::string run = utc_stamp() + "-seed" + std::to_string(o.seed);
+  for (int k = 2; !ec && !fs::create_directory(runs / run, ec) && !ec; ++k)
+    run = utc_stamp() + "-seed" + std::to_string(o.seed) + "-" + std::to_string(k);
+  const fs::path dir = runs / run;
+  fs::create_directories(dir / "transcripts", ec);
+  if (ec) {
+    fmt::print(stderr, "vgc fuzz wire: cannot create {}: {}\n", dir.string(), ec.message());
+    return 2;
+  }
+  if (!o.quiet)
+    fmt::print(stderr, "vgc fuzz wire: {} for {} s, seed {}; host: {}\n  run: {}\n", o.impl, o.time_s, o.seed,
+               s.sut->identity(), dir.string());
+
+  std::map<std::string, WireFindingGroup> groups;
+  std::map<std::string, std::size_t> kinds;
+  std::uint64_t index = 0, hostile_lost = 0;
+  std::string stopped_because;
+  auto last_print = t0;
+  for (; Clock::now() < deadline && (o.max_inputs == 0 || index < o.max_inputs); ++index) {
+    const WireInput in = make_wire_input(o.seed, index);
+    ++kinds[in.kind];
+    if (!o.seeds_out.empty()) {
+      const std::vector<std::string> packets = wire_input_packets(in);
+      for (std::size_t k = 0; k < packets.size() && k < 4; ++k)
+        write_text(fs::path(o.seeds_out) / fmt::format("wire-{}-{}-{}.bin", in.kind, index, k), packets[k]);
+    }
+    const std::vector<Command> applied = send_input(&s, in);
+    const Outcome out = check_after(&s, in, applied, index, o);
+    if (out.hostile_lost) ++hostile_lost;
+    if (out.finding) {
+      const Finding& f = *out.finding;
+      const std::string status = finding_status_name(f.status);
+      const std::string key = in.kind + " " + f.clause + " " + status;
+      WireFindingGroup& g = groups[key];
+      ++g.count;
+      if (g.count == 1) {
+        g.key = key;
+        g.clause = f.clause;
+        g.status = status;
+        g.first_message = f.message;
+        g.first_input = index;
+        g.first_seen_s = std::chrono::duration<double>(Clock::now() - t0).count();
+        g.transcript_file = (dir / "transcripts" / fmt::format("wire-{}-{}-{}.txt", groups.size(), in.kind, f.clause)).string();
+        const std::string header = fmt::format(
+            "# vgc fuzz wire transcript: {} ({}, {}) after input {} of seed {}\n# {}\n# replay: vgc replay --wire {} "
+            "--impl {}\n",
+            f.clause, status, in.kind, index, o.seed, f.message, g.transcript_file, o.impl);
+        write_text(g.transcript_file, transcript_text(in, header));
+        g.confirmation = confirm_wire_finding(o, in, index, f);
+        if (!o.quiet) fmt::print(stderr, "vgc fuzz wire: finding after input {}: {} ({}): {}\n", index, f.clause, status,
+                                 escape_unprintable(f.message));
+      }
+      if (o.stop_at_first) {
+        stopped_because = "--stop-at-first";
+        ++index;
+        break;
+      }
+      // Go on: a fresh node, on the host if it still answers (the
+      // confirmation may have restarted it already), else on a restarted one.
+      std::optional<std::string> error = open_session(&s, o);
+      if (error && o.restart.empty()) {
+        stopped_because = f.status != FindingStatus::Fail
+                              ? "the host stopped answering and there is no --restart CMD to start it again"
+                              : "could not go on: " + *error;
+        ++index;
+        break;
+      }
+      if (error) {
+        std::string why;
+        if (!run_restart_command(o.restart, 60, &why)) {
+          stopped_because = why;
+          ++index;
+          break;
+        }
+        for (int attempt = 0; attempt < 30 && error; ++attempt) {
+          std::this_thread::sleep_for(std::chrono::milliseconds(200));
+          error = open_session(&s, o);
+        }
+      }
+      if (error) {
+        stopped_because = "could not go on: " + *error;
+        ++index;
+        break;
+      }
+    } else if (out.hostile_lost || in.kind == "packet-id") {
+      if (std::string why; !login_hostile(&s, o, &why)) {
+        stopped_because = why;
+        ++index;
+        break;
+      }
+    }
+    if (!o.quiet && Clock::now() - last_print >= std::chrono::seconds(10)) {
+      last_print = Clock::now();
+      fmt::print(stderr, "[{:5.0f}/{:.0f} s] inputs {}  findings {}  hostile sessions ended by the host {}\n",
+                 std::chrono::duration<double>(last_print - t0).count(), o.time_s, index + 1, groups.size(),
+                 hostile_lost);
+    }
+  }
+  const double wall = std::chrono::duration<double>(Clock::now() - t0).count();
+
+  // The summary, written whole (temporary file, then renamed).
+  nlohmann::json findings = nlohmann::json::array();
+  std::string md = fmt::format(
+      "# vgc fuzz wire — {}\n\n| | |\n|---|---|\n| host | {} |\n| seed, time | {}, {} s (wall {:.0f} s) |\n"
+      "| inputs | {} ({:.1f}/s) |\n| hostile sessions the host ended or forgot | {} (logged in again) |\n"
+      "| findings | {} |\n",
+      run, escape_unprintable(s.sut ? s.sut->identity() : o.impl), o.seed, o.time_s, wall, index,
+      wall > 0 ? static_cast<double>(index) / wall : 0.0, hostile_lost, groups.size());
+  if (!stopped_because.empty()) md += "| stopped early | " + stopped_because + " |\n";
+  md += "\nInputs by kind: ";
+  for (const auto& [k, n] : kinds) md += fmt::format("{} {}; ", k, n);
+  md += "\n\n";
+  for (const auto& [key, g] : groups) {
+    const Clause* c = find_clause(g.clause);
+    md += fmt::format("- **{} ({}, {})** on {} inputs, first input {} after {:.1f} s: {}\n  - transcript: `{}`\n"
+                      "  - replay: `vgc replay --wire {} --impl {}`\n  - {}\n",
+                      g.clause, c ? clause_level_name(c->level) : "?", g.status, g.count, g.first_input,
+                      g.first_seen_s, g.first_message, g.transcript_file, g.transcript_file, o.impl, g.confirmation);
+    findings.push_back({{"clause", g.clause}, {"status", g.status}, {"key", g.key}, {"count", g.count},
+                        {"first_input", g.first_input}, {"first_seen_s", g.first_seen_s},
+                        {"message", g.first_message}, {"transcript", g.transcript_file},
+                        {"confirmation", g.confirmation}});
+  }
+  nlohmann::json by_kind = kinds;
+  const nlohmann::json j = {{"implementation", o.impl}, {"seed", o.seed}, {"time_s", o.time_s}, {"wall_s", wall},
+                            {"inputs", index}, {"inputs_by_kind", by_kind}, {"hostile_sessions_lost", hostile_lost},
+                            {"stopped_because", stopped_because}, {"findings", findings}};
+  for (const auto& [file, text] :
+       {std::pair{dir / "summary.json", j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n"},
+        std::pair{dir / "summary.md", escape_unprintable(md)}}) {
+    fs::path tmp = file;
+    tmp += ".tmp";
+    if (!write_text(tmp, text)) {
+      fmt::print(stderr, "vgc fuzz wire: cannot write {}\n", file.string());
+      return 2;
+    }
+    fs::rename(tmp, file, ec);
+  }
+  if (!o.quiet) {
+    fmt::print("{}", escape_unprintable(md));
+    fmt::print("summary: {}\n", (dir / "summary.json").string());
+  }
+  return groups.empty() ? 0 : 1;
+}
+
+int replay_wire_transcript(const std::string& file, const WireFuzzOptions& o) {
+  std::ifstream f(file, std::ios::binary);
+  if (!f) {
+    fmt::print(stderr, "vgc replay --wire: cannot read {}\n", file);
+    return 2;
+  }
+  const std::string text{std::istreambuf_iterator<char>(f), std::istreambuf_iterator<char>()};
+  WireInput in;
+  std::string error;
+  if (!parse_transcript(text, &in, &error)) {
+    fmt::print(stderr, "{}: {}\n", file, error);
+    return 2;
+  }
+  Session s;
+  if (auto e = open_session(&s, o)) {
+    fmt::print(stderr, "vgc replay --wire: {}: {}\n", o.impl, escape_unprintable(*e));
+    return 2;
+  }
+  const std::vector<Command> applied = send_input(&s, in);
+  const Outcome out = check_after(&s, in, applied, 0, o);
+  if (!out.finding) {
+    fmt::print("{}: the host answered after the transcript's input ({}: {}) and its node holds what the reference "
+               "says\n",
+               o.impl, in.kind, in.what);
+    return 0;
+  }
+  const Clause* c = find_clause(out.finding->clause);
+  fmt::print("{} {} ({}): {}\n", finding_status_name(out.finding->status), out.finding->clause,
+             c ? clause_level_name(c->level) : "?", escape_unprintable(out.finding->message));
+  return 1;
+}
+
+}  // namespace vgc::fuzz
