@@ -101,7 +101,7 @@ int main(int argc, char** argv) {
       std::fprintf(stderr, "bench_replay: generated program does not parse: %s\n", error.message.c_str());
       return 2;
     }
-    for (const std::string route : {std::string("reference"), std::string("exec")}) {
+    for (const std::string& route : {std::string("reference"), std::string("exec")}) {
       if (routes.find(route) == std::string::npos) continue;
       const std::string spec = route == "reference" ? "reference" : "exec:" + vgc + " serve";
       std::vector<double> runs;
