@@ -56,9 +56,15 @@ StepResult ProgramChecker::step(const Command& c, std::vector<DerivedChange>* de
   if (sparse_) sent_.push_back(c);
   std::vector<DerivedChange> changed;
   digest_.update(model_, changes_, &changed);
-  const bool cheap = answer.status == CallStatus::Ok && !answer.not_sent && !answer.malformed &&
-                     answer.verdict_reported && answer.applied == (result.expected == Reason::Ok);
-  if (cheap && sparse_) return sparse_step(c, answer, std::move(result), derived_changed ? &changed : nullptr);
+  const bool answered = answer.status == CallStatus::Ok && !answer.not_sent && !answer.malformed;
+  const bool cheap = answered && answer.verdict_reported && answer.applied == (result.expected == Reason::Ok);
+  // Sparse reading: a `done` answer is judged by the next reading of the
+  // documents (bisection finds its command if they differ there).
+  if (sparse_ && answered && (cheap || !answer.verdict_reported)) {
+    result.verdict_reported = answer.verdict_reported;
+    if (derived_changed) *derived_changed = std::move(changed);
+    return sparse_step(c, answer, std::move(result));
+  }
   if (cheap) {
     const DigestAnswer d = sut_.digest();
     if (d.status != CallStatus::Ok) {
@@ -105,8 +111,7 @@ StepResult ProgramChecker::step(const Command& c, std::vector<DerivedChange>* de
   return r;
 }
 
-StepResult ProgramChecker::sparse_step(const Command& c, const Answer& answer, StepResult result,
-                                       std::vector<DerivedChange>* changed) {
+StepResult ProgramChecker::sparse_step(const Command& c, const Answer& answer, StepResult result) {
   if (auto note = reason_note(c, result.expected, answer)) result.notes.push_back(std::move(*note));
   const std::size_t elements = model_.vertices().size() + model_.polygons().size();
   if (sent_.size() - agreed_ < std::max<std::size_t>(1, elements)) return result;  // not yet: the verdict only

@@ -86,7 +86,9 @@ class ProgramChecker {
  private:
   Node rebuild(std::size_t commands) const;  // a fresh node with the first `commands` of applied_
   StepResult full_step(const Command& c, std::vector<DerivedChange>* derived_changed);
-  StepResult sparse_step(const Command& c, const Answer& answer, StepResult result, std::vector<DerivedChange>* changed);
+  // A step whose answer is as the reference's (or `done`): the documents
+  // are read only when due.
+  StepResult sparse_step(const Command& c, const Answer& answer, StepResult result);
   // Whether the implementation's documents equal `model`'s; *call the
   // finding of a call that failed.
   bool documents_agree(const Node& model, std::optional<Finding>* call, std::string* difference);

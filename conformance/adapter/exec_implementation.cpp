@@ -505,8 +505,16 @@ Answer ExecImplementation::request_line(const std::string& request, std::string*
 
 bool ExecImplementation::offers_digest() {
   if (digest_claimed_ < 0) {
+    // Asked when a check starts, on a fresh node. A program that cannot
+    // answer ?capabilities claims nothing; it is started again so that this
+    // question, which certify asks again before its capability cases (and
+    // reports there), does not become a failure of the next command.
     const Document d = request("?capabilities");
-    if (d.status != CallStatus::Ok) return false;  // the failure sticks: the next call reports it
+    if (d.status != CallStatus::Ok) {
+      digest_claimed_ = 0;
+      start();
+      return false;
+    }
     const std::string first = d.text.substr(0, d.text.find('\n'));
     digest_claimed_ = (" " + first + " ").find(" digest ") != std::string::npos && first.rfind("capabilities", 0) == 0;
   }

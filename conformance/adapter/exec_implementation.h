@@ -56,7 +56,8 @@ class ExecImplementation final : public Implementation {
   // ?snapshot; an "error ..." answer is returned as it is (status Ok).
   Document request(const std::string& line) override;
   // Asks ?capabilities once (per ExecImplementation, not per instance: the
-  // same program) whether the program claims the word `digest`.
+  // same program) whether the program claims the word `digest`; call it on
+  // a fresh node (a program that fails the question is started again).
   bool offers_digest() override;
   // ?digest: one line "digest <hex16> <hex16>"; anything else is a ProtocolError.
   DigestAnswer digest() override;
