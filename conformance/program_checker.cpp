@@ -51,6 +51,7 @@ StepResult ProgramChecker::step(const Command& c, std::vector<DerivedChange>* de
   if (!digest_on_ && !sparse_) return full_step(c, derived_changed);
   StepResult result;
   const Answer answer = sut_.apply(c);
+  const DocumentDigests digests_before = digest_.digests();
   result.expected = model_.apply(c, &result.rules, &changes_);
   applied_.push_back(c);
   if (sparse_) sent_.push_back(c);
@@ -65,7 +66,10 @@ StepResult ProgramChecker::step(const Command& c, std::vector<DerivedChange>* de
     if (derived_changed) *derived_changed = std::move(changed);
     return sparse_step(c, answer, std::move(result));
   }
-  if (cheap) {
+  // A `done` answer: check_step reads the verdict from the state, and
+  // judges the step right exactly when the state after it is the
+  // reference's, which equal digests stand for.
+  if (cheap || (answered && !answer.verdict_reported)) {
     const DigestAnswer d = sut_.digest();
     if (d.status != CallStatus::Ok) {
       result.failure =
@@ -73,6 +77,8 @@ StepResult ProgramChecker::step(const Command& c, std::vector<DerivedChange>* de
       return result;
     }
     if (d.digests == digest_.digests()) {  // the documents agree: nothing more to read
+      result.verdict_reported = answer.verdict_reported;
+      result.implementation_unchanged = !answer.verdict_reported && d.digests == digests_before;
       if (auto note = reason_note(c, result.expected, answer)) result.notes.push_back(std::move(*note));
       if (derived_changed) *derived_changed = std::move(changed);
       return result;
@@ -107,7 +113,7 @@ StepResult ProgramChecker::step(const Command& c, std::vector<DerivedChange>* de
   // comparison tolerates, e.g. bone poses within rounding): the digests
   // would differ after every later command too, so the rest of the program
   // is checked step by step.
-  if (cheap && !r.failure) digest_on_ = false;
+  if ((cheap || answer.verdict_reported == false) && answered && !r.failure) digest_on_ = false;
   return r;
 }
 
