@@ -16,7 +16,8 @@
 // process (open_implementation with isolate_plugin). One line in, one line
 // out, flushed: a command answers "ok", "rejected <REASON>" or "error line
 // 1, column N: ..." (the TextError of a line that does not parse), and the
-// requests ?hello ?reset ?snapshot ?derived ?quit and the optional
+// requests ?hello ?reset ?snapshot ?derived ?quit, ?digest (when the served
+// implementation offers it: document_digest.h) and the optional
 // capability requests (?capabilities ?classify ?subdivide ?normals ...,
 // capability_document_header) are answered as the
 // protocol says. A plugin's VGC_DONE is relayed as "done"; with --done every
@@ -152,8 +153,18 @@ std::string answer_line(Implementation& impl, const std::string& line, bool done
     const Document d = line == "?snapshot" ? impl.snapshot() : impl.derived();
     return d.status == CallStatus::Ok ? d.text : failure_line(d.status, d.detail);
   }
+  if (line == "?digest") {
+    if (!impl.offers_digest()) return "error unknown request ?digest\n";
+    const DigestAnswer d = impl.digest();
+    return d.status == CallStatus::Ok ? format_digest_line(d.digests) : failure_line(d.status, d.detail);
+  }
   if (capability_document_header(line)) {
-    const Document d = impl.request(line);
+    Document d = impl.request(line);
+    // The served implementation answers ?digest (docs/adapters.md): claimed
+    // with the other capability words.
+    if (d.status == CallStatus::Ok && line == "?capabilities" && impl.offers_digest() &&
+        d.text.rfind("capabilities", 0) == 0)
+      d.text.insert(d.text.find('\n'), " digest");
     if (d.status == CallStatus::Ok) return d.text;
     if (d.detail == "not supported") return "error unknown request " + one_line(line) + "\n";
     return failure_line(d.status, d.detail);

@@ -40,15 +40,29 @@ Finding call_failure(std::string_view clause, CallStatus s, const std::string& w
   return f;
 }
 
+std::optional<Finding> reason_note(const Command& c, Reason expected, const Answer& answer) {
+  if (!answer.verdict_reported || answer.applied || expected == Reason::Ok || answer.reason == reason_name(expected))
+    return std::nullopt;
+  Finding f;
+  f.clause = "REASON-1";
+  f.message = "`" + print_command(c) + "`: expected rejected " + std::string(reason_name(expected)) +
+              ", observed rejected " + answer.reason;
+  return f;
+}
+
 StepResult check_step(const Node& before, const Command& c, Implementation& sut, Node* after,
                       bool follow_choices) {
   StepResult result;
   *after = before;
-  const Reason expected = after->apply(c, &result.rules);
-  result.expected = expected;
-  const std::string text = print_command(c);
-
+  result.expected = after->apply(c, &result.rules);
   const Answer answer = sut.apply(c);
+  return judge_step(before, c, answer, std::move(result), sut, after, follow_choices);
+}
+
+StepResult judge_step(const Node& before, const Command& c, const Answer& answer, StepResult result,
+                      Implementation& sut, Node* after, bool follow_choices) {
+  const Reason expected = result.expected;
+  const std::string text = print_command(c);
   if (answer.status != CallStatus::Ok) {
     const Blame blame = blame_verdict(c, expected, result.rules);
     result.failure = call_failure(blame.clause, answer.status, "applying `" + text + "`", answer.detail);
@@ -115,12 +129,7 @@ StepResult check_step(const Node& before, const Command& c, Implementation& sut,
     result.failure = f;
     return result;
   }
-  if (answer.verdict_reported && !answer.applied && answer.reason != reason_name(expected)) {
-    Finding f;
-    f.clause = "REASON-1";
-    f.message = "`" + text + "`: expected " + expected_answer + ", observed " + observed_answer;
-    result.notes.push_back(f);
-  }
+  if (auto note = reason_note(c, expected, answer)) result.notes.push_back(std::move(*note));
 
   if (answer.verdict_reported) snap = sut.snapshot();
   if (snap.status != CallStatus::Ok) {
@@ -133,6 +142,7 @@ StepResult check_step(const Node& before, const Command& c, Implementation& sut,
     // picked): the model follows it, and the choice is a note at its clause.
     if (auto choice = follow_implementation_choice(before, c, snap.text)) {
       *after = std::move(choice->model);
+      result.model_command = std::move(choice->applied);
       result.notes.push_back(std::move(choice->note));
       d.reset();
     }

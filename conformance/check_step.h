@@ -78,6 +78,9 @@ struct StepResult {
   // the state before it (it dropped the command): the runner can then take
   // a tolerated command out of a case without resetting (runner.cpp).
   bool implementation_unchanged = false;
+  // Set when the model followed an implementation's choice (follow_choices):
+  // the command the model applied instead (the id written).
+  std::optional<Command> model_command;
   // Set when the route could not carry the command (Answer::not_sent):
   // nothing was judged, *after is `before` (neither side changed), and the
   // runner counts nothing for the step. Says why.
@@ -113,6 +116,18 @@ Finding call_failure(std::string_view clause, CallStatus s, const std::string& w
 // different choice is a failure, as before.
 StepResult check_step(const Node& before, const Command& c, Implementation& sut, Node* after,
                       bool follow_choices = false);
+
+// The REASON-1 note for a rejection the implementation reported with
+// another reason than the reference's `expected`; nullopt when the reasons
+// agree or the command was not rejected by both.
+std::optional<Finding> reason_note(const Command& c, Reason expected, const Answer& answer);
+
+// check_step after both sides applied `c`: `result` holds the reference's
+// verdict and rules (expected, rules) and nothing else, *after the
+// reference's state after `c` (from `before`), `answer` what the
+// implementation answered to `c`. For a caller that applied `c` itself.
+StepResult judge_step(const Node& before, const Command& c, const Answer& answer, StepResult result,
+                      Implementation& sut, Node* after, bool follow_choices);
 
 // Compares the implementation's documents with the reference node's, with
 // no command involved (used after reset). nullopt when equal.

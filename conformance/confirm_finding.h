@@ -49,6 +49,8 @@ class HistoryRecorder final : public Implementation {
   Document snapshot() override { return sut_.snapshot(); }
   Document derived() override { return sut_.derived(); }
   Document request(const std::string& line) override { return sut_.request(line); }
+  bool offers_digest() override { return sut_.offers_digest(); }
+  DigestAnswer digest() override { return sut_.digest(); }
 
   // The commands since the running instance started, case by case.
   const std::vector<std::vector<Command>>& history() const { return history_; }

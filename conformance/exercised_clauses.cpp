@@ -15,17 +15,12 @@
 namespace vgc {
 namespace {
 
-struct LineChange {
-  std::string kind;
-  std::string line;  // the line on whichever side has it (after, else before)
-};
-
 // Every line that differs between two documents, keyed as line_key says.
-std::vector<LineChange> changed_lines(const std::string& before, const std::string& after) {
+std::vector<DerivedChange> changed_lines(const std::string& before, const std::string& after) {
   std::map<std::string, std::string> a, b;
   for (auto& l : split_lines(before)) a.emplace(line_key(l), l);
   for (auto& l : split_lines(after)) b.emplace(line_key(l), l);
-  std::vector<LineChange> out;
+  std::vector<DerivedChange> out;
   auto kind_of = [](const std::string& l) { return l.substr(0, l.find(' ')); };
   for (const auto& [k, l] : b) {
     auto it = a.find(k);
@@ -38,9 +33,13 @@ std::vector<LineChange> changed_lines(const std::string& before, const std::stri
 
 }  // namespace
 
-void exercised_clauses(const Node& before, const Command& c, Reason expected, const RuleTrace& rules,
-                       const Node& after, bool verdict_reported, std::vector<std::string_view>* out,
-                       std::vector<std::string_view>* derived_only) {
+std::vector<DerivedChange> derived_changes(const Node& before, const Node& after) {
+  return changed_lines(print_derived(before), print_derived(after));
+}
+
+void exercised_clauses(const std::vector<DerivedChange>& derived_changed, const Command& c, Reason expected,
+                       const RuleTrace& rules, const Node& after, bool verdict_reported,
+                       std::vector<std::string_view>* out, std::vector<std::string_view>* derived_only) {
   (void)c;
   const std::size_t first = out->size();
   out->push_back("ACCEPT-1");
@@ -50,7 +49,7 @@ void exercised_clauses(const Node& before, const Command& c, Reason expected, co
     if (verdict_reported) out->push_back("REASON-1");
   } else {
     std::vector<std::string_view> from_derived;
-    for (const auto& ch : changed_lines(print_derived(before), print_derived(after)))
+    for (const auto& ch : derived_changed)
       from_derived.push_back(clause_for_derived(after, ch.kind, bone_id_of(ch.line)));
     if (!derived_only) {
       out->insert(out->end(), from_derived.begin(), from_derived.end());

@@ -21,16 +21,18 @@
 #include <vector>
 
 #include "command.h"
+#include "document_digest.h"
 #include "node.h"
 #include "reason.h"
 
 namespace vgc {
 
-// Appends to *out the clauses that the step `c`, taking `before` to `after`
-// with the reference's verdict `expected` by the rules `rules`, decided (duplicates removed).
+// Appends to *out the clauses that the step `c`, taking the reference to
+// `after` with the verdict `expected` by the rules `rules` and changing the
+// derived lines `derived_changed` (NodeDigest::update reports them, or
+// derived_changes), decided (duplicates removed).
 // `verdict_reported` is false when the implementation answered `done`
-// (REASON-1 is then not exercised). Precondition: `after` is `before` with
-// `c` applied by the reference.
+// (REASON-1 is then not exercised).
 //
 // derived_only: when not null, the route carries no derived document
 // (RouteLimits::derived false), so the derived document decided nothing:
@@ -38,9 +40,13 @@ namespace vgc {
 // *derived_only instead of *out (a clause the step also decided otherwise
 // stays in *out only). The runner reports a clause that only such steps
 // reached as not judgeable on that route.
-void exercised_clauses(const Node& before, const Command& c, Reason expected, const RuleTrace& rules,
-                       const Node& after, bool verdict_reported, std::vector<std::string_view>* out,
-                       std::vector<std::string_view>* derived_only = nullptr);
+void exercised_clauses(const std::vector<DerivedChange>& derived_changed, const Command& c, Reason expected,
+                       const RuleTrace& rules, const Node& after, bool verdict_reported,
+                       std::vector<std::string_view>* out, std::vector<std::string_view>* derived_only = nullptr);
+
+// Every derived line that differs between the two nodes' derived documents
+// (from the printed documents: costs both nodes' size).
+std::vector<DerivedChange> derived_changes(const Node& before, const Node& after);
 
 // The clauses a fresh-node check decides (LAYER-BASE-1, CREASE-INITIAL-1,
 // STABLE-1).

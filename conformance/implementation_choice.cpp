@@ -92,7 +92,8 @@ std::optional<ChoiceFollowed> follow_implementation_choice(const Node& before, c
   if (!picked || *picked < p->first || *picked > p->last) return std::nullopt;
   ChoiceFollowed out;
   out.model = before;
-  if (out.model.apply(with_id(c, *picked)) != Reason::Ok) return std::nullopt;
+  out.applied = with_id(c, *picked);
+  if (out.model.apply(out.applied) != Reason::Ok) return std::nullopt;
   if (diff_documents(print_snapshot(out.model), observed)) return std::nullopt;  // it differs otherwise too
 
   Node lowest = before;  // what the suite's reading picks, for the note

@@ -38,6 +38,7 @@ namespace vgc {
 
 struct ChoiceFollowed {
   Node model;    // the reference's state after the command, with the implementation's id
+  Command applied;  // the command the model applied: the command with that id written
   Finding note;  // the id clause, what the suite's reading would have picked and what was picked
 };
 

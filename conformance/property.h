@@ -30,7 +30,16 @@ struct PropertySpec {
   // it, with a quarter of the cases, and after each case's commands calls
   // the registered check for it on the final state.
   std::string_view capability = {};
+  // A property at scale (scale_mesh.h): each case builds and edits a mesh of
+  // 10^4 to 10^5 elements instead of drawing commands from the focus, and
+  // the property runs a fiftieth of the cases (at least 2).
+  bool at_scale = false;
 };
+
+// How many cases a property runs when the run asks for `cases` per property:
+// all of them, a quarter for a capability (at least 1), a fiftieth at
+// scale (at least 2).
+int property_cases(const PropertySpec& spec, int cases);
 
 // Every property, in run order.
 const std::vector<PropertySpec>& property_catalog();

@@ -1,6 +1,8 @@
 // property_catalog.cpp — see property.h.
 #include "property.h"
 
+#include <algorithm>
+
 namespace vgc {
 
 const std::vector<PropertySpec>& property_catalog() {
@@ -28,6 +30,12 @@ const std::vector<PropertySpec>& property_catalog() {
        {"LAYER-ID-PICK-1", "VERTEX-ID-PICK-1", "BONE-ID-PICK-1", "ID-BOUND-1"}},
       {"commands.atomic", "any command on any state: applied whole or rejected with nothing changed",
        Focus::Anything, {"ATOMIC-1", "ACCEPT-1", "REASON-1", "STABLE-1"}},
+      {"storage.scale",
+       "meshes of 10^4 to 10^5 elements (grids, tori, fans, ids over the whole id range) with edits interleaved",
+       Focus::Polygons,
+       {"VERTEX-SET-1", "VERTEX-DELETE-1", "ID-BOUND-1", "CREASE-VERTEX-LAYER-1", "CREASE-EDGE-LAYER-1"},
+       {},
+       true},
       {"derived.manifold", "optional capability: ?classify agrees with CGAL on the node's polygons",
        Focus::Polygons, {"MESH-CLASSIFY-1"}, "manifold"},
       {"derived.subdivision", "optional capability: ?subdivide agrees with OpenSubdiv Catmark, creases included",
@@ -40,6 +48,11 @@ const std::vector<PropertySpec>& property_catalog() {
        Focus::Creases, {"EDIT-HIERARCHY-1"}, "edits"},
   };
   return catalog;
+}
+
+int property_cases(const PropertySpec& spec, int cases) {
+  if (spec.at_scale) return std::max(2, cases / 50);
+  return spec.capability.empty() ? cases : std::max(1, cases / 4);
 }
 
 const PropertySpec* find_property(std::string_view id) {

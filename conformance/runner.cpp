@@ -19,6 +19,8 @@
 #include "command_text.h"
 #include "confirm_finding.h"
 #include "cancel.h"
+#include "program_checker.h"
+#include "scale_mesh.h"
 #include "property.h"
 
 namespace vgc {
@@ -38,7 +40,9 @@ struct CaseContext {
   Clock::time_point deadline;
   bool deadline_hit = false;
   std::vector<Command> trace;           // commands of the current case so far
-  Node model;                           // the reference state after trace
+  // The reference state after trace (checker->model()), and how each
+  // command is compared (program_checker.h); a new one per case.
+  std::unique_ptr<ProgramChecker> checker;
   std::optional<Finding> last_failure;  // the most recent failing case: after
   Program last_program;                 // shrinking, the smallest one
   std::map<std::string, std::pair<Finding, Program>> notes;
@@ -65,6 +69,9 @@ struct CaseContext {
   bool shrinking = false;           // this round found its failure: cases now are shrink attempts
   int cases_done = 0, judged = 0, set_aside = 0, not_judged = 0, target = 0;
   bool dominated = false;           // set-aside cases dominate: stop
+  // ... once this many cases ran (kSetAsideMinCases; 1 at scale, where a
+  // case is a whole mesh and the property runs only a few).
+  int set_aside_min_cases = kSetAsideMinCases;
   // What the instance had been sent since it started when the round's first
   // call failure happened (confirm_finding.h), the failing case last.
   HistoryRecorder* recorder = nullptr;
@@ -159,27 +166,24 @@ bool reach_wanted() {
   return false;
 }
 
-bool take_step_out(const StepResult& r, const Node& before) {
+bool take_step_out(const StepResult& r) {
   CaseContext& c = *g_context;
   const Finding& f = *r.failure;
   if (f.status != FindingStatus::Fail || c.taken_out >= kMaxTakenOut || c.trace.empty() || !reach_wanted())
     return false;
   note_tolerated(f);  // with the command still in the trace: the program that shows it
   c.trace.pop_back();
-  Node model = before;  // it dropped the command: both sides still hold `before`
-  if (!r.implementation_unchanged) {
+  if (r.implementation_unchanged) {
+    c.checker->drop_last();  // it dropped the command: both sides still hold the state before it
+  } else {
     // Once the command is out of the trace the case cannot fall back to
     // fail_case (its program would no longer show the divergence): a reset
     // or replay that fails sets the case aside here.
     if (c.sut->reset().status != CallStatus::Ok) return c.set_aside_case = true;
-    model = Node{};
-    for (const auto& cmd : c.trace) {
-      Node after;
-      if (check_step(model, cmd, *c.sut, &after, /*follow_choices=*/true).failure) return c.set_aside_case = true;
-      model = std::move(after);
-    }
+    c.checker = std::make_unique<ProgramChecker>(*c.sut, /*follow_choices=*/true);
+    for (const auto& cmd : c.trace)
+      if (c.checker->step(cmd).failure) return c.set_aside_case = true;
   }
-  c.model = std::move(model);
   ++c.taken_out;
   if (!c.shrinking) ++c.steps_taken_out;
   return true;
@@ -239,15 +243,18 @@ struct Step final : rc::state::Command<Node, Implementation> {
     // implementation made a choice the spec leaves open (which free id it
     // picked), the model follows it (implementation_choice.h) and the rest
     // of the case is still judged.
-    const Node before = c.model;
-    Node after;
-    StepResult r = check_step(before, command, sut, &after, /*follow_choices=*/true);
+    (void)sut;  // c.checker holds it
+    std::vector<DerivedChange> derived_changed;
+    StepResult r = c.checker->step(command, &derived_changed);
     if (cancel_signal()) {  // the step may have been cut short: it proves nothing
       c.deadline_hit = true;
       return;
     }
-    if (r.failure && c.tolerated.count(r.failure->clause) && take_step_out(r, before)) return;
-    c.model = after;
+    if (r.failure && c.checker->failed_at() >= 0)  // found for an earlier command (sparse reading)
+      c.trace.resize(static_cast<std::size_t>(c.checker->failed_at()) + 1);
+    else if (r.failure && c.tolerated.count(r.failure->clause) && take_step_out(r))
+      return;
+    const Node& after = c.checker->model();
     for (auto& note : r.notes) {
       auto it = c.notes.find(note.clause);
       if (it == c.notes.end() || it->second.second.commands.size() > c.trace.size())
@@ -255,7 +262,7 @@ struct Step final : rc::state::Command<Node, Implementation> {
     }
     if (!r.failure && !c.shrinking && r.not_judged.empty()) {
       std::vector<std::string_view> decided, derived_only;
-      exercised_clauses(before, command, r.expected, r.rules, after, r.verdict_reported, &decided,
+      exercised_clauses(derived_changed, command, r.expected, r.rules, after, r.verdict_reported, &decided,
                         r.derived_judged ? nullptr : &derived_only);
       count_exercised(decided);
       for (Rule rule : r.rules) ++(*c.rule_uses)[std::string(rule_name(rule))];
@@ -272,6 +279,24 @@ struct Step final : rc::state::Command<Node, Implementation> {
 
   void show(std::ostream& os) const override { os << print_command(command); }
 };
+
+// A case of a property at scale (scale_mesh.h): the mesh drawn for the
+// case, built and edited command by command, each command a Step as in
+// every other property.
+void run_scale_case() {
+  CaseContext& c = *g_context;
+  ScaleCase sc;
+  sc.shape = static_cast<ScaleShape>(*rc::gen::inRange(0, kScaleShapes));
+  sc.elements = *rc::gen::inRange(kScaleMinElements, kScaleMaxElements + 1);
+  sc.spread_ids = *rc::gen::arbitrary<bool>();
+  sc.seed = *rc::gen::arbitrary<std::uint32_t>();
+  const Node unused;  // Step::run judges against the case's own model
+  c.checker->allow_sparse_reading();  // a route without ?digest: the documents read every so often
+  for (const auto& cmd : scale_case_commands(sc)) {
+    Step(cmd).run(unused, *c.sut);
+    if (c.stop || c.abandoned || c.set_aside_case || c.deadline_hit) return;
+  }
+}
 
 class ProgressListener final : public rc::detail::TestListener {
  public:
@@ -352,6 +377,8 @@ class RequestRecorder final : public Implementation {
   Document snapshot() override { return sut_.snapshot(); }
   Document derived() override { return sut_.derived(); }
   std::string identity() const override { return sut_.identity(); }
+  bool offers_digest() override { return sut_.offers_digest(); }
+  DigestAnswer digest() override { return sut_.digest(); }
   Document request(const std::string& line) override {
     Document d = sut_.request(line);
     last_request = line;
@@ -442,7 +469,8 @@ PropertyOutcome run_property(const PropertySpec& spec, Implementation& sut, cons
   ctx.deadline = deadline;
   ctx.tolerated = o.tolerated;
   ctx.baseline = o.tolerated;
-  ctx.target = spec.capability.empty() ? o.cases : std::max(1, o.cases / 4);
+  ctx.target = property_cases(spec, o.cases);
+  if (spec.at_scale) ctx.set_aside_min_cases = 1;
   ctx.exercised = &out.exercised;
   ctx.declared = &spec.clauses;
   ctx.derived_only = &out.derived_only;
@@ -457,14 +485,15 @@ PropertyOutcome run_property(const PropertySpec& spec, Implementation& sut, cons
       spec.capability.empty() ? nullptr : find_capability_check(std::string(spec.capability));
   const std::string_view capability_name = spec.capability;
   const std::string capability_clause_list = capability_clauses(std::string(capability_name));
-  auto property = [focus, capability, capability_name, &capability_clause_list] {
+  const bool at_scale = spec.at_scale;
+  auto property = [focus, capability, capability_name, &capability_clause_list, at_scale] {
     CaseContext& c = *g_context;
     if (c.stop || c.dominated || c.deadline_hit || past_deadline()) return;
     // Fresh cases count toward the property's cases; shrink attempts do not.
     const bool counted = !c.shrinking;
     if (counted && c.cases_done >= c.target) return;
     c.trace.clear();
-    c.model = Node{};
+    c.checker = std::make_unique<ProgramChecker>(*c.sut, /*follow_choices=*/true);
     c.abandoned = false;
     c.set_aside_case = false;
     c.not_judged_case = false;
@@ -478,7 +507,7 @@ PropertyOutcome run_property(const PropertySpec& spec, Implementation& sut, cons
         if (c.set_aside_case) ++c.set_aside;
         else if (c.not_judged_case) ++c.not_judged;
         else if (!c.abandoned && !c.deadline_hit) ++c.judged;
-        if (c.cases_done >= kSetAsideMinCases && c.set_aside > kSetAsideShare * c.cases_done) c.dominated = true;
+        if (c.cases_done >= c.set_aside_min_cases && c.set_aside > kSetAsideShare * c.cases_done) c.dominated = true;
       }
     } tally{c, counted};
     if (auto f = check_fresh(*c.sut)) {
@@ -491,27 +520,37 @@ PropertyOutcome run_property(const PropertySpec& spec, Implementation& sut, cons
     }
     // A capability case starts from a small open surface, so that its
     // random commands edit a mesh rather than mostly build nothing.
-    Node start;
     if (capability) {
       for (const auto& cmd : capability_start_commands(capability_name)) {
         c.trace.push_back(cmd);
-        Node after;
-        StepResult r = check_step(start, cmd, *c.sut, &after);
+        StepResult r = c.checker->step(cmd);
         if (r.failure && past_deadline()) return;
         if (r.failure) {
           fail_case(*r.failure);
           return;
         }
-        start = std::move(after);
       }
-      c.model = start;
     }
-    const auto commands = *rc::state::gen::commands(start, [focus](const Node& model) {
-      return rc::gen::map(gen_command(model, focus), [](vgc::Command cmd) {
-        return std::shared_ptr<const rc::state::Command<Node, Implementation>>(std::make_shared<Step>(cmd));
+    if (at_scale) {
+      run_scale_case();
+    } else {
+      const Node start = c.checker->model();
+      const auto commands = *rc::state::gen::commands(start, [focus](const Node& model) {
+        return rc::gen::map(gen_command(model, focus), [](vgc::Command cmd) {
+          return std::shared_ptr<const rc::state::Command<Node, Implementation>>(std::make_shared<Step>(cmd));
+        });
       });
-    });
-    rc::state::runAll(commands, start, *c.sut);
+      rc::state::runAll(commands, start, *c.sut);
+    }
+    // Where the steps compared digests, the whole documents once at the end
+    // (program_checker.h); a difference is localized to its command.
+    if (!c.stop && !c.abandoned && !c.set_aside_case && !c.deadline_hit && !past_deadline()) {
+      if (auto l = c.checker->finish(c.trace)) {
+        c.trace.resize(static_cast<std::size_t>(l->index) + 1);
+        fail_case(*l->step.failure);
+        return;
+      }
+    }
     // An optional capability: judged on the final state, the variant
     // (subdivision level) chosen by the case; a check that needs more
     // (check_drawn) gets a value drawn for the case.
@@ -519,7 +558,7 @@ PropertyOutcome run_property(const PropertySpec& spec, Implementation& sut, cons
       const int variant = static_cast<int>(c.trace.size() % 3) + 1;
       CapabilityRequest request{capability->capability, variant, std::nullopt};
       if (capability->check_drawn) request.draw = *rc::gen::arbitrary<std::uint32_t>();
-      const auto f = run_capability_check(*capability, c.model, *c.sut, request);
+      const auto f = run_capability_check(*capability, c.checker->model(), *c.sut, request);
       if (f && past_deadline()) return;  // cut short by a cancel: no finding
       if (f && f->status != FindingStatus::NotJudged) {
         fail_case(*f, request);
@@ -740,8 +779,17 @@ RunResult run_certification(Implementation& implementation, const RunOptions& o)
     }
     if (run.preflight) {
       skipped.status = "stopped";
-      skipped.cases_target = spec.capability.empty() ? o.cases : std::max(1, o.cases / 4);
+      skipped.cases_target = property_cases(spec, o.cases);
       skipped.note = "not run: the implementation could not show a fresh node (" + run.preflight->clause + ")";
+      run.properties.push_back(skipped);
+      continue;
+    }
+    if (spec.at_scale && !sut.limits().route.empty()) {
+      // A route with limits (the Verse wire) carries a command per packet
+      // exchange and no derived document: 10^4 to 10^5 commands a case are
+      // beyond a run's time there.
+      skipped.note = "not run on " + sut.limits().route +
+                     ": its cases send 10^4 to 10^5 commands; certify the node through exec: or plugin: for it";
       run.properties.push_back(skipped);
       continue;
     }
@@ -763,7 +811,7 @@ RunResult run_certification(Implementation& implementation, const RunOptions& o)
     progress.cases_done = 0;
     progress.set_aside = 0;
     progress.failures = 0;
-    progress.cases_total = spec.capability.empty() ? o.cases : std::max(1, o.cases / 4);
+    progress.cases_total = property_cases(spec, o.cases);
     progress.shrinking = false;
     if (o.progress) {  // the property starts (its first case may take long)
       progress.elapsed_seconds = std::chrono::duration<double>(Clock::now() - start).count();
@@ -906,18 +954,22 @@ ReplayResult replay_program(const Program& program, Implementation& sut) {
     r.failure = f;
     return r;
   }
-  Node model;
+  ProgramChecker checker(sut, /*follow_choices=*/true);
   for (std::size_t i = 0; i < program.commands.size(); ++i) {
-    Node after;
-    StepResult s = check_step(model, program.commands[i], sut, &after, /*follow_choices=*/true);
+    StepResult s = checker.step(program.commands[i]);
     for (auto& n : s.notes) r.notes.push_back(n);
     if (s.failure) {
       r.failure = s.failure;
       r.failed_at = static_cast<int>(i);
       return r;
     }
-    model = std::move(after);
   }
+  if (auto l = checker.finish(program.commands)) {  // a ?digest that does not stand for the documents
+    r.failure = l->step.failure;
+    r.failed_at = l->index;
+    return r;
+  }
+  const Node& model = checker.model();
   if (!program.request) return r;
   const CapabilityRequest& q = *program.request;
   std::string clauses = capability_clauses(q.capability);

@@ -470,6 +470,37 @@ Answer ExecImplementation::request_line(const std::string& request, std::string*
   return a;
 }
 
+bool ExecImplementation::offers_digest() {
+  if (digest_claimed_ < 0) {
+    // Asked when a check starts, on a fresh node. A program that cannot
+    // answer ?capabilities claims nothing; it is started again so that this
+    // question, which certify asks again before its capability cases (and
+    // reports there), does not become a failure of the next command.
+    const Document d = request("?capabilities");
+    if (d.status != CallStatus::Ok) {
+      digest_claimed_ = 0;
+      start();
+      return false;
+    }
+    const std::string first = d.text.substr(0, d.text.find('\n'));
+    digest_claimed_ = (" " + first + " ").find(" digest ") != std::string::npos && first.rfind("capabilities", 0) == 0;
+  }
+  return digest_claimed_ == 1;
+}
+
+DigestAnswer ExecImplementation::digest() {
+  DigestAnswer d;
+  std::string line;
+  const Answer a = request_line("?digest", &line);
+  if (a.status != CallStatus::Ok) return {a.status, {}, a.detail};
+  if (!parse_digest_line(line, &d.digests)) {
+    fail(CallStatus::ProtocolError,
+         "answered ?digest with " + quote_line(line) + "; expected \"digest <16 hex digits> <16 hex digits>\"");
+    return {failed_, {}, failed_detail_};
+  }
+  return d;
+}
+
 Answer ExecImplementation::apply(const Command& c) {
   if (failed_ != CallStatus::Ok) return failed_answer();
   const std::string text = print_command(c);

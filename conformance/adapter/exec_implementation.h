@@ -57,6 +57,12 @@ class ExecImplementation final : public Implementation {
   // capability_document_header knows): read as a document like
   // ?snapshot; an "error ..." answer is returned as it is (status Ok).
   Document request(const std::string& line) override;
+  // Asks ?capabilities once (per ExecImplementation, not per instance: the
+  // same program) whether the program claims the word `digest`; call it on
+  // a fresh node (a program that fails the question is started again).
+  bool offers_digest() override;
+  // ?digest: one line "digest <hex16> <hex16>"; anything else is a ProtocolError.
+  DigestAnswer digest() override;
 
   // Sends one raw line (without the newline) and reads one answer line.
   // For tests and for requests outside the Command set. Failure rules as apply().
@@ -104,6 +110,7 @@ class ExecImplementation final : public Implementation {
   std::string out_buf_;
   std::string err_partial_;
   std::deque<std::string> err_lines_;
+  int digest_claimed_ = -1;  // offers_digest(): -1 not asked yet, 0 no, 1 yes
   CallStatus failed_ = CallStatus::Ok;  // sticky failure until reset()
   std::string failed_detail_;
 };

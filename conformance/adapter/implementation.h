@@ -20,6 +20,7 @@
 #include <string>
 
 #include "command.h"
+#include "document_digest.h"
 
 namespace vgc {
 
@@ -60,6 +61,14 @@ struct Document {
   CallStatus status = CallStatus::Ok;
   std::string text;      // whole document including the final "end\n"
   std::string detail;
+};
+
+// The answer to `?digest` (docs/adapters.md, document_digest.h): the digests
+// of the two documents the implementation would print now.
+struct DigestAnswer {
+  CallStatus status = CallStatus::Ok;
+  DocumentDigests digests;
+  std::string detail;  // for a non-Ok status
 };
 
 // What a route to an implementation cannot show, so that what it cannot
@@ -117,6 +126,13 @@ class Implementation {
     (void)line;
     return {CallStatus::ProtocolError, {}, "not supported"};
   }
+  // Whether the implementation answers `?digest` (exec: it claims the word
+  // `digest` in ?capabilities, asked once). With it, checking a command
+  // costs what the command changed (check_step.h ProgramChecker); without
+  // it, both documents are read after every command. Default: no.
+  virtual bool offers_digest() { return false; }
+  // The digests of its two documents now; only called when offers_digest().
+  virtual DigestAnswer digest() { return {CallStatus::ProtocolError, {}, "not supported"}; }
 };
 
 struct OpenOptions {

@@ -19,6 +19,7 @@ const char* call_status_name(CallStatus s) {
 
 Answer ReferenceImplementation::reset() {
   node_ = Node{};
+  digest_ = NodeDigest{};
   Answer a;
   a.applied = true;
   return a;
@@ -26,7 +27,8 @@ Answer ReferenceImplementation::reset() {
 
 Answer ReferenceImplementation::apply(const Command& c) {
   Answer a;
-  const Reason r = node_.apply(c);
+  const Reason r = node_.apply(c, nullptr, &changes_);
+  digest_.update(node_, changes_);
   a.applied = r == Reason::Ok;
   if (!a.applied) a.reason = std::string(reason_name(r));
   return a;

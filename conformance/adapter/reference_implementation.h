@@ -17,10 +17,15 @@ class ReferenceImplementation final : public Implementation {
   Document snapshot() override;
   Document derived() override;
   Document request(const std::string& line) override;  // capability_documents.h
+  // Kept up to date command by command (NodeDigest): costs what a command changed.
+  bool offers_digest() override { return true; }
+  DigestAnswer digest() override { return {CallStatus::Ok, digest_.digests(), {}}; }
   const Node& node() const { return node_; }
 
  private:
   Node node_;
+  NodeDigest digest_;
+  ChangeLog changes_;
 };
 
 }  // namespace vgc

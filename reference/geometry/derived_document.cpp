@@ -13,19 +13,34 @@ std::string u16(std::uint16_t v) { return format_uint(v, 16); }
 
 }  // namespace
 
-std::string print_derived(const Node& node) {
-  std::string out = "vgc-derived 1\n";
-  for (const auto& [id, slot] : node.vertices())
-    out += "vertex_crease " + u32(id) + " " + u32(vertex_crease(node, id)) + "\n";
-  for (const auto& [id, slot] : node.polygons())
-    for (int c = 0; c < corner_count(slot); ++c)
-      out += "edge_crease " + u32(id) + " " + std::to_string(c) + " " + u32(edge_crease(node, id, c)) + "\n";
+std::string derived_vertex_line(const Node& node, std::uint32_t vertex_id) {
+  return "vertex_crease " + u32(vertex_id) + " " + u32(vertex_crease(node, vertex_id)) + "\n";
+}
+
+std::string derived_polygon_lines(const Node& node, std::uint32_t polygon_id, const Slot& polygon) {
+  std::string out;
+  for (int c = 0; c < corner_count(polygon); ++c)
+    out += "edge_crease " + u32(polygon_id) + " " + std::to_string(c) + " " + u32(edge_crease(node, polygon_id, c)) +
+           "\n";
+  return out;
+}
+
+std::map<std::uint16_t, std::string> derived_bone_lines(const Node& node) {
+  std::map<std::uint16_t, std::string> out;
   for (const auto& [id, pose] : bone_world_poses(node)) {
-    out += "bone_pose " + u16(id);
-    for (double v : pose.pos) out += " " + format_f64(v);
-    for (double v : pose.rot) out += " " + format_f64(v);
-    out += "\n";
+    std::string line = "bone_pose " + u16(id);
+    for (double v : pose.pos) line += " " + format_f64(v);
+    for (double v : pose.rot) line += " " + format_f64(v);
+    out.emplace(id, line + "\n");
   }
+  return out;
+}
+
+std::string print_derived(const Node& node) {
+  std::string out = kDerivedHeader;
+  for (const auto& [id, slot] : node.vertices()) out += derived_vertex_line(node, id);
+  for (const auto& [id, slot] : node.polygons()) out += derived_polygon_lines(node, id, slot);
+  for (const auto& [id, line] : derived_bone_lines(node)) out += line;
   out += "end\n";
   return out;
 }

@@ -14,6 +14,8 @@
 // the geometry because it interprets the state.
 #pragma once
 
+#include <cstdint>
+#include <map>
 #include <string>
 
 #include "node.h"
@@ -21,5 +23,14 @@
 namespace vgc {
 
 std::string print_derived(const Node& node);
+
+// Its lines one identity at a time, exactly as print_derived prints them
+// (each ending in "\n"; print_derived is made of them), for a digest that
+// follows the node line by line (document_digest.h).
+inline constexpr const char* kDerivedHeader = "vgc-derived 1\n";
+std::string derived_vertex_line(const Node& node, std::uint32_t vertex_id);
+// Every "edge_crease" line of the live polygon `polygon_id` (`polygon` its slot).
+std::string derived_polygon_lines(const Node& node, std::uint32_t polygon_id, const Slot& polygon);
+std::map<std::uint16_t, std::string> derived_bone_lines(const Node& node);  // bone id -> "bone_pose" line
 
 }  // namespace vgc

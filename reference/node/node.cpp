@@ -68,12 +68,15 @@ Node::Node(NodeLimits limits) : limits_(limits) {
   // constant 0. 2.6.4 says a cube must "explicitly set" sharp creasing.
 }
 
-Reason Node::apply(const Command& c, RuleTrace* trace) {
+Reason Node::apply(const Command& c, RuleTrace* trace, ChangeLog* changes) {
   ++step_;
   trace_ = trace;
+  changes_ = changes;
+  if (changes_) changes_->clear();
   const Reason r = std::visit([this](const auto& x) { return apply_one(x); }, c);
   if (r != Reason::Ok) note(Rule::RejectedChangesNothing);
   trace_ = nullptr;
+  changes_ = nullptr;
   return r;
 }
 
@@ -177,6 +180,7 @@ Reason Node::apply_one(const cmd::LayerCreate& c) {
     for (const auto& [element, unused] : base) layer.slots.emplace(element, fresh);
   }
   layers_[id] = std::move(layer);
+  if (changes_) changes_->whole_layers.push_back(id);
   return Reason::Ok;
 }
 
@@ -186,6 +190,7 @@ Reason Node::apply_one(const cmd::LayerDestroy& c) {
   if (c.layer_id == kVertexLayer || c.layer_id == kPolygonLayer)
     return refuse(Rule::LayerDestroyBaseId, Reason::BaseLayer);
   if (layers_.erase(c.layer_id) == 0) return refuse(Rule::LayerDestroyMissing, Reason::NoSuchLayer);
+  if (changes_) changes_->whole_layers.push_back(c.layer_id);
   note(Rule::LayerDestroy);
   return Reason::Ok;
 }
@@ -206,6 +211,7 @@ Reason Node::apply_one(const cmd::LayerSubscribe& c) {
   note(Rule::Subscribe);
   it->second.subscription = static_cast<RealFormat>(c.real_format);
   it->second.written = written(Rule::Subscribe);
+  if (changes_) changes_->layer_lines.push_back(c.layer_id);
   return Reason::Ok;
 }
 
@@ -216,6 +222,7 @@ Reason Node::apply_one(const cmd::LayerUnsubscribe& c) {
   note(Rule::Unsubscribe);
   it->second.subscription.reset();
   it->second.written = written(Rule::Unsubscribe);
+  if (changes_) changes_->layer_lines.push_back(c.layer_id);
   return Reason::Ok;
 }
 
@@ -232,6 +239,7 @@ Reason Node::find_slot(std::uint16_t layer_id, LayerType type, std::uint32_t id,
   if (slot == it->second.slots.end())
     return refuse(Rule::WriteNoSuchElement, is_vertex_layer_type(type) ? Reason::NoSuchVertex : Reason::NoSuchPolygon);
   *out = &slot->second;
+  touch_slot(layer_id, id);
   return Reason::Ok;
 }
 
@@ -247,6 +255,7 @@ Reason Node::new_element(std::uint16_t base_layer, std::uint32_t id, const Slot&
   for (auto& [lid, layer] : layers_) {
     if (is_vertex_layer_type(layer.type) != vertex_stack) continue;
     Slot& slot = layer.slots[id];
+    touch_slot(lid, id);
     if (lid == base_layer) {
       slot = base_value;
       slot.written = written(vertex_stack ? Rule::VertexCreate : Rule::PolygonCreate);
@@ -261,10 +270,11 @@ Reason Node::new_element(std::uint16_t base_layer, std::uint32_t id, const Slot&
 }
 
 void Node::erase_element(bool vertex_stack, std::uint32_t id) {
-  for (auto& [lid, layer] : layers_)
-    if (is_vertex_layer_type(layer.type) == vertex_stack && layer.slots.erase(id) && lid != kVertexLayer &&
-        lid != kPolygonLayer)
-      note(Rule::ElementShrinksLayers);
+  for (auto& [lid, layer] : layers_) {
+    if (is_vertex_layer_type(layer.type) != vertex_stack) continue;
+    touch_slot(lid, id);
+    if (layer.slots.erase(id) && lid != kVertexLayer && lid != kPolygonLayer) note(Rule::ElementShrinksLayers);
+  }
 }
 
 Reason Node::set_xyz(std::uint16_t layer_id, std::uint32_t vertex_id, std::array<double, 3> xyz, Rule value_rule) {
@@ -294,6 +304,7 @@ Reason Node::set_xyz(std::uint16_t layer_id, std::uint32_t vertex_id, std::array
     if (layers_in_stack(true) > 1) note(Rule::VertexMoveKeepsSlots);
     std::copy(xyz.begin(), xyz.end(), slot->second.r.begin());
     slot->second.written = written(Rule::VertexMove);
+    touch_slot(kVertexLayer, id);
     return Reason::Ok;
   }
   Slot value;
@@ -404,6 +415,7 @@ Reason Node::set_corners(std::uint16_t layer_id, std::uint32_t polygon_id, std::
     if (layers_in_stack(false) > 1) note(Rule::PolygonRedefineKeepsSlots);
     slot->second.u = v;
     slot->second.written = written(Rule::PolygonRedefine);
+    touch_slot(kPolygonLayer, id);
     return Reason::Ok;
   }
   Slot value;
@@ -503,6 +515,7 @@ Reason Node::apply_one(const cmd::CreaseSetVertex& c) {
   const Rule rule = crease_rule(c.layer, LayerType::VertexUint32, Rule::CreaseVertexConstant, Rule::CreaseVertexLayer);
   note(rule);
   vertex_crease_ = {c.layer, c.def_crease, written(rule)};
+  if (changes_) changes_->creases = true;
   return Reason::Ok;
 }
 
@@ -513,6 +526,7 @@ Reason Node::apply_one(const cmd::CreaseSetEdge& c) {
       crease_rule(c.layer, LayerType::PolygonCornerUint32, Rule::CreaseEdgeConstant, Rule::CreaseEdgeLayer);
   note(rule);
   edge_crease_ = {c.layer, c.def_crease, written(rule)};
+  if (changes_) changes_->creases = true;
   return Reason::Ok;
 }
 
@@ -583,6 +597,7 @@ Reason Node::apply_one(const cmd::BoneCreate& c) {
   note(Rule::BoneCreate);
   Bone& b = bones_[id] = bone_from_command(c, id);
   b.written = written(Rule::BoneCreate);
+  if (changes_) changes_->bones.push_back(id);
   return Reason::Ok;
 }
 
@@ -603,6 +618,7 @@ Reason Node::apply_one(const cmd::BoneDestroy& c) {
   // Decision: destroying a bone leaves its children's parent links as they
   // are: they are roots until a bone with that id exists again.
   if (bones_.erase(c.bone_id) == 0) return refuse(Rule::BoneDestroyMissing, Reason::NoSuchBone);
+  if (changes_) changes_->bones.push_back(c.bone_id);
   note(Rule::BoneDestroy);
   return Reason::Ok;
 }

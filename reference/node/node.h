@@ -20,6 +20,8 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "command.h"
 #include "reason.h"
@@ -68,6 +70,27 @@ struct Bone {  // 2.6.3
 // picked for it): every field as sent, nothing checked.
 Bone bone_from_command(const cmd::BoneCreate& c, std::uint16_t id);
 
+// What one command may have changed (Node::apply with a ChangeLog), as the
+// identities of the snapshot lines it wrote, added or removed. A superset is
+// fine (an entry whose line did not change costs only its recomputation);
+// a change missing here is a bug that document_digest_test catches. It lets
+// a digest of the node's documents (reference/geometry/document_digest.h)
+// follow the node at the cost of the command, not of the node's size.
+struct ChangeLog {
+  std::vector<std::pair<std::uint16_t, std::uint32_t>> slots;  // (layer id, element id)
+  std::vector<std::uint16_t> layer_lines;   // a layer's own line only (subscription)
+  std::vector<std::uint16_t> whole_layers;  // created, re-created or destroyed: its line and every slot
+  std::vector<std::uint16_t> bones;         // created or destroyed
+  bool creases = false;                     // either crease setting
+  void clear() {
+    slots.clear();
+    layer_lines.clear();
+    whole_layers.clear();
+    bones.clear();
+    creases = false;
+  }
+};
+
 // Storage bounds, so that no command sequence makes the node allocate
 // without bound. A command that would pass one is rejected with LIMIT.
 struct NodeLimits {
@@ -88,7 +111,9 @@ class Node {
   // then every later guard of layer_create / bone_create that would refuse
   // it too.
   // Every element the command writes records the rule and step() (Written).
-  Reason apply(const Command& c, RuleTrace* trace = nullptr);
+  // When `changes` is not null it is cleared and receives what the command
+  // may have changed (ChangeLog).
+  Reason apply(const Command& c, RuleTrace* trace = nullptr, ChangeLog* changes = nullptr);
   // How many commands apply() has been given (the step a Written refers to).
   std::uint32_t step() const { return step_; }
 
@@ -156,6 +181,11 @@ class Node {
       if (holds) note(rule);
   }
   Written written(Rule r) const { return {r, step_}; }
+  void touch_slot(std::uint16_t layer_id, std::uint32_t element) {
+    if (changes_) changes_->slots.emplace_back(layer_id, element);
+  }
+
+  ChangeLog* changes_ = nullptr;
 
   NodeLimits limits_;
   RuleTrace* trace_ = nullptr;

@@ -91,43 +91,55 @@ std::string print_snapshot(const Node& node) {
   return print_snapshot(SnapshotParts{node.layers(), node.vertex_crease(), node.edge_crease(), node.bones()});
 }
 
+std::string snapshot_layer_line(std::uint16_t id, const Layer& layer) {
+  const UsedDefaults used = used_defaults(id, layer.type);
+  return "layer " + u16(id) + " " + format_quoted(layer.name) + " " +
+         std::string(layer_type_name(static_cast<std::uint8_t>(layer.type))) + " " +
+         (used.def_uint ? u32(layer.def_uint) : "-") + " " + (used.def_real ? format_f64(layer.def_real) : "-") +
+         " " + (!layer.subscription ? "-" : *layer.subscription == RealFormat::Real32 ? "REAL32" : "REAL64") + "\n";
+}
+
+std::string snapshot_crease_lines(const CreaseSetting& vertex, const CreaseSetting& edge) {
+  return "crease_vertex " + format_quoted(vertex.layer) + " " + u32(vertex.def_crease) + "\n" + "crease_edge " +
+         format_quoted(edge.layer) + " " + u32(edge.def_crease) + "\n";
+}
+
+std::string snapshot_slot_line(std::uint16_t layer_id, LayerType type, std::uint32_t element, const Slot& slot) {
+  if (layer_id == Node::kVertexLayer) return "vertex " + u32(element) + slot_values(LayerType::VertexXyz, slot) + "\n";
+  if (layer_id == Node::kPolygonLayer)
+    return "polygon " + u32(element) + slot_values(LayerType::PolygonCornerUint32, slot) + "\n";
+  return "slot " + u16(layer_id) + " " + u32(element) + slot_values(type, slot) + "\n";
+}
+
+std::string snapshot_bone_line(std::uint16_t id, const Bone& b) {
+  std::string out = "bone " + u16(id) + " " + format_quoted(b.weight) + " " + format_quoted(b.reference) + " " +
+                    u16(b.parent);
+  for (double v : b.pos) out += " " + format_f64(v);
+  out += " " + format_quoted(b.pos_label);
+  for (double v : b.rot) out += " " + format_f64(v);
+  out += " " + format_quoted(b.rot_label) + "\n";
+  return out;
+}
+
 std::string print_snapshot(const SnapshotParts& node) {
   static const std::map<std::uint32_t, Slot> kNone;
   const auto slots_of = [&node](std::uint16_t id) -> const std::map<std::uint32_t, Slot>& {
     const auto it = node.layers.find(id);
     return it == node.layers.end() ? kNone : it->second.slots;
   };
-  std::string out = "vgc-snapshot 1\n";
+  std::string out = kSnapshotHeader;
   out.reserve(4096);
-  for (const auto& [id, layer] : node.layers) {
-    const UsedDefaults used = used_defaults(id, layer.type);
-    out += "layer " + u16(id) + " " + format_quoted(layer.name) + " " +
-           std::string(layer_type_name(static_cast<std::uint8_t>(layer.type))) + " " +
-           (used.def_uint ? u32(layer.def_uint) : "-") + " " + (used.def_real ? format_f64(layer.def_real) : "-") +
-           " " +
-           (!layer.subscription ? "-" : *layer.subscription == RealFormat::Real32 ? "REAL32" : "REAL64") +
-           "\n";
-  }
-  out += "crease_vertex " + format_quoted(node.vertex_crease.layer) + " " + u32(node.vertex_crease.def_crease) +
-         "\n";
-  out += "crease_edge " + format_quoted(node.edge_crease.layer) + " " + u32(node.edge_crease.def_crease) + "\n";
+  for (const auto& [id, layer] : node.layers) out += snapshot_layer_line(id, layer);
+  out += snapshot_crease_lines(node.vertex_crease, node.edge_crease);
   for (const auto& [id, slot] : slots_of(Node::kVertexLayer))
-    out += "vertex " + u32(id) + slot_values(LayerType::VertexXyz, slot) + "\n";
+    out += snapshot_slot_line(Node::kVertexLayer, LayerType::VertexXyz, id, slot);
   for (const auto& [id, slot] : slots_of(Node::kPolygonLayer))
-    out += "polygon " + u32(id) + slot_values(LayerType::PolygonCornerUint32, slot) + "\n";
+    out += snapshot_slot_line(Node::kPolygonLayer, LayerType::PolygonCornerUint32, id, slot);
   for (const auto& [lid, layer] : node.layers) {
     if (lid == Node::kVertexLayer || lid == Node::kPolygonLayer) continue;
-    for (const auto& [element, slot] : layer.slots)
-      out += "slot " + u16(lid) + " " + u32(element) + slot_values(layer.type, slot) + "\n";
+    for (const auto& [element, slot] : layer.slots) out += snapshot_slot_line(lid, layer.type, element, slot);
   }
-  for (const auto& [id, b] : node.bones) {
-    out += "bone " + u16(id) + " " + format_quoted(b.weight) + " " + format_quoted(b.reference) + " " +
-           u16(b.parent);
-    for (double v : b.pos) out += " " + format_f64(v);
-    out += " " + format_quoted(b.pos_label);
-    for (double v : b.rot) out += " " + format_f64(v);
-    out += " " + format_quoted(b.rot_label) + "\n";
-  }
+  for (const auto& [id, b] : node.bones) out += snapshot_bone_line(id, b);
   out += "end\n";
   return out;
 }

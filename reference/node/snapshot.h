@@ -40,6 +40,17 @@ struct SnapshotParts {
 };
 std::string print_snapshot(const SnapshotParts& state);
 
+// The snapshot's lines one identity at a time, exactly as print_snapshot
+// prints them (each ending in "\n"; print_snapshot is made of them), for a
+// digest that follows the node line by line (document_digest.h).
+// kSnapshotHeader is the first line; the last is "end\n".
+inline constexpr const char* kSnapshotHeader = "vgc-snapshot 1\n";
+std::string snapshot_layer_line(std::uint16_t id, const Layer& layer);
+std::string snapshot_crease_lines(const CreaseSetting& vertex, const CreaseSetting& edge);  // two lines
+// "vertex ..." for layer 0, "polygon ..." for layer 1, "slot ..." otherwise.
+std::string snapshot_slot_line(std::uint16_t layer_id, LayerType type, std::uint32_t element, const Slot& slot);
+std::string snapshot_bone_line(std::uint16_t id, const Bone& b);
+
 // Which of a layer's two defaults the spec gives meaning to (000 2.6.1: a new
 // slot "is typically initialized with a default value"; Table 2-1 gives each
 // type one value type): an integer type's new slots take def_uint, a real or

@@ -48,6 +48,23 @@ TEST(Serve, MalformedLinesAreErrorsWithTheirColumnAndServingGoesOn) {
   EXPECT_EQ(s.text.find("\"uv\""), std::string::npos);
 }
 
+// `vgc serve` claims `digest` with its capabilities and answers ?digest with
+// the digests of the documents it prints (document_digest.h), so checking
+// through it costs what each command changed (program_checker.h).
+TEST(Serve, ClaimsAndAnswersDigestOfItsDocuments) {
+  auto impl = serve();
+  EXPECT_TRUE(impl->offers_digest());
+  for (const char* line : {"vertex_set_xyz_real64 0 0 1 2 3", "vertex_set_xyz_real64 0 1 1 0 3",
+                           "vertex_set_xyz_real64 0 2 0 2 3", "polygon_set_corner_uint32 1 0 0 1 2 4294967295",
+                           "layer_create 2 \"sharp\" VERTEX_UINT32 7 0", "crease_set_vertex \"sharp\" 0"}) {
+    ASSERT_EQ(ask(*impl, line), "ok") << line;
+    const DigestAnswer d = impl->digest();
+    ASSERT_EQ(d.status, CallStatus::Ok) << d.detail;
+    EXPECT_EQ(d.digests, digests_of(impl->snapshot().text, impl->derived().text)) << line;
+  }
+  EXPECT_EQ(ask(*impl, "?digest").rfind("digest ", 0), 0u);
+}
+
 // `vgc serve --done` answers every command "done" (docs/adapters.md), and
 // the exec route reads it as an answer without a verdict.
 TEST(Serve, DoneAnswersEveryCommandDone) {

@@ -44,8 +44,9 @@ for line in sys.stdin:
     if not answer:
         sys.exit(3)
     sys.stdout.write(answer)
-    # A document (?snapshot, ?derived, a capability request) runs to "end".
-    single = line.strip() in ("?hello", "?reset", "?quit") or not line.startswith("?")
+    # A document (?snapshot, ?derived, a capability request) runs to "end";
+    # ?digest is one line (docs/adapters.md).
+    single = line.strip() in ("?hello", "?reset", "?quit", "?digest") or not line.startswith("?")
     while not single and not answer.startswith("error") and answer.strip() != "end":
         answer = child.stdout.readline()
         if not answer:

@@ -129,6 +129,36 @@ TEST(FaultKill, FaultsPastTheOldGeneratorsReachFailAtSeedsOneToThree) {
   }
 }
 
+// The property at scale (storage.scale, scale_mesh.h) fails a node that
+// drops every new vertex and polygon id past its storage bound (the r6
+// host's 4,129 on a fresh node) at every seed: each of its cases builds a
+// mesh of 10^4 elements or more (issue 21 item 2).
+TEST(FaultKill, TheScalePropertyFailsANodeThatDropsIdsPastItsStorageBoundAtEverySeed) {
+  const int fault = faults::find_fault("ids-past-storage-bound");
+  ASSERT_GT(fault, 0);
+  for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+    faults::FaultyImplementation impl(fault);
+    RunOptions o;
+    o.seed = seed;
+    o.budget_seconds = 300;
+    o.clause_glob = "VERTEX-SET-1";  // the properties that declare it, storage.scale among them
+    const RunResult run = run_certification(impl, o);
+    bool scale_ran = false;
+    for (const auto& p : run.properties) {
+      if (p.id != "storage.scale") continue;
+      scale_ran = true;
+      ASSERT_FALSE(p.findings.empty()) << "seed " << seed << ": storage.scale found nothing";
+      const std::string clause = p.findings.front().finding.clause;
+      std::printf("ids-past-storage-bound seed %llu: storage.scale finds %s after %zu commands: %s\n",
+                  static_cast<unsigned long long>(seed), clause.c_str(),
+                  p.findings.front().program.commands.size(), p.findings.front().finding.message.c_str());
+      EXPECT_TRUE(clause == "VERTEX-SET-1" || clause == "ID-BOUND-1") << clause;
+    }
+    EXPECT_TRUE(scale_ran) << "seed " << seed;
+    EXPECT_EQ(judge(run, nullptr).exit_code, 1) << "seed " << seed;
+  }
+}
+
 TEST(FaultKill, TheUnfaultedWrapperIsConformant) {
   faults::FaultyImplementation impl(0);
   const RunResult run = run_certification(impl, kill_options());

@@ -210,6 +210,10 @@ TEST(PastFindings, APropertyWhoseCasesAreMostlySetAsideStopsAndItsClausesAreUnch
   int stopped = 0;
   for (const auto& p : run.properties) {
     if (p.status == "skipped") continue;
+    if (p.cases_target <= 2) {  // storage.scale at 60 cases: its first case fails, the second is set aside
+      EXPECT_EQ(p.judged, 0) << p.id;
+      continue;
+    }
     EXPECT_EQ(p.status, "stopped") << p.id;
     EXPECT_NE(p.note.find("set aside"), std::string::npos) << p.id << ": " << p.note;
     EXPECT_EQ(p.judged, 0) << p.id;

@@ -25,6 +25,12 @@ class FaultyImplementation final : public Implementation {
   Document snapshot() override { return {CallStatus::Ok, node_.snapshot(), ""}; }
   Document derived() override { return {CallStatus::Ok, node_.derived(), ""}; }
   Document request(const std::string& line) override { return {CallStatus::Ok, node_.request(line), ""}; }
+  // The digest of the documents it prints, faults and all (FaultyNode::
+  // digests): certification compares digests after each command
+  // (program_checker.h), so the faults are found through that path (but
+  // those whose digest is not cheap: FaultyNode::digest_cheap).
+  bool offers_digest() override { return node_.digest_cheap(); }
+  DigestAnswer digest() override { return {CallStatus::Ok, node_.digests(), ""}; }
 
  private:
   std::vector<int> faults_;

@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <limits>
+#include <optional>
 #include <sstream>
 #include <thread>
 
@@ -66,6 +67,9 @@ std::vector<FaultInfo> build_catalog() {
       {"mid-range-ids-dropped", "VERTEX-SET-1", "fail",
        "answers ok to a new vertex or polygon id from 4,101 to 2^24-1 and stores nothing (the r6 host past its "
        "storage bound)"},
+      {"ids-past-storage-bound", "VERTEX-SET-1", "fail",
+       "answers ok to every new vertex or polygon id past 4,129 and stores nothing (the r6 host's storage bound "
+       "on a fresh node, whole)"},
       {"vertex-delete-alias-layer-0-only", "VERTEX-DELETE-1", "fail",
        "treats FLT_MAX / DBL_MAX in a coordinate as a delete only on layer 0; elsewhere it is a plain write"},
       // The three MUST bugs of issue 17, each breaking one node rule alone.
@@ -170,7 +174,11 @@ FaultyAnswer FaultyNode::apply(const Command& original) {
     if (fault_catalog()[static_cast<std::size_t>(f)].breaks != Rule::None)
       return apply_breaking(original, fault_catalog()[static_cast<std::size_t>(f)].breaks);
   Command c = original;
-  const Node before = node_;
+  // The state before the command, for the faults that compare with it (a
+  // copy costs the node's size: only when one of them is active).
+  std::optional<Node> before_copy;
+  if (is("no-default-on-new-slots")) before_copy = node_;
+  const Node& before = before_copy ? *before_copy : node_;
 
   // base-layer-destroyable
   if (is("base-layer-destroyable")) {
@@ -193,20 +201,27 @@ FaultyAnswer FaultyNode::apply(const Command& original) {
     if (l && x->layer_id >= 2 && static_cast<std::uint8_t>(l->type) == x->type) {
       Node trial = node_;
       if (trial.apply(c) == Reason::Ok) {
-        node_.apply(cmd::LayerDestroy{x->layer_id});
-        node_.apply(c);
+        apply_node(cmd::LayerDestroy{x->layer_id});
+        apply_node(c);
         return {true, ""};
       }
     }
   }
   // missing-corner-vertices-created
-  if (auto* x = std::get_if<cmd::PolygonSetCornerUint32>(&c); x && is("missing-corner-vertices-created") && x->layer_id == 1) {
+  // (The node is copied only for a polygon that names a missing vertex: a
+  // copy costs the node's size, and a property at scale sends many polygons.)
+  const auto names_missing_vertex = [this](const std::array<std::uint32_t, 4>& v) {
+    return std::any_of(v.begin(), v.end(), [this](std::uint32_t x) { return x != kNone32 && !node_.vertices().count(x); });
+  };
+  if (auto* x = std::get_if<cmd::PolygonSetCornerUint32>(&c);
+      x && is("missing-corner-vertices-created") && x->layer_id == 1 && names_missing_vertex(x->v)) {
     Node trial = node_;
     if (trial.apply(c) == Reason::NoSuchVertex) {
       for (std::uint32_t v : x->v)
         if (v != kNone32 && !trial.vertices().count(v)) trial.apply(cmd::VertexSetXyzReal64{0, v, 0, 0, 0});
       if (trial.apply(c) == Reason::Ok) {
         node_ = trial;
+        node_changed();
         return {true, ""};
       }
     }
@@ -260,7 +275,7 @@ FaultyAnswer FaultyNode::apply(const Command& original) {
   if (auto* x = std::get_if<cmd::LayerCreate>(&c); x && is("rejected-layer-still-created") && x->name.size() > kMaxNameBytes) {
     cmd::LayerCreate shortened = *x;
     shortened.name.resize(kMaxNameBytes);
-    node_.apply(shortened);
+    apply_node(shortened);
     return answer(Reason::BadName);
   }
   // pick-highest-layer-id
@@ -279,9 +294,10 @@ FaultyAnswer FaultyNode::apply(const Command& original) {
   if (is("mid-range-ids-dropped")) {
     bool vertex_stack = false;
     std::uint32_t id = 0;
-    Node trial = node_;
-    if (creates_element(c, before, &vertex_stack, &id) && id > 4100 && id < (1u << 24) && trial.apply(c) == Reason::Ok)
-      return {true, ""};
+    if (creates_element(c, before, &vertex_stack, &id) && id > 4100 && id < (1u << 24)) {
+      Node trial = node_;  // only for an id in the range: a copy costs the node's size
+      if (trial.apply(c) == Reason::Ok) return {true, ""};
+    }
   }
   // vertex-delete-alias-layer-0-only: on another layer the coordinates are
   // written as they are (into a VERTEX_XYZ layer holding the vertex), or the
@@ -298,6 +314,7 @@ FaultyAnswer FaultyNode::apply(const Command& original) {
       const Layer* l = node_.find_layer(layer_id);
       if (l && l->type == LayerType::VertexXyz && l->slots.count(vertex_id)) {
         Slot& slot = const_cast<Layer*>(l)->slots.at(vertex_id);  // test-only: reach into the node's storage
+        node_changed();
         std::copy(xyz.begin(), xyz.end(), slot.r.begin());
         return {true, ""};
       }
@@ -318,12 +335,20 @@ FaultyAnswer FaultyNode::apply(const Command& original) {
   bool vertex_stack = false;
   std::uint32_t new_id = 0;
   const bool creating = creates_element(c, before, &vertex_stack, &new_id);
-  const Reason r = node_.apply(c);
+  const Reason r = apply_node(c);
+  // ids-past-storage-bound: the new element is dropped again (a new vertex
+  // has no polygons, so deleting it leaves the rest as it was).
+  if (r == Reason::Ok && creating && new_id > 4129 && new_id != kNone32 && is("ids-past-storage-bound")) {
+    if (vertex_stack) apply_node(cmd::VertexDelete{new_id});
+    else apply_node(cmd::PolygonDelete{new_id});
+    return {true, ""};
+  }
   // no-default-on-new-slots: zero every other layer's new slot.
   if (r == Reason::Ok && creating && is("no-default-on-new-slots")) {
     for (const auto& [lid, layer] : node_.layers()) {
       if (lid < 2 || is_vertex_layer_type(layer.type) != vertex_stack) continue;
       Layer& l = const_cast<Layer&>(layer);  // test-only: reach into the node's storage
+      node_changed();
       for (auto& [eid, slot] : l.slots)
         if (!before.find_layer(lid) || !before.find_layer(lid)->slots.count(eid)) slot = Slot{};
     }
@@ -389,10 +414,15 @@ std::uint32_t target_element(const Command& c) {
 }  // namespace
 
 FaultyAnswer FaultyNode::apply_breaking(const Command& c, Rule broken) {
-  const Node before = node_;
   RuleTrace t;
-  const Reason r = node_.apply(c, &t);
+  const Reason r = apply_node(c, &t);
   if (!t.has(broken)) return answer(r);
+  const Node before = replay(history_.size() - 1);
+  const auto restore_before = [&] {
+    node_ = before;
+    history_.pop_back();
+    node_changed();
+  };
   // An alias or acceptance also appears in a refused command's trace (the
   // alias read, then a guard refused): only an applied one is broken.
   const bool applied_only = info_role_needs_ok(broken);
@@ -413,15 +443,15 @@ FaultyAnswer FaultyNode::apply_breaking(const Command& c, Rule broken) {
           if (x != broken) return answer(r);
           break;
         }
-      node_ = before;
+      restore_before();
       return {true, ""};
     case RuleRole::Alias:
     case RuleRole::Accept:  // refuses what the rule lets through
-      node_ = before;
+      restore_before();
       return {false, "REJECTED"};
     case RuleRole::Place:
       if (broken == Rule::ElementIdSparse) {  // drops a large id, as a dense array would
-        node_ = before;
+        restore_before();
         return {false, "LIMIT"};
       }
       if (broken == Rule::LayerSlotsForStack) {
@@ -436,13 +466,14 @@ FaultyAnswer FaultyNode::apply_breaking(const Command& c, Rule broken) {
       break;
     case RuleRole::Keep:
       if (broken == Rule::RejectedChangesNothing) {  // a refused command still changes the vertex crease
-        node_.apply(cmd::CreaseSetVertex{node_.vertex_crease().layer, node_.vertex_crease().def_crease + 1});
+        apply_node(cmd::CreaseSetVertex{node_.vertex_crease().layer, node_.vertex_crease().def_crease + 1});
         return answer(r);
       }
       for (const auto& [lid, layer] : node_.layers()) {
         if (lid < 2) continue;
         const bool vertex_layer = is_vertex_layer_type(layer.type);
         Layer& l = const_cast<Layer&>(layer);  // test-only: reach into the node's storage
+        node_changed();
         if (broken == Rule::LayerRecreateKeepsSlots) {
           if (auto* x = std::get_if<cmd::LayerCreate>(&c); x && x->layer_id == lid)
             for (auto& [eid, slot] : l.slots) slot = default_slot(l);
@@ -486,6 +517,44 @@ std::string FaultyNode::rule_fault_snapshot(std::string text) const {
     out += l + "\n";
   }
   return out;
+}
+
+Reason FaultyNode::apply_node(const Command& c, RuleTrace* trace) {
+  const Reason r = node_.apply(c, trace, &changes_);
+  if (!digest_stale_) digest_.update(node_, changes_);
+  history_.push_back(c);
+  return r;
+}
+
+Node FaultyNode::replay(std::size_t n) const {
+  Node node;
+  for (std::size_t i = 0; i < n && i < history_.size(); ++i) node.apply(history_[i]);
+  return node;
+}
+
+bool FaultyNode::documents_rewritten() const {
+  if (!corrupted_.empty() || !hidden_.empty() || !ghosts_.empty()) return true;
+  // The derived rewrites, where they can change a line (as derived() does them).
+  const auto named = [this](const CreaseSetting& s, LayerType type) {
+    const Layer* l = s.layer.empty() ? nullptr : node_.find_layer_by_name(s.layer);
+    return l && l->type == type;
+  };
+  return (is("edge-crease-off-by-one") && named(node_.edge_crease(), LayerType::PolygonCornerUint32)) ||
+         (is("wrong-type-crease-layer-used") && named(node_.vertex_crease(), LayerType::VertexReal)) ||
+         (is("bone-rotation-not-inherited") && !node_.bones().empty());
+}
+
+bool FaultyNode::digest_cheap() const {
+  return !is("edge-crease-off-by-one") && !is("wrong-type-crease-layer-used") && !is("bone-rotation-not-inherited");
+}
+
+DocumentDigests FaultyNode::digests() {
+  if (documents_rewritten()) return digests_of(snapshot(), derived());
+  if (digest_stale_) {
+    digest_ = NodeDigest(node_);
+    digest_stale_ = false;
+  }
+  return digest_.digests();
 }
 
 std::string FaultyNode::snapshot() const { return rule_fault_snapshot(print_snapshot(node_)); }

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "command.h"
+#include "document_digest.h"
 #include "node.h"
 
 namespace vgc::faults {
@@ -62,6 +63,15 @@ class FaultyNode {
   // The optional capability requests (capability_documents.h), with the
   // capability faults applied.
   std::string request(const std::string& line) const;
+  // The digests of snapshot() and derived() (document_digest.h): kept up to
+  // date command by command while the documents are the node's own, read
+  // from the printed documents once a fault rewrites them.
+  DocumentDigests digests();
+  // Whether its digest is cheap to keep (every fault but those that rewrite
+  // the derived document: those are read from the printed documents, which
+  // costs their size after every command, so such a node offers no digest
+  // and is checked as a route without one).
+  bool digest_cheap() const;
 
  private:
   bool is(std::string_view name) const;
@@ -70,8 +80,22 @@ class FaultyNode {
   FaultyAnswer apply_breaking(const Command& c, Rule broken);
   std::string rule_fault_snapshot(std::string text) const;
   FaultyAnswer answer(Reason r) const;
+  // node_.apply, logged (history_) and followed by the digest.
+  Reason apply_node(const Command& c, RuleTrace* trace = nullptr);
+  // node_ replaced or reached into: the digest is computed again when next asked.
+  void node_changed() { digest_stale_ = true; }
+  // Whether a fault rewrites the documents the node prints now.
+  bool documents_rewritten() const;
+  // The node as the first `n` commands of history_ built it (the rule
+  // faults' state before a command, only when their rule fires: a copy of
+  // the node before every command would cost its size each time).
+  Node replay(std::size_t n) const;
   std::vector<int> faults_;  // indexes into fault_catalog(); every one is active
   Node node_;
+  std::vector<Command> history_;  // every command node_ was given (the rule faults' path)
+  NodeDigest digest_;
+  ChangeLog changes_;
+  bool digest_stale_ = false;
   // Rule-breaking faults' lasting effects on the printed snapshot, by line
   // identity ("slot 3 5"): a line shown changed, or hidden, while the node's
   // line still has the step recorded; a removed line still shown while the

@@ -1,0 +1,242 @@
+// program_checker.cpp — see program_checker.h.
+#include "program_checker.h"
+
+#include <utility>
+
+#include "command_text.h"
+#include "derived_document.h"
+#include "document_diff.h"
+#include "exercised_clauses.h"
+#include "snapshot.h"
+
+namespace vgc {
+namespace {
+
+// The digests stand for the documents only on a route that shows both
+// whole (RouteLimits): otherwise the documents are compared as the route
+// allows, step by step.
+bool digest_usable(Implementation& sut) {
+  const RouteLimits limits = sut.limits();
+  return limits.derived && limits.subscriptions && sut.offers_digest();
+}
+
+}  // namespace
+
+ProgramChecker::ProgramChecker(Implementation& sut, bool follow_choices, bool use_digest)
+    : sut_(sut), follow_choices_(follow_choices), digest_on_(use_digest && digest_usable(sut)) {}
+
+void ProgramChecker::allow_sparse_reading() {
+  if (!digest_on_ && applied_.empty()) sparse_ = true;
+}
+
+Node ProgramChecker::rebuild(std::size_t commands) const {
+  Node node;
+  for (std::size_t i = 0; i < commands && i < applied_.size(); ++i) node.apply(applied_[i]);
+  return node;
+}
+
+StepResult ProgramChecker::full_step(const Command& c, std::vector<DerivedChange>* derived_changed) {
+  Node after;
+  StepResult r = check_step(model_, c, sut_, &after, follow_choices_);
+  if (derived_changed && !r.failure && r.not_judged.empty()) *derived_changed = derived_changes(model_, after);
+  if (r.not_judged.empty()) {
+    applied_.push_back(r.model_command ? *r.model_command : c);
+    model_ = std::move(after);
+  }
+  return r;
+}
+
+StepResult ProgramChecker::step(const Command& c, std::vector<DerivedChange>* derived_changed) {
+  failed_at_ = -1;
+  if (!digest_on_ && !sparse_) return full_step(c, derived_changed);
+  StepResult result;
+  const Answer answer = sut_.apply(c);
+  const DocumentDigests digests_before = digest_.digests();
+  result.expected = model_.apply(c, &result.rules, &changes_);
+  applied_.push_back(c);
+  if (sparse_) sent_.push_back(c);
+  std::vector<DerivedChange> changed;
+  digest_.update(model_, changes_, &changed);
+  const bool answered = answer.status == CallStatus::Ok && !answer.not_sent && !answer.malformed;
+  const bool cheap = answered && answer.verdict_reported && answer.applied == (result.expected == Reason::Ok);
+  // Sparse reading: a `done` answer is judged by the next reading of the
+  // documents (bisection finds its command if they differ there).
+  if (sparse_ && answered && (cheap || !answer.verdict_reported)) {
+    result.verdict_reported = answer.verdict_reported;
+    if (derived_changed) *derived_changed = std::move(changed);
+    return sparse_step(c, answer, std::move(result));
+  }
+  // A `done` answer: check_step reads the verdict from the state, and
+  // judges the step right exactly when the state after it is the
+  // reference's, which equal digests stand for.
+  if (cheap || (answered && !answer.verdict_reported)) {
+    const DigestAnswer d = sut_.digest();
+    if (d.status != CallStatus::Ok) {
+      result.failure =
+          call_failure("STABLE-1", d.status, "reading the digest after `" + print_command(c) + "`", d.detail);
+      return result;
+    }
+    if (d.digests == digest_.digests()) {  // the documents agree: nothing more to read
+      result.verdict_reported = answer.verdict_reported;
+      result.implementation_unchanged = !answer.verdict_reported && d.digests == digests_before;
+      if (auto note = reason_note(c, result.expected, answer)) result.notes.push_back(std::move(*note));
+      if (derived_changed) *derived_changed = std::move(changed);
+      return result;
+    }
+  }
+  // Judged exactly as check_step judges it, from the state before `c`.
+  const Node before = rebuild(applied_.size() - 1);
+  StepResult r = judge_step(before, c, answer, std::move(result), sut_, &model_, follow_choices_);
+  if (!r.not_judged.empty()) {  // both sides stay at `before` (model_ is it again)
+    applied_.pop_back();
+    if (sparse_) sent_.pop_back();
+  }
+  if (r.model_command) applied_.back() = *r.model_command;
+  if (!r.not_judged.empty() || r.model_command) digest_ = NodeDigest(model_);
+  if (derived_changed && !r.failure && r.not_judged.empty()) *derived_changed = derived_changes(before, model_);
+  if (sparse_) {
+    // A difference at this command (its verdict, or the documents read now)
+    // may be the consequence of an older one, made since the last reading:
+    // the first prefix whose documents differ is found by bisection (which
+    // ends on this command when none before it differs).
+    if (r.failure && agreed_ + 1 < sent_.size()) {
+      const std::size_t now = sent_.size();
+      if (auto l = bisect(sent_, agreed_, now); l && l->index + 1 < static_cast<int>(now)) {
+        failed_at_ = l->index;
+        return std::move(l->step);
+      }
+    }
+    if (!r.failure && r.not_judged.empty() && r.verdict_reported) agreed_ = sent_.size();
+    return r;
+  }
+  // Documents that agree although the digests differ (a difference the
+  // comparison tolerates, e.g. bone poses within rounding): the digests
+  // would differ after every later command too, so the rest of the program
+  // is checked step by step.
+  if ((cheap || answer.verdict_reported == false) && answered && !r.failure) digest_on_ = false;
+  return r;
+}
+
+StepResult ProgramChecker::sparse_step(const Command& c, const Answer& answer, StepResult result) {
+  if (auto note = reason_note(c, result.expected, answer)) result.notes.push_back(std::move(*note));
+  const std::size_t elements = model_.vertices().size() + model_.polygons().size();
+  if (sent_.size() - agreed_ < std::max<std::size_t>(1, elements)) return result;  // not yet: the verdict only
+  std::optional<Finding> call;
+  std::string difference;
+  if (documents_agree(model_, &call, &difference)) {
+    agreed_ = sent_.size();
+    return result;
+  }
+  if (call) {
+    result.failure = call;
+    return result;
+  }
+  const std::size_t now = sent_.size();
+  if (auto l = bisect(sent_, agreed_, now)) {
+    if (l->index + 1 < static_cast<int>(now)) failed_at_ = l->index;
+    return std::move(l->step);
+  }
+  result.failure = Finding{"STABLE-1", FindingStatus::Fail,
+                           "after `" + print_command(c) + "` the documents differ from the reference's (" + difference +
+                               "), but sent again from a fresh node no command of the program makes them differ: "
+                               "the implementation does not repeat itself"};
+  return result;
+}
+
+bool ProgramChecker::documents_agree(const Node& model, std::optional<Finding>* call, std::string* difference) {
+  const RouteLimits limits = sut_.limits();
+  const Document snap = sut_.snapshot();
+  if (snap.status != CallStatus::Ok) {
+    *call = call_failure("STABLE-1", snap.status, "reading the snapshot", snap.detail);
+    return false;
+  }
+  const std::string expected = print_snapshot(model);
+  const auto d = limits.subscriptions
+                     ? diff_documents(expected, snap.text)
+                     : diff_documents(without_subscriptions(expected), without_subscriptions(snap.text));
+  if (d) {
+    *difference = "snapshot: " + d->describe();
+    return false;
+  }
+  if (!limits.derived) return true;
+  const Document derived = sut_.derived();
+  if (derived.status != CallStatus::Ok) {
+    *call = call_failure("STABLE-1", derived.status, "reading the derived document", derived.detail);
+    return false;
+  }
+  if (auto dd = diff_documents(print_derived(model), derived.text)) {
+    *difference = "derived: " + dd->describe();
+    return false;
+  }
+  return true;
+}
+
+std::optional<Localized> ProgramChecker::bisect(const std::vector<Command>& sent, std::size_t agreed,
+                                                std::size_t differs) {
+  if (sent.size() != applied_.size() || differs > sent.size() || agreed >= differs) return std::nullopt;
+  // Sends the first `n` commands to a fresh implementation; false when a call fails.
+  const auto send_prefix = [&](std::size_t n) {
+    if (sut_.reset().status != CallStatus::Ok) return false;
+    for (std::size_t i = 0; i < n; ++i)
+      if (sut_.apply(sent[i]).status != CallStatus::Ok) return false;
+    return true;
+  };
+  std::size_t lo = agreed, hi = differs;
+  while (hi - lo > 1) {
+    const std::size_t mid = lo + (hi - lo) / 2;
+    if (!send_prefix(mid)) return std::nullopt;
+    std::optional<Finding> call;
+    std::string difference;
+    const bool agree = documents_agree(rebuild(mid), &call, &difference);
+    if (call) return std::nullopt;
+    (agree ? lo : hi) = mid;
+  }
+  if (!send_prefix(hi - 1)) return std::nullopt;
+  const Node before = rebuild(hi - 1);
+  Node after;
+  StepResult r = check_step(before, sent[hi - 1], sut_, &after, follow_choices_);
+  if (!r.failure) return std::nullopt;
+  model_ = std::move(after);
+  applied_.resize(hi);
+  if (sparse_) sent_.resize(hi);
+  return Localized{std::move(r), static_cast<int>(hi - 1)};
+}
+
+void ProgramChecker::drop_last() {
+  if (applied_.empty()) return;
+  applied_.pop_back();
+  if (sparse_ && !sent_.empty()) sent_.pop_back();
+  agreed_ = std::min(agreed_, sent_.size());
+  model_ = rebuild(applied_.size());
+  digest_ = NodeDigest(model_);
+}
+
+std::optional<Localized> ProgramChecker::finish(const std::vector<Command>& sent) {
+  if (!digest_on_ && !sparse_) return std::nullopt;
+  if (sparse_ && agreed_ == sent_.size()) return std::nullopt;
+  const int last = static_cast<int>(sent.size()) - 1;
+  std::optional<Finding> call;
+  std::string difference;
+  if (documents_agree(model_, &call, &difference)) {
+    agreed_ = sent_.size();
+    return std::nullopt;
+  }
+  if (call) {
+    StepResult r;
+    r.failure = call;
+    return Localized{std::move(r), last};
+  }
+  if (auto l = bisect(sent, sparse_ ? agreed_ : 0, sent.size())) return l;
+  StepResult r;
+  Finding f;
+  f.clause = digest_on_ ? "ACCEPT-1" : "STABLE-1";
+  f.message = "after the last command the documents differ from the reference's (" + difference + ")" +
+              (digest_on_ ? " although every ?digest answer matched the reference's documents: the digest does "
+                            "not stand for the documents the implementation prints (docs/adapters.md ?digest)"
+                          : ", but sent again from a fresh node no command of the program makes them differ: the "
+                            "implementation does not repeat itself");
+  r.failure = f;
+  return Localized{std::move(r), last};
+}
+
+}  // namespace vgc

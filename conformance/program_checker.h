@@ -1,0 +1,112 @@
+// program_checker.h — a program checked command by command against the
+// reference, at the cost of what each command changed.
+//
+// Spec: the clauses check_step.h attributes (clause.h, 000 section 2.6);
+// the `?digest` request of docs/adapters.md (document_digest.h).
+//
+// Rationale (issue 21): check_step compares both whole documents after every
+// command, so a program of n commands costs n^2 (a 100,000-face mesh could
+// not be replayed or certified). When the implementation offers `?digest`,
+// ProgramChecker applies each command to its model in place, keeps the
+// model's digest up to date from what the command changed (NodeDigest), and
+// after each command compares only what is cheap: the call answered, the
+// verdict, and the two digests. Anything else (a different verdict or
+// digest, a `done` answer, a call that failed) is judged exactly as
+// check_step judges it, at that same command, from the state before it
+// (rebuilt from the commands the model applied: costs the program so far,
+// only then). So every divergence check_step finds is found at the same
+// command, with the same finding. After the last command, finish()
+// compares the whole documents once, so that an implementation whose
+// ?digest does not match what it prints cannot pass, and finds the command
+// where they came to differ by bisection. Without `?digest` every step is
+// check_step, as before, unless the caller allows sparse reading (below).
+#pragma once
+
+#include <optional>
+#include <vector>
+
+#include "check_step.h"
+#include "command.h"
+#include "document_digest.h"
+#include "implementation.h"
+#include "node.h"
+
+namespace vgc {
+
+// Where a program's documents first differ: the failing step's result and
+// its index in the program.
+struct Localized {
+  StepResult step;
+  int index = -1;
+};
+
+class ProgramChecker {
+ public:
+  // The model starts as a fresh node: the caller resets `sut` (check_fresh).
+  // follow_choices as check_step. use_digest false: every step is check_step.
+  ProgramChecker(Implementation& sut, bool follow_choices, bool use_digest = true);
+
+  // For long programs on a route without ?digest (a property at scale): the
+  // documents are read only every so often (once the commands since the
+  // last reading are as many as the model's elements, so reading costs the
+  // program's length in all), the verdict after every command. A
+  // difference found at a reading is localized by bisection: the
+  // implementation is reset and a prefix of the program sent again
+  // (log n times), and the first command whose prefix differs is judged by
+  // check_step. A difference that a later command hides before the next
+  // reading is not seen on such a route (with ?digest it is).
+  void allow_sparse_reading();
+
+  // Runs `c` on the model and on the implementation and compares them (as
+  // check_step). When derived_changed is not null it receives the derived
+  // lines the reference's step changed (for exercised_clauses). A failure
+  // found for an earlier command (sparse reading) says so: failed_at().
+  StepResult step(const Command& c, std::vector<DerivedChange>* derived_changed = nullptr);
+  // The index of the command the last failure belongs to (-1: the command
+  // just stepped).
+  int failed_at() const { return failed_at_; }
+
+  // The reference's state after the steps so far.
+  const Node& model() const { return model_; }
+  // The commands the model applied (a followed choice with its id written).
+  const std::vector<Command>& model_commands() const { return applied_; }
+  // Whether the steps so far compared digests.
+  bool used_digest() const { return digest_on_; }
+
+  // The model goes back to its state before the last step (the caller took
+  // that command out of the case); costs the program so far.
+  void drop_last();
+
+  // After the last step, when the documents were not compared after every
+  // command (digests, sparse reading): compares the whole documents once,
+  // and localizes a difference to its command (bisection). nullopt when
+  // they agree or every step compared them. `sent` is the program as sent.
+  std::optional<Localized> finish(const std::vector<Command>& sent);
+
+ private:
+  Node rebuild(std::size_t commands) const;  // a fresh node with the first `commands` of applied_
+  StepResult full_step(const Command& c, std::vector<DerivedChange>* derived_changed);
+  // A step whose answer is as the reference's (or `done`): the documents
+  // are read only when due.
+  StepResult sparse_step(const Command& c, const Answer& answer, StepResult result);
+  // Whether the implementation's documents equal `model`'s; *call the
+  // finding of a call that failed.
+  bool documents_agree(const Node& model, std::optional<Finding>* call, std::string* difference);
+  // The first command after `agreed` (a prefix length whose documents agree)
+  // up to `differs` whose prefix differs, judged; nullopt when none does.
+  std::optional<Localized> bisect(const std::vector<Command>& sent, std::size_t agreed, std::size_t differs);
+
+  Implementation& sut_;
+  bool follow_choices_;
+  bool digest_on_;
+  bool sparse_ = false;
+  std::size_t agreed_ = 0;          // sparse: the prefix length the documents last agreed at
+  std::vector<Command> sent_;       // sparse: the commands sent (for bisection)
+  int failed_at_ = -1;
+  Node model_;
+  NodeDigest digest_;
+  ChangeLog changes_;
+  std::vector<Command> applied_;
+};
+
+}  // namespace vgc
