@@ -72,6 +72,11 @@ struct CaseContext {
   // ... once this many cases ran (kSetAsideMinCases; 1 at scale, where a
   // case is a whole mesh and the property runs only a few).
   int set_aside_min_cases = kSetAsideMinCases;
+  // A case at scale (10^4 to 10^5 commands) sets a tolerated divergence
+  // aside instead of taking the command out: each take-out resets the
+  // implementation and replays the case so far, which at that size costs
+  // minutes on a slow route (r6's geometry code behind vgc_r6_exec).
+  bool no_take_out = false;
   // What the instance had been sent since it started when the round's first
   // call failure happened (confirm_finding.h), the failing case last.
   HistoryRecorder* recorder = nullptr;
@@ -169,7 +174,8 @@ bool reach_wanted() {
 bool take_step_out(const StepResult& r) {
   CaseContext& c = *g_context;
   const Finding& f = *r.failure;
-  if (f.status != FindingStatus::Fail || c.taken_out >= kMaxTakenOut || c.trace.empty() || !reach_wanted())
+  if (f.status != FindingStatus::Fail || c.no_take_out || c.taken_out >= kMaxTakenOut || c.trace.empty() ||
+      !reach_wanted())
     return false;
   note_tolerated(f);  // with the command still in the trace: the program that shows it
   c.trace.pop_back();
@@ -470,7 +476,7 @@ PropertyOutcome run_property(const PropertySpec& spec, Implementation& sut, cons
   ctx.tolerated = o.tolerated;
   ctx.baseline = o.tolerated;
   ctx.target = property_cases(spec, o.cases);
-  if (spec.at_scale) ctx.set_aside_min_cases = 1;
+  if (spec.at_scale) ctx.set_aside_min_cases = 1, ctx.no_take_out = true;
   ctx.exercised = &out.exercised;
   ctx.declared = &spec.clauses;
   ctx.derived_only = &out.derived_only;
