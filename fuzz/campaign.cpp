@@ -81,14 +81,6 @@ fs::path fuzz_build_dir(const CampaignOptions& o) {
   return own_build_dir().parent_path() / "build-fuzz";
 }
 
-std::string utc_stamp() {
-  const std::time_t t = std::time(nullptr);
-  std::tm tm{};
-  gmtime_r(&t, &tm);
-  char buf[32];
-  std::strftime(buf, sizeof buf, "%Y%m%dT%H%M%SZ", &tm);
-  return buf;
-}
 
 struct Progress {
   long long execs = 0, exec_s = 0, cov = 0, ft = 0, corp = 0, crashes = 0;
@@ -1280,6 +1272,16 @@ std::string summary_markdown(const CampaignSummary& s) {
     md += "\n";
   }
   return escape_unprintable(md);  // signatures and messages are the implementation's bytes
+}
+
+// The run directories' time stamp (UTC, to the second).
+std::string utc_stamp() {
+  const std::time_t t = std::time(nullptr);
+  std::tm tm{};
+  gmtime_r(&t, &tm);
+  char buf[32];
+  std::strftime(buf, sizeof buf, "%Y%m%dT%H%M%SZ", &tm);
+  return buf;
 }
 
 }  // namespace vgc::fuzz

@@ -147,6 +147,10 @@ int run_campaign(const CampaignOptions& o, CampaignSummary* out = nullptr);
 // The source tree and the libFuzzer build a campaign with these options
 // uses (the option, else $VGC_SOURCE_DIR / $VGC_FUZZ_BUILD_DIR, else the
 // configured source / build-fuzz beside this program's build).
+// The time stamp of run directory names: UTC, YYYYMMDDTHHMMSSZ (a soak's,
+// a campaign's and a wire campaign's).
+std::string utc_stamp();
+
 std::string campaign_source_dir(const CampaignOptions& o);
 std::string campaign_fuzz_build_dir(const CampaignOptions& o);
 

@@ -31,6 +31,8 @@
 #include "wire_commands.h"
 #include "wire_packet.h"
 
+#include "campaign.h"
+
 namespace vgc::fuzz {
 namespace {
 
@@ -675,15 +677,6 @@ Outcome check_after(Session* s, const WireInput& in, const std::vector<Command>&
   if (r.failure) return found(*r.failure);
   s->model = std::move(after);
   return out;
-}
-
-std::string utc_stamp() {
-  const std::time_t t = std::time(nullptr);
-  std::tm tm{};
-  gmtime_r(&t, &tm);
-  char buf[32];
-  std::strftime(buf, sizeof buf, "%Y%m%dT%H%M%SZ", &tm);
-  return buf;
 }
 
 struct WireFindingGroup {
