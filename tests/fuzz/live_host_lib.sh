@@ -4,13 +4,19 @@
 #     plugin:PLUGIN`; verse: starts `VGC serve --verse 127.0.0.1:0 --impl
 #     plugin:PLUGIN` (loopback, a free port) and records its pid in
 #     $host_pids, killed on exit. VGC_FAULT (exported) picks the fault.
-#   start_host VGC PLUGIN PORT   another host on PORT (the restart command).
+#   start_verse_host VGC PLUGIN ADDR LOG   one host (PLUGIN "": the
+#     reference) on ADDR, its port in $host_port, its pid in $host_pid.
 host_pids=""
 cleanup_hosts() { for p in $host_pids; do kill "$p" 2>/dev/null; done; }
 trap cleanup_hosts EXIT
-start_verse_host() {  # VGC PLUGIN ADDR LOGFILE -> sets $host_port
-  "$1" serve --verse "$3" --impl "plugin:$2" >"$4" 2>&1 &
-  host_pids="$host_pids $!"
+start_verse_host() {  # VGC PLUGIN ADDR LOGFILE -> sets $host_port and $host_pid; PLUGIN "": the reference
+  if [ -n "$2" ]; then
+    "$1" serve --verse "$3" --impl "plugin:$2" >"$4" 2>&1 &
+  else
+    "$1" serve --verse "$3" >"$4" 2>&1 &
+  fi
+  host_pid=$!
+  host_pids="$host_pids $host_pid"
   host_port=""
   for _ in $(seq 1 50); do
     host_port=$(sed -n 's/^vgc-verse listening [0-9.]*:\([0-9]*\).*/\1/p' "$4")

@@ -20,10 +20,8 @@ rm -rf "$work" && mkdir -p "$work"
 summary_of() { ls -t "$1"/reports/fuzz/wire/*/summary.json 2>/dev/null | head -1; }
 
 # 1. The reference host.
-"$vgc" serve --verse 127.0.0.1:0 >"$work/ref.log" 2>&1 &
-host_pids="$host_pids $!"
-for _ in $(seq 1 50); do ref_port=$(sed -n 's/^vgc-verse listening [0-9.]*:\([0-9]*\).*/\1/p' "$work/ref.log"); [ -n "$ref_port" ] && break; sleep 0.1; done
-[ -n "$ref_port" ] || fail "the reference host did not start"
+start_verse_host "$vgc" "" 127.0.0.1:0 "$work/ref.log" || fail "the reference host did not start"
+ref_port=$host_port
 "$vgc" fuzz wire --impl "verse:127.0.0.1:$ref_port" --time 60 --max-inputs 300 --source-dir "$work/ref" >"$work/ref.out" 2>&1
 rc=$?
 [ "$rc" -eq 0 ] || fail "against the reference host: exit $rc: $(tail -5 "$work/ref.out")"
@@ -58,10 +56,8 @@ printf '%s\n' "$r" | grep -q "^fail LAYER-NAME-1 (MUST)" || fail "vgc replay --w
 unset VGC_FAULT
 
 # 3. A host that dies during the campaign, no --restart.
-"$vgc" serve --verse 127.0.0.1:0 >"$work/dies.log" 2>&1 &
-dies=$!
-host_pids="$host_pids $dies"
-for _ in $(seq 1 50); do port=$(sed -n 's/^vgc-verse listening [0-9.]*:\([0-9]*\).*/\1/p' "$work/dies.log" 2>/dev/null); [ -n "$port" ] && break; sleep 0.1; done
+start_verse_host "$vgc" "" 127.0.0.1:0 "$work/dies.log" || fail "the host did not start"
+dies=$host_pid port=$host_port
 "$vgc" fuzz wire --impl "verse:127.0.0.1:$port" --time 30 --timeout 1 --source-dir "$work/dies" >"$work/dies.out" 2>&1 &
 campaign=$!
 sleep 1.5
@@ -80,10 +76,8 @@ assert s["wall_s"] < 25, s["wall_s"]
 PY
 
 # 4. The same with --restart: a new host on the same port; the campaign goes on.
-"$vgc" serve --verse 127.0.0.1:0 >"$work/dies2.log" 2>&1 &
-dies=$!
-host_pids="$host_pids $dies"
-for _ in $(seq 1 50); do port=$(sed -n 's/^vgc-verse listening [0-9.]*:\([0-9]*\).*/\1/p' "$work/dies2.log" 2>/dev/null); [ -n "$port" ] && break; sleep 0.1; done
+start_verse_host "$vgc" "" 127.0.0.1:0 "$work/dies2.log" || fail "the host did not start"
+dies=$host_pid port=$host_port
 cat >"$work/restart.sh" <<SCRIPT
 #!/usr/bin/env bash
 "$vgc" serve --verse 127.0.0.1:$port >"$work/restarted.log" 2>&1 &
