@@ -1,8 +1,8 @@
 // catmull_clark.cpp — see catmull_clark.h.
 #include "catmull_clark.h"
 
+#include <algorithm>
 #include <cstdint>
-#include <unordered_map>
 
 #include "crease_sharpness.h"
 #include "mesh_topology.h"
@@ -11,11 +11,6 @@ namespace vgc {
 namespace {
 
 using Vec3 = std::array<double, 3>;
-
-std::uint64_t edge_key(int a, int b) {
-  if (a > b) std::swap(a, b);
-  return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) | static_cast<std::uint32_t>(b);
-}
 
 void add_scaled(Vec3& acc, const Vec3& p, double w) {
   acc[0] += w * p[0];
@@ -64,24 +59,51 @@ int other_end(const std::array<int, 2>& e, int v) { return e[0] == v ? e[1] : e[
 
 }  // namespace
 
+// Edges by first appearance, without hashing: each edge is looked up among
+// the edges found so far at its end with fewer edge uses (a face side
+// touching it; ties: the lower index), held in a CSR table of (other end,
+// edge) slots sized by those uses. A lookup scans at most min(uses of a,
+// uses of b) slots, so a fan of 10^5 triangles costs its rim vertices' few
+// slots, not the hub's 10^5.
 void build_level_edges(SubdivisionLevel* level) {
   SubdivisionLevel& l = *level;
-  std::unordered_map<std::uint64_t, int> index;
-  index.reserve(l.face_vertices.size());
+  int nv = 0;
+  for (int v : l.face_vertices) nv = std::max(nv, v + 1);
+  std::vector<int> degree(static_cast<std::size_t>(nv), 0);  // edge uses: 2 per corner of a vertex
+  for (int v : l.face_vertices) degree[static_cast<std::size_t>(v)] += 2;
+  auto key_end = [&](int a, int b) {
+    const int da = degree[static_cast<std::size_t>(a)], db = degree[static_cast<std::size_t>(b)];
+    return da < db || (da == db && a < b) ? a : b;
+  };
+  // Slots of vertex v: [offset[v], offset[v] + used[v]), at most its uses.
+  std::vector<int> offset(static_cast<std::size_t>(nv) + 1, 0);
+  for (int v = 0; v < nv; ++v) offset[static_cast<std::size_t>(v) + 1] = offset[static_cast<std::size_t>(v)] + degree[static_cast<std::size_t>(v)];
+  std::vector<int> used(static_cast<std::size_t>(nv), 0);
+  std::vector<int> slot_other(2 * l.face_vertices.size()), slot_edge(2 * l.face_vertices.size());
   l.edges.clear();
+  l.edges.reserve(l.face_vertices.size() / 2 + 1);
   l.edge_face_count.clear();
+  l.edge_face_count.reserve(l.edges.capacity());
   l.face_edges.assign(l.face_vertices.size(), -1);
   for (int f = 0; f < l.face_count(); ++f) {
     const int n = l.face_sizes[f], o = l.face_offsets[f];
     for (int c = 0; c < n; ++c) {
       const int a = l.face_vertices[o + c], b = l.face_vertices[o + (c + 1) % n];
-      auto [it, inserted] = index.emplace(edge_key(a, b), l.edge_count());
-      if (inserted) {
+      const int k = key_end(a, b), other = k == a ? b : a;
+      const int first = offset[static_cast<std::size_t>(k)], end = first + used[static_cast<std::size_t>(k)];
+      int e = -1;
+      for (int s = first; s < end && e < 0; ++s)
+        if (slot_other[static_cast<std::size_t>(s)] == other) e = slot_edge[static_cast<std::size_t>(s)];
+      if (e < 0) {
+        e = l.edge_count();
         l.edges.push_back({a, b});
         l.edge_face_count.push_back(0);
+        slot_other[static_cast<std::size_t>(end)] = other;
+        slot_edge[static_cast<std::size_t>(end)] = e;
+        ++used[static_cast<std::size_t>(k)];
       }
-      l.face_edges[o + c] = it->second;
-      ++l.edge_face_count[static_cast<std::size_t>(it->second)];
+      l.face_edges[o + c] = e;
+      ++l.edge_face_count[static_cast<std::size_t>(e)];
     }
   }
 }
