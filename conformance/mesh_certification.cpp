@@ -129,6 +129,7 @@ RunResult mesh_run_result(const MeshCertification& m, const ObjMesh& mesh, const
   run.conformant = !m.any_failed();
   run.complete = true;
   const std::string found_by = "mesh";
+  const std::string origin = "The mesh's program, as vgc import writes it (a user's mesh is judged whole, not shrunk)";
   if (m.build_failure) {
     ClauseOutcome co;
     co.clause = find_clause(m.build_failure->clause);
@@ -136,6 +137,7 @@ RunResult mesh_run_result(const MeshCertification& m, const ObjMesh& mesh, const
     co.finding = m.build_failure;
     co.found_by = found_by + ".build";
     co.program = mesh.program;
+    co.program_origin = origin;
     co.exercised = 1;
     co.properties = {co.found_by};
     if (co.clause) run.clauses.push_back(std::move(co));
@@ -189,6 +191,7 @@ RunResult mesh_run_result(const MeshCertification& m, const ObjMesh& mesh, const
         co.finding = c.finding;
         co.found_by = prop;
         co.program.commands = mesh.program.commands;
+        co.program_origin = origin;
         co.program.request = CapabilityRequest{c.capability, c.level == 0 ? 1 : c.level, std::nullopt};
       }
     }

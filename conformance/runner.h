@@ -148,6 +148,10 @@ struct ClauseOutcome {
   std::optional<Finding> finding;
   Program program;
   bool tolerated_from_start = false;  // the finding is a baseline clause's, seen not shrunk
+  // What the program is when it was not drawn and shrunk by a property (a
+  // user's mesh, certify --mesh): the heading summary.md and report.html
+  // give it. Empty: shrunk, or tolerated_from_start.
+  std::string program_origin;
 };
 
 // Per command kind ("polygon_set_face_uint8"): how often judged steps sent

@@ -147,6 +147,7 @@ ClauseOutcome clause_from(const Clause& clause, const json& c) {
     co.found_by = c.value("found_by", std::string());
     co.seed = c.value("seed", std::uint64_t{0});
     co.tolerated_from_start = c.value("tolerated_from_start", false);
+    co.program_origin = c.value("program_origin", std::string());
     // What the implementation showed: report.html draws the finding from it.
     co.finding->shown_by = c.value("shown_by", std::string());
     co.finding->observed_document = c.value("observed_document", std::string());

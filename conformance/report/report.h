@@ -52,6 +52,9 @@ std::string counterexample_path(const ClauseOutcome& co);
 // the file that holds all of it.
 inline constexpr std::size_t kInlineCommands = 200;
 std::string inline_program(const ClauseOutcome& co);
+// What the inline program is, for its heading: "Shrunk counterexample",
+// the first program a tolerated clause was seen on, or program_origin.
+std::string counterexample_heading(const ClauseOutcome& co);
 // The one-line command that replays a counterexample file.
 std::string replay_command(const std::string& file, const std::string& implementation_spec);
 // The same for this run's implementation and environment (ctx).

@@ -90,6 +90,12 @@ std::string inline_program(const ClauseOutcome& co) {
          " in all: " + counterexample_path(co) + " holds every one) ...\n" + print_program(tail);
 }
 
+std::string counterexample_heading(const ClauseOutcome& co) {
+  if (!co.program_origin.empty()) return co.program_origin;
+  return co.tolerated_from_start ? "First program it was seen on (tolerated from the start, not shrunk)"
+                                 : "Shrunk counterexample";
+}
+
 std::string vgc_environment_prefix() {
   std::vector<std::string> vars;
   for (char** e = environ; e && *e; ++e) {

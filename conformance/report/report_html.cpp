@@ -139,10 +139,9 @@ void finding_section(pugi::xml_node parent, const ClauseOutcome& co, const Verdi
 
   const std::string file = (std::filesystem::path(ctx.run_dir) / counterexample_path(co)).string();
   auto h4 = add(sec, "h4");
-  add_text(h4, (co.tolerated_from_start ? "First program it was seen on (tolerated from the start, not shrunk)"
-                                        : "Shrunk counterexample") +
-                   std::string(" — ") + std::to_string(co.program.commands.size()) +
-                   " commands from a fresh node; found by " + co.found_by + ", seed " + std::to_string(co.seed) + " (");
+  add_text(h4, counterexample_heading(co) + " — " + std::to_string(co.program.commands.size()) +
+                   " commands from a fresh node; found by " + co.found_by +
+                   (co.program_origin.empty() ? ", seed " + std::to_string(co.seed) : std::string()) + " (");
   auto link = add(h4, "a", counterexample_path(co));
   link.append_attribute("href") = counterexample_path(co).c_str();
   add_text(h4, ")");

@@ -82,6 +82,7 @@ std::string render_report_json(const RunResult& run, const Verdict& v, const Rep
       for (const auto& cmd : co.program.commands) lines.push_back(print_command(cmd));
       c["counterexample_commands"] = lines;
       if (co.tolerated_from_start) c["tolerated_from_start"] = true;
+      if (!co.program_origin.empty()) c["program_origin"] = co.program_origin;
       // What the implementation showed (report.html's picture is drawn from
       // it; `vgc merge` reads it back): the document or capability request,
       // its whole text, the first differing lines.

@@ -65,10 +65,10 @@ std::string render_summary(const RunResult& run, const Verdict& v, const ReportC
       out += fmt::format("**What the implementation did:** {}\n\n", co.finding->message);
       if (ctx.baseline && ctx.baseline->reasons.count(std::string(co.clause->id)))
         out += fmt::format("Baseline says: {}\n\n", ctx.baseline->reasons.at(std::string(co.clause->id)));
-      out += fmt::format("{} ({} commands, from a fresh node; found by `{}`, seed {}):\n\n```\n{}```\n\n",
-                         co.tolerated_from_start ? "First program it was seen on (tolerated from the start, not shrunk)"
-                                                 : "Shrunk counterexample",
-                         co.program.commands.size(), co.found_by, co.seed, inline_program(co));
+      const std::string drawn = co.program_origin.empty() ? fmt::format(", seed {}", co.seed) : "";
+      out += fmt::format("{} ({} commands, from a fresh node; found by `{}`{}):\n\n```\n{}```\n\n",
+                         counterexample_heading(co), co.program.commands.size(), co.found_by, drawn,
+                         inline_program(co));
       out += fmt::format("Replay: `{}`\n\n", replay_command(file, ctx));
     }
   };

@@ -60,6 +60,10 @@ run=$(sed -n 's/^report: \(.*\)\/summary.md$/\1/p' skew.out)
 [ -s "$run/report.json" ] && [ -s "$run/counterexamples/SUBD-CATMARK-1.vgc" ] || fail "skew: no run directory written"
 grep -q 'class="divergent-expected"' "$run/report.html" || fail "skew: report.html draws no divergent point"
 grep -q '"id": "mesh.subdivision.level1"' "$run/report.json" || fail "skew: report.json has no per-level check"
+# The mesh is judged whole: its program is not called shrunk nor given a seed.
+grep -q "^The mesh's program, as vgc import writes it (a user's mesh is judged whole, not shrunk) (25 commands, from a fresh node; found by \`mesh.subdivision.level1\`):" \
+  "$run/summary.md" || fail "skew: summary.md does not say the program is the mesh's own"
+grep -q 'Shrunk counterexample' "$run/summary.md" "$run/report.html" && fail "skew: the mesh's program is called shrunk"
 
 VGC_FAULT=classify-misses-boundary "$vgc" certify --mesh grid.obj --impl "plugin:$requests" >classify.out 2>&1
 echo $? >classify.rc
