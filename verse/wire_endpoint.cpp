@@ -169,7 +169,7 @@ std::vector<std::string> Channel::take_datagrams(Clock::time_point now) {
     std::size_t used = 4;
     while (!ack_nak_.empty() && used + 5 <= kMaxSendPacketBytes) {
       (void)encode_command(ack_nak_.front(), &acks);
-      ack_nak_.erase(ack_nak_.begin());
+      ack_nak_.pop_front();
       used += 5;
     }
     while (!queue_.empty() && history_bytes_ + commands.size() < kWindowBytes &&

@@ -143,7 +143,7 @@ class Channel {
   std::deque<Queued> queue_;
   std::map<std::uint32_t, Sent> history_;
   std::size_t history_bytes_ = 0;
-  std::vector<WireCommand> ack_nak_;  // to send
+  std::deque<WireCommand> ack_nak_;  // to send, taken from the front
   Clock::time_point last_heard_;
   Counters counters_;
   std::function<void(const std::uint8_t*, std::size_t)> tap_;
