@@ -181,9 +181,9 @@ std::string rerun_command(const Options& o) {
 // `vgc certify --mesh FILE.obj`: the mesh (obj_import.h) built on a fresh
 // instance and on the reference, then each claimed derived-geometry
 // capability judged per level (mesh_certification.h). Prints one line per
-// check; exit 0 every judged check passes, 1 a failure (or the mesh could
-// not be built as the reference builds it), 2 the file is bad or nothing
-// could be judged. The run directory under --reports has the usual files
+// check; exit 0 the mesh was stored as the reference stores it and every
+// judged check passes, 1 a failure (or the mesh could not be built as the
+// reference builds it), 2 the file is bad or nothing could be judged. The run directory under --reports has the usual files
 // (one "property" per check and level).
 int run_mesh(const Options& o) {
   if (o.levels < 1 || o.levels > 4)
@@ -235,13 +235,15 @@ int run_mesh(const Options& o) {
     say("  {:<11} {:<18} {:<20} {:>6.2f} s  {}\n", c.status, c.clause, what, c.seconds,
         detail.size() > 300 ? detail.substr(0, 300) + "..." : detail);
   }
+  const bool checks_judged = tally.count("pass") || tally.count("fail");
   std::string counts;
   for (const auto& [status, n] : tally) counts += fmt::format("{}{} {}", counts.empty() ? "" : ", ", n, status);
+  if (!r.build_failure) counts += std::string(counts.empty() ? "" : "; ") + "stored as the reference stores it";
   const char* verdict_name = r.any_failed() ? "not conformant" : r.any_judged() ? "conformant" : "incomplete";
   say("{}: {} on {} ({})\n", o.impl, verdict_name, o.mesh, counts.empty() ? "no check run" : counts);
-  if (!r.any_failed() && !r.any_judged())
-    say("  nothing was judged: the implementation claims none of manifold, subdivision, normals, loop "
-        "(docs/adapters.md section 5)\n");
+  if (!r.any_failed() && !checks_judged)
+    say("  only the storage of the mesh was judged: the implementation claims none of manifold, subdivision, "
+        "normals, loop (docs/adapters.md section 5)\n");
   say("report: {}/summary.md\n", ctx.run_dir);
   return r.any_failed() ? 1 : r.any_judged() ? 0 : 2;
 }

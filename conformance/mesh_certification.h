@@ -49,6 +49,8 @@ struct MeshCertification {
   std::size_t commands = 0;
   double build_seconds = 0;
   std::vector<MeshCheckOutcome> checks;
+  // The build is itself judged (the storage of the whole mesh): true when it
+  // ran and matched the reference, or when any check passed or failed.
   bool any_judged() const;
   bool any_failed() const;
 };
@@ -61,7 +63,11 @@ MeshCertification certify_mesh(const ObjMesh& mesh, Implementation& sut, int lev
 // failed: the finding of the first, its program the mesh's commands and
 // the capability check; pass when every judged level passed; not-claimed,
 // or unchecked when no level could be judged). A mesh the implementation
-// did not build as the reference is the build finding's clause, failed.
+// did not build as the reference is the build finding's clause, failed;
+// one it built is "mesh.build", passed, with VERTEX-SET-1 and
+// POLY-CORNERS-1 (the storage a difference would be blamed on) passed. A
+// route that reports no verdicts (the Verse wire) is judged by the snapshot
+// at the end alone.
 RunResult mesh_run_result(const MeshCertification& m, const ObjMesh& mesh, const std::string& implementation,
                           double seconds);
 

@@ -8,7 +8,9 @@
 # answers are skewed (subdivision_skew_proxy.py) fails SUBD-CATMARK-1 at
 # levels 1 and 2 and nothing else (exit 1); the fault plugin with
 # classify-misses-boundary fails MESH-CLASSIFY-1; a plugin claiming no
-# capability has nothing judged (exit 2). The skewed run's directory holds
+# capability has only the mesh's storage judged (exit 0); a node dropping ids
+# past a storage bound fails VERTEX-SET-1 on a 66 x 66 grid; over the Verse
+# wire (vgc serve --verse) the build is judged by the snapshot alone. The skewed run's directory holds
 # the report, its picture marking the divergent refined points.
 set -uo pipefail
 [ $# -ge 3 ] || { echo "usage: $0 VGC REQUESTS_PLUGIN PLAIN_PLUGIN" >&2; exit 2; }
@@ -54,7 +56,7 @@ check ref 0 '^  pass +MESH-CLASSIFY-1 +manifold' '^  pass +NORMALS-SPLIT-1 +norm
 "$vgc" certify --mesh grid.obj --levels 2 --impl "exec:$here/subdivision_skew_proxy.py $vgc" --reports R \
   >skew.out 2>&1; echo $? >skew.rc
 check skew 1 '^  fail +SUBD-CATMARK-1 +subdivision level 1 .*OpenSubdiv' '^  fail +SUBD-CATMARK-1 +subdivision level 2' \
-  '^  pass +MESH-CLASSIFY-1' '^  pass +NORMALS-SPLIT-1' 'not conformant on grid.obj \(2 fail, 2 pass\)'
+  '^  pass +MESH-CLASSIFY-1' '^  pass +NORMALS-SPLIT-1' 'not conformant on grid.obj \(2 fail, 2 pass; stored as the reference stores it\)'
 # Its run directory: the finding with the picture of the refined points.
 run=$(sed -n 's/^report: \(.*\)\/summary.md$/\1/p' skew.out)
 [ -s "$run/report.json" ] && [ -s "$run/counterexamples/SUBD-CATMARK-1.vgc" ] || fail "skew: no run directory written"
@@ -69,6 +71,27 @@ VGC_FAULT=classify-misses-boundary "$vgc" certify --mesh grid.obj --impl "plugin
 echo $? >classify.rc
 check classify 1 '^  fail +MESH-CLASSIFY-1 +manifold .*boundary_loops' '^  pass +SUBD-CATMARK-1 +subdivision level 2'
 
+# A plugin claiming no capability: the storage of the mesh is still judged.
 "$vgc" certify --mesh grid.obj --impl "plugin:$plain" >plain.out 2>&1; echo $? >plain.rc
-check plain 2 '^  not-claimed +SUBD-CATMARK-1' 'incomplete on grid.obj' 'nothing was judged'
+check plain 0 '^  built +the mesh: 25 commands, the same snapshot' '^  not-claimed +SUBD-CATMARK-1' \
+  'conformant on grid.obj \(4 not-claimed; stored as the reference stores it\)' 'only the storage of the mesh was judged'
+run=$(sed -n 's/^report: \(.*\)\/summary.md$/\1/p' plain.out)
+grep -q '"id": "mesh.build"' "$run/report.json" || fail "plain: report.json has no mesh.build check"
+
+# A node that drops ids past a storage bound (4,129, as the r6 host's):
+# a 66 x 66 grid's last vertices are lost, and the final snapshot shows it.
+for j in $(seq 0 65); do for i in $(seq 0 65); do echo "v $i $j 0"; done; done >big.obj
+for j in $(seq 0 64); do for i in $(seq 0 64); do
+  a=$((j * 66 + i + 1)); echo "f $a $((a + 1)) $((a + 67)) $((a + 66))"
+done; done >>big.obj
+VGC_FAULT=ids-past-storage-bound "$vgc" certify --mesh big.obj --levels 1 --impl "plugin:$requests" >bound.out 2>&1
+echo $? >bound.rc
+check bound 1 '^  fail +VERTEX-SET-1 +building the mesh \(8581 commands.*snapshot differs' 'not conformant on big.obj'
+
+# The Verse wire route reports no verdicts: the build is judged by the
+# snapshot alone (it was failed at the first command: "observed rejected").
+. "$here/../fuzz/live_host_lib.sh"
+start_verse_host "$vgc" "" 127.0.0.1:0 host.log || fail "vgc serve --verse did not start"
+"$vgc" certify --mesh grid.obj --levels 1 --impl "verse:127.0.0.1:$host_port" >verse.out 2>&1; echo $? >verse.rc
+check verse 0 '^  built +the mesh: 25 commands, the same snapshot' 'conformant on grid.obj'
 echo "certify_mesh: import and certify --mesh judge a user's mesh per capability and level; faults are caught"
