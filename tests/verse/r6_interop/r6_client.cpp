@@ -33,6 +33,7 @@ extern "C" {
 #include "verse.h"
 }
 
+#include "r6_callbacks.h"
 #include "r6_tap.h"
 
 namespace {
@@ -223,41 +224,17 @@ void cb_bone_destroy(void*, VNodeID node, uint16 bone) {
 }
 
 void register_callbacks() {
-  verse_callback_set(reinterpret_cast<void*>(verse_send_connect_accept), reinterpret_cast<void*>(cb_accept), nullptr);
-#define VGC_R6_CB(send, cb) verse_callback_set(reinterpret_cast<void*>(send), reinterpret_cast<void*>(cb), nullptr)
-  VGC_R6_CB(verse_send_connect_terminate, cb_terminate);
-  VGC_R6_CB(verse_send_node_index_subscribe, cb_node_index_subscribe);
-  VGC_R6_CB(verse_send_node_create, cb_node_create);
-  VGC_R6_CB(verse_send_node_destroy, cb_node_destroy);
-  VGC_R6_CB(verse_send_node_subscribe, cb_node_subscribe);
-  VGC_R6_CB(verse_send_node_unsubscribe, cb_node_unsubscribe);
-  VGC_R6_CB(verse_send_tag_group_create, cb_tag_group_create);
-  VGC_R6_CB(verse_send_tag_group_destroy, cb_tag_group_destroy);
-  VGC_R6_CB(verse_send_node_name_set, cb_node_name_set);
-  VGC_R6_CB(verse_send_g_layer_create, cb_layer_create);
-  VGC_R6_CB(verse_send_g_layer_destroy, cb_layer_destroy);
-  VGC_R6_CB(verse_send_g_layer_subscribe, cb_layer_subscribe);
-  VGC_R6_CB(verse_send_g_layer_unsubscribe, cb_layer_unsubscribe);
-  VGC_R6_CB(verse_send_g_vertex_set_xyz_real32, cb_xyz32);
-  VGC_R6_CB(verse_send_g_vertex_delete_real32, cb_vdel32);
-  VGC_R6_CB(verse_send_g_vertex_set_xyz_real64, cb_xyz64);
-  VGC_R6_CB(verse_send_g_vertex_delete_real64, cb_vdel64);
-  VGC_R6_CB(verse_send_g_vertex_set_uint32, cb_vuint);
-  VGC_R6_CB(verse_send_g_vertex_set_real64, cb_vreal64);
-  VGC_R6_CB(verse_send_g_vertex_set_real32, cb_vreal32);
-  VGC_R6_CB(verse_send_g_polygon_set_corner_uint32, cb_corner_uint);
-  VGC_R6_CB(verse_send_g_polygon_delete, cb_pdel);
-  VGC_R6_CB(verse_send_g_polygon_set_corner_real64, cb_corner64);
-  VGC_R6_CB(verse_send_g_polygon_set_corner_real32, cb_corner32);
-  VGC_R6_CB(verse_send_g_polygon_set_face_uint8, cb_face_u8);
-  VGC_R6_CB(verse_send_g_polygon_set_face_uint32, cb_face_u32);
-  VGC_R6_CB(verse_send_g_polygon_set_face_real64, cb_face64);
-  VGC_R6_CB(verse_send_g_polygon_set_face_real32, cb_face32);
-  VGC_R6_CB(verse_send_g_crease_set_vertex, cb_crease_vertex);
-  VGC_R6_CB(verse_send_g_crease_set_edge, cb_crease_edge);
-  VGC_R6_CB(verse_send_g_bone_create, cb_bone_create);
-  VGC_R6_CB(verse_send_g_bone_destroy, cb_bone_destroy);
-#undef VGC_R6_CB
+  VGC_R6_NODE_CALLBACKS(VGC_R6_REGISTER)
+  VGC_R6_GEOMETRY_CALLBACKS(VGC_R6_REGISTER)
+  // What only the recording client takes.
+  VGC_R6_REGISTER(verse_send_node_index_subscribe, cb_node_index_subscribe)
+  VGC_R6_REGISTER(verse_send_node_destroy, cb_node_destroy)
+  VGC_R6_REGISTER(verse_send_node_subscribe, cb_node_subscribe)
+  VGC_R6_REGISTER(verse_send_node_unsubscribe, cb_node_unsubscribe)
+  VGC_R6_REGISTER(verse_send_tag_group_create, cb_tag_group_create)
+  VGC_R6_REGISTER(verse_send_tag_group_destroy, cb_tag_group_destroy)
+  VGC_R6_REGISTER(verse_send_g_layer_subscribe, cb_layer_subscribe)
+  VGC_R6_REGISTER(verse_send_g_layer_unsubscribe, cb_layer_unsubscribe)
 }
 
 // ---- bounded waiting ----

@@ -42,6 +42,7 @@ extern "C" {
 #include "command_text.h"
 #include "derived_document.h"
 #include "node.h"
+#include "r6_callbacks.h"
 #include "r6_tap.h"
 #include "snapshot.h"
 #include "verse_node_mirror.h"
@@ -94,7 +95,8 @@ void cb_xyz32(void*, VNodeID n, VLayerID l, uint32 v, real32 x, real32 y, real32
 void cb_xyz64(void*, VNodeID n, VLayerID l, uint32 v, real64 x, real64 y, real64 z) {
   take(n, vgc::cmd::VertexSetXyzReal64{l, v, x, y, z});
 }
-void cb_vdel(void*, VNodeID n, uint32 v) { take(n, vgc::cmd::VertexDelete{v}); }
+void cb_vdel32(void*, VNodeID n, uint32 v) { take(n, vgc::cmd::VertexDelete{v}); }
+void cb_vdel64(void*, VNodeID n, uint32 v) { take(n, vgc::cmd::VertexDelete{v}); }
 void cb_vuint(void*, VNodeID n, VLayerID l, uint32 v, uint32 value) { take(n, vgc::cmd::VertexSetUint32{l, v, value}); }
 void cb_vreal64(void*, VNodeID n, VLayerID l, uint32 v, real64 value) {
   take(n, vgc::cmd::VertexSetReal64{l, v, value});
@@ -128,33 +130,8 @@ void cb_bone_create(void*, VNodeID n, uint16 bone, const char* weight, const cha
 void cb_bone_destroy(void*, VNodeID n, uint16 bone) { take(n, vgc::cmd::BoneDestroy{bone}); }
 
 void register_callbacks() {
-#define VGC_R6_CB(send, cb) verse_callback_set(reinterpret_cast<void*>(send), reinterpret_cast<void*>(cb), nullptr)
-  VGC_R6_CB(verse_send_connect_accept, cb_accept);
-  VGC_R6_CB(verse_send_connect_terminate, cb_terminate);
-  VGC_R6_CB(verse_send_node_create, cb_node_create);
-  VGC_R6_CB(verse_send_node_name_set, cb_node_name_set);
-  VGC_R6_CB(verse_send_g_layer_create, cb_layer_create);
-  VGC_R6_CB(verse_send_g_layer_destroy, cb_layer_destroy);
-  VGC_R6_CB(verse_send_g_vertex_set_xyz_real32, cb_xyz32);
-  VGC_R6_CB(verse_send_g_vertex_delete_real32, cb_vdel);
-  VGC_R6_CB(verse_send_g_vertex_set_xyz_real64, cb_xyz64);
-  VGC_R6_CB(verse_send_g_vertex_delete_real64, cb_vdel);
-  VGC_R6_CB(verse_send_g_vertex_set_uint32, cb_vuint);
-  VGC_R6_CB(verse_send_g_vertex_set_real64, cb_vreal64);
-  VGC_R6_CB(verse_send_g_vertex_set_real32, cb_vreal32);
-  VGC_R6_CB(verse_send_g_polygon_set_corner_uint32, cb_corner_uint);
-  VGC_R6_CB(verse_send_g_polygon_delete, cb_pdel);
-  VGC_R6_CB(verse_send_g_polygon_set_corner_real64, cb_corner64);
-  VGC_R6_CB(verse_send_g_polygon_set_corner_real32, cb_corner32);
-  VGC_R6_CB(verse_send_g_polygon_set_face_uint8, cb_face_u8);
-  VGC_R6_CB(verse_send_g_polygon_set_face_uint32, cb_face_u32);
-  VGC_R6_CB(verse_send_g_polygon_set_face_real64, cb_face64);
-  VGC_R6_CB(verse_send_g_polygon_set_face_real32, cb_face32);
-  VGC_R6_CB(verse_send_g_crease_set_vertex, cb_crease_vertex);
-  VGC_R6_CB(verse_send_g_crease_set_edge, cb_crease_edge);
-  VGC_R6_CB(verse_send_g_bone_create, cb_bone_create);
-  VGC_R6_CB(verse_send_g_bone_destroy, cb_bone_destroy);
-#undef VGC_R6_CB
+  VGC_R6_NODE_CALLBACKS(VGC_R6_REGISTER)
+  VGC_R6_GEOMETRY_CALLBACKS(VGC_R6_REGISTER)
 }
 
 // ---- bounded waits ----
