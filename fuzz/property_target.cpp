@@ -41,6 +41,7 @@ namespace {
 constexpr const char* kProperty = VGC_FUZZ_PROPERTY;
 std::unique_ptr<vgc::Implementation> g_sut;
 vgc::Focus g_focus = vgc::Focus::Anything;
+vgc::DrawMemo g_memo;  // the previous input's draws (byte_cases.h): same commands, drawn once
 
 void init() {
   if (!vgc::focus_of_property(kProperty, &g_focus)) {
@@ -67,7 +68,7 @@ void init() {
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   if (!g_sut) init();
   std::vector<vgc::Command> program;
-  if (auto f = vgc::check_byte_case(data, size, g_focus, *g_sut, &program)) {
+  if (auto f = vgc::check_byte_case(data, size, g_focus, *g_sut, &program, &g_memo)) {
     const vgc::Clause* clause = vgc::find_clause(f->clause);
     const std::string what = std::string(kProperty) + ": " + f->clause + " (" +
                              std::string(clause ? vgc::clause_level_name(clause->level) : "?") + ", " +

@@ -14,18 +14,18 @@ std::string u16(std::uint16_t v) { return format_uint(v, 16); }
 
 // The values one slot of `type` holds, space-separated (2.6.1 Table 2-1:
 // "Values per Index").
-std::string slot_values(LayerType type, const Slot& s) {
-  std::string out;
+// Appends a slot's values, each after a space: the fields `type` gives it.
+void append_slot_values(std::string* out, LayerType type, const Slot& s) {
   auto reals = [&](int n) {
     for (int i = 0; i < n; ++i) {
-      out += ' ';
-      out += format_f64(s.r[i]);
+      *out += ' ';
+      *out += format_f64(s.r[i]);
     }
   };
   auto uints = [&](int n, int bits) {
     for (int i = 0; i < n; ++i) {
-      out += ' ';
-      out += format_uint(s.u[i], bits);
+      *out += ' ';
+      *out += format_uint(s.u[i], bits);
     }
   };
   switch (type) {
@@ -38,7 +38,46 @@ std::string slot_values(LayerType type, const Slot& s) {
     case LayerType::PolygonFaceUint32: uints(1, 32); break;
     case LayerType::PolygonFaceReal: reals(1); break;
   }
-  return out;
+}
+
+// Appends snapshot_slot_line's line. print_snapshot appends every slot
+// line to the one document string this way rather than concatenating a
+// string per line: slot lines are most of a snapshot, and the fuzz targets
+// print one or two snapshots per input.
+void append_slot_line(std::string* out, std::uint16_t layer_id, LayerType type, std::uint32_t element,
+                      const Slot& slot) {
+  if (layer_id == Node::kVertexLayer) {
+    *out += "vertex ";
+    type = LayerType::VertexXyz;
+  } else if (layer_id == Node::kPolygonLayer) {
+    *out += "polygon ";
+    type = LayerType::PolygonCornerUint32;
+  } else {
+    *out += "slot ";
+    *out += u16(layer_id);
+    *out += ' ';
+  }
+  *out += u32(element);
+  append_slot_values(out, type, slot);
+  *out += '\n';
+}
+
+// Appends snapshot_layer_line's line (as append_slot_line, for the same reason).
+void append_layer_line(std::string* out, std::uint16_t id, const Layer& layer) {
+  const UsedDefaults used = used_defaults(id, layer.type);
+  *out += "layer ";
+  *out += u16(id);
+  *out += ' ';
+  *out += format_quoted(layer.name);
+  *out += ' ';
+  *out += layer_type_name(static_cast<std::uint8_t>(layer.type));
+  *out += ' ';
+  *out += used.def_uint ? u32(layer.def_uint) : "-";
+  *out += ' ';
+  *out += used.def_real ? format_f64(layer.def_real) : "-";
+  *out += ' ';
+  *out += !layer.subscription ? "-" : *layer.subscription == RealFormat::Real32 ? "REAL32" : "REAL64";
+  *out += '\n';
 }
 
 }  // namespace
@@ -92,11 +131,9 @@ std::string print_snapshot(const Node& node) {
 }
 
 std::string snapshot_layer_line(std::uint16_t id, const Layer& layer) {
-  const UsedDefaults used = used_defaults(id, layer.type);
-  return "layer " + u16(id) + " " + format_quoted(layer.name) + " " +
-         std::string(layer_type_name(static_cast<std::uint8_t>(layer.type))) + " " +
-         (used.def_uint ? u32(layer.def_uint) : "-") + " " + (used.def_real ? format_f64(layer.def_real) : "-") +
-         " " + (!layer.subscription ? "-" : *layer.subscription == RealFormat::Real32 ? "REAL32" : "REAL64") + "\n";
+  std::string line;
+  append_layer_line(&line, id, layer);
+  return line;
 }
 
 std::string snapshot_crease_lines(const CreaseSetting& vertex, const CreaseSetting& edge) {
@@ -105,10 +142,9 @@ std::string snapshot_crease_lines(const CreaseSetting& vertex, const CreaseSetti
 }
 
 std::string snapshot_slot_line(std::uint16_t layer_id, LayerType type, std::uint32_t element, const Slot& slot) {
-  if (layer_id == Node::kVertexLayer) return "vertex " + u32(element) + slot_values(LayerType::VertexXyz, slot) + "\n";
-  if (layer_id == Node::kPolygonLayer)
-    return "polygon " + u32(element) + slot_values(LayerType::PolygonCornerUint32, slot) + "\n";
-  return "slot " + u16(layer_id) + " " + u32(element) + slot_values(type, slot) + "\n";
+  std::string line;
+  append_slot_line(&line, layer_id, type, element, slot);
+  return line;
 }
 
 std::string snapshot_bone_line(std::uint16_t id, const Bone& b) {
@@ -129,15 +165,15 @@ std::string print_snapshot(const SnapshotParts& node) {
   };
   std::string out = kSnapshotHeader;
   out.reserve(4096);
-  for (const auto& [id, layer] : node.layers) out += snapshot_layer_line(id, layer);
+  for (const auto& [id, layer] : node.layers) append_layer_line(&out, id, layer);
   out += snapshot_crease_lines(node.vertex_crease, node.edge_crease);
   for (const auto& [id, slot] : slots_of(Node::kVertexLayer))
-    out += snapshot_slot_line(Node::kVertexLayer, LayerType::VertexXyz, id, slot);
+    append_slot_line(&out, Node::kVertexLayer, LayerType::VertexXyz, id, slot);
   for (const auto& [id, slot] : slots_of(Node::kPolygonLayer))
-    out += snapshot_slot_line(Node::kPolygonLayer, LayerType::PolygonCornerUint32, id, slot);
+    append_slot_line(&out, Node::kPolygonLayer, LayerType::PolygonCornerUint32, id, slot);
   for (const auto& [lid, layer] : node.layers) {
     if (lid == Node::kVertexLayer || lid == Node::kPolygonLayer) continue;
-    for (const auto& [element, slot] : layer.slots) out += snapshot_slot_line(lid, layer.type, element, slot);
+    for (const auto& [element, slot] : layer.slots) append_slot_line(&out, lid, layer.type, element, slot);
   }
   for (const auto& [id, b] : node.bones) out += snapshot_bone_line(id, b);
   out += "end\n";
