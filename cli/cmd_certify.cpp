@@ -116,6 +116,10 @@ bool reports_writable(const std::string& dir, std::string* why) {
   };
   for (int attempt = 0;; ++attempt) {
     fs::create_directories(p, ec);
+    // Another run checking the same --reports at once may remove a parent
+    // it created between our creating and our looking (its undo): again.
+    const bool vanished = ec ? ec == std::errc::no_such_file_or_directory : !fs::is_directory(p);
+    if (vanished && attempt < 10) continue;
     if (ec || !fs::is_directory(p)) {
       *why = ec ? ec.message() : "not a directory";
       undo();
@@ -123,7 +127,7 @@ bool reports_writable(const std::string& dir, std::string* why) {
     }
     const fs::path probe = p / (".vgc-write-probe." + std::to_string(::getpid()));
     const int fd = ::open(probe.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0600);
-    if (fd < 0 && errno == ENOENT && attempt < 3) continue;  // another run's undo removed it meanwhile
+    if (fd < 0 && errno == ENOENT && attempt < 10) continue;  // another run's undo removed it meanwhile
     if (fd < 0) {
       *why = std::string("cannot create a file there: ") + std::strerror(errno);
       undo();

@@ -60,12 +60,20 @@ std::string default_run_dir(const std::string& reports_root, const RunResult& ru
 bool claim_run_dir(const std::string& reports_root, const RunResult& run, ReportContext* ctx, std::string* error) {
   const fs::path base(default_run_dir(reports_root, run, *ctx));
   std::error_code ec;
-  fs::create_directories(base.parent_path(), ec);
   fs::path dir = base;
-  // One mkdir claims a name: a run started in the same second with the same
-  // seed (a CI matrix, a script) gets -2, -3, ... instead of sharing it.
-  for (int k = 2; !ec && !fs::create_directory(dir, ec) && !ec && k < 10000; ++k)
-    dir = base.string() + "-" + std::to_string(k);
+  // A parent can vanish between its creation and our mkdir: a run checking
+  // the same --reports at once (cmd_certify's reports_writable) removes the
+  // empty directories it created for its check. Then again, a few times.
+  for (int attempt = 0; attempt < 10; ++attempt) {
+    ec.clear();
+    fs::create_directories(base.parent_path(), ec);
+    dir = base;
+    // One mkdir claims a name: a run started in the same second with the same
+    // seed (a CI matrix, a script) gets -2, -3, ... instead of sharing it.
+    for (int k = 2; !ec && !fs::create_directory(dir, ec) && !ec && k < 10000; ++k)
+      dir = base.string() + "-" + std::to_string(k);
+    if (ec != std::errc::no_such_file_or_directory) break;
+  }
   if (ec || !fs::is_empty(dir, ec)) {
     *error = "cannot create a run directory under " + base.parent_path().string() + ": " +
              (ec ? ec.message() : std::string("every name is taken"));
