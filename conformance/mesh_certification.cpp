@@ -157,33 +157,28 @@ RunResult mesh_run_result(const MeshCertification& m, const ObjMesh& mesh, const
   run.complete = true;
   const std::string found_by = "mesh";
   const std::string origin = "The mesh's program, as vgc import writes it (a user's mesh is judged whole, not shrunk)";
+  // The build judges the node's storage of the whole mesh: its snapshot is
+  // the reference's, or its finding is the build's.
+  PropertyOutcome built;
+  built.id = found_by + ".build";
+  built.status = m.build_failure ? "fail" : "pass";
+  built.cases = built.cases_target = built.judged = 1;
+  built.seconds = m.build_seconds;
+  run.properties.push_back(built);
   if (m.build_failure) {
     ClauseOutcome co;
     co.clause = find_clause(m.build_failure->clause);
     co.status = "fail";
     co.finding = m.build_failure;
-    co.found_by = found_by + ".build";
+    co.found_by = built.id;
     co.program = mesh.program;
     co.program_origin = origin;
     co.exercised = 1;
     co.properties = {co.found_by};
     if (co.clause) run.clauses.push_back(std::move(co));
-    PropertyOutcome p;
-    p.id = found_by + ".build";
-    p.status = "fail";
-    p.cases = p.cases_target = p.judged = 1;
-    p.seconds = m.build_seconds;
-    run.properties.push_back(p);
     return run;
   }
-  // The build judged the node's storage of the whole mesh: its snapshot is
-  // the reference's (the clauses a difference would be blamed on).
-  PropertyOutcome built;
-  built.id = found_by + ".build";
-  built.status = "pass";
-  built.cases = built.cases_target = built.judged = 1;
-  built.seconds = m.build_seconds;
-  run.properties.push_back(built);
+  // Passed: the clauses a difference would have been blamed on.
   for (const char* id : {"VERTEX-SET-1", "POLY-CORNERS-1"}) {
     ClauseOutcome co;
     co.clause = find_clause(id);
