@@ -187,8 +187,9 @@ std::string rerun_command(const Options& o) {
 // capability judged per level (mesh_certification.h). Prints one line per
 // check; exit 0 the mesh was stored as the reference stores it and every
 // judged check passes, 1 a failure (or the mesh could not be built as the
-// reference builds it), 2 the file is bad or nothing could be judged. The run directory under --reports has the usual files
-// (one "property" per check and level).
+// reference builds it), 2 the file is bad or nothing could be judged. The
+// run directory under --reports has the usual files (one "property" per
+// check and level).
 int run_mesh(const Options& o) {
   if (o.levels < 1 || o.levels > 4)
     return usage(fmt::format("--levels is {}: give 1 to 4 subdivision levels (default 2)", o.levels));
