@@ -4,6 +4,7 @@
 #include <algorithm>
 
 #include "attribution.h"
+#include "confirm_finding.h"
 #include "property.h"
 
 namespace vgc {
@@ -119,11 +120,13 @@ void gather_clause_evidence(const Clause& clause, const std::vector<PropertyOutc
   }
 }
 
-bool prefer_finding(const Program& candidate, int candidate_index, const std::optional<Finding>& chosen,
-                    const Program& chosen_program, int chosen_index) {
+bool prefer_finding(const Finding& candidate, const Program& candidate_program, int candidate_index,
+                    const std::optional<Finding>& chosen, const Program& chosen_program, int chosen_index) {
   if (!chosen) return true;
-  if (candidate.commands.size() != chosen_program.commands.size())
-    return candidate.commands.size() < chosen_program.commands.size();
+  if (finding_severity(candidate) != finding_severity(*chosen))
+    return finding_severity(candidate) > finding_severity(*chosen);
+  if (candidate_program.commands.size() != chosen_program.commands.size())
+    return candidate_program.commands.size() < chosen_program.commands.size();
   return candidate_index < chosen_index;
 }
 

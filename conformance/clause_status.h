@@ -67,12 +67,14 @@ std::string route_limit_of(std::string_view clause_id, const RouteLimits& limits
 void gather_clause_evidence(const Clause& clause, const std::vector<PropertyOutcome>& outcomes, ClauseEvidence* e,
                             std::vector<std::string>* properties);
 
-// Whether `candidate` (from a property at `candidate_index` in the
-// catalog) replaces the finding chosen so far (`chosen`, from
-// `chosen_index`): the shortest program wins, ties go to the earlier
-// property. The same in one run and across merged shards.
-bool prefer_finding(const Program& candidate, int candidate_index, const std::optional<Finding>& chosen,
-                    const Program& chosen_program, int chosen_index);
+// Whether `candidate` (shown by `candidate_program`, from a property at
+// `candidate_index` in the catalog) replaces the finding chosen so far
+// (`chosen`, from `chosen_index`): the worse kind wins (a crash over a
+// wrong answer: confirm_finding.h finding_severity), then the shortest
+// program, then the earlier property. The same in one run and across
+// merged shards.
+bool prefer_finding(const Finding& candidate, const Program& candidate_program, int candidate_index,
+                    const std::optional<Finding>& chosen, const Program& chosen_program, int chosen_index);
 
 ClauseDecision decide_clause_status(const Clause& clause, const ClauseEvidence& e);
 

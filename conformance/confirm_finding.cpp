@@ -165,6 +165,14 @@ std::string finding_kind(const Finding& f) {
   return "wrong-answer";
 }
 
+int finding_severity(const Finding& f) {
+  const std::string kind = finding_kind(f);
+  if (kind == "crash") return 3;
+  if (kind == "timeout") return 2;
+  if (kind == "protocol-error") return 1;
+  return 0;
+}
+
 std::string call_failure_kind(const Finding& f) {
   if (!depends_on_history(f)) return finding_kind(f);
   std::string_view m = f.message;

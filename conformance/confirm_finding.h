@@ -86,6 +86,13 @@ bool reproduces_fresh(Implementation& sut, const Finding& f, const Program& prog
 // with the same kind.
 std::string finding_kind(const Finding& f);
 
+// How bad a kind of failure is: a wrong answer 0, a protocol error 1, a
+// time-out 2, a crash (a sanitizer report included) 3. A finding of one
+// kind in a clause hides nothing worse in it (runner.cpp tolerates a
+// clause only up to the worst kind found there), and a clause's outcome
+// shows its worst finding (clause_status.h prefer_finding).
+int finding_severity(const Finding& f);
+
 // The same as finding_kind (the name the runner's callers used when only
 // call failures were confirmed).
 std::string call_failure_kind(const Finding& f);

@@ -60,7 +60,10 @@ struct CaseContext {
   bool stop = false;
 
   // Running past findings (runner.h).
-  std::set<std::string> tolerated;  // clauses whose divergence sets a case aside
+  // Clauses whose divergence sets a case aside, each with the worst kind of
+  // failure tolerated in it (finding_severity): a worse kind in the same
+  // clause (a crash behind a wrong answer) is a new finding of its own.
+  std::map<std::string, int> tolerated;
   std::set<std::string> baseline;   // the subset tolerated from the start
   // A tolerated clause's divergence as first seen (shortest program kept).
   std::map<std::string, PropertyFinding> tolerated_seen;
@@ -175,6 +178,13 @@ bool past_deadline() {
   if (Clock::now() < g_context->deadline && !cancel_signal()) return false;
   g_context->deadline_hit = true;
   return true;
+}
+
+// Whether `f` is tolerated: its clause has a finding of the same or a
+// worse kind already.
+bool is_tolerated(const CaseContext& c, const Finding& f) {
+  const auto it = c.tolerated.find(f.clause);
+  return it != c.tolerated.end() && finding_severity(f) <= it->second;
 }
 
 // The first (shortest) program that showed a tolerated clause's divergence
@@ -328,7 +338,7 @@ bool fail_case(const Finding& f, std::optional<CapabilityRequest> request = std:
     g_context->set_aside_case = true;  // the costly class again: found once already
     return false;
   }
-  if (g_context->tolerated.count(f.clause)) {
+  if (is_tolerated(*g_context, f)) {
     set_case_aside(f, request);
     return false;
   }
@@ -340,7 +350,12 @@ bool fail_case(const Finding& f, std::optional<CapabilityRequest> request = std:
   g_context->last_failure = f;
   g_context->last_program.commands = g_context->trace;
   g_context->last_program.request = std::move(request);
-  if (f.status == FindingStatus::Timeout || g_context->trace.empty()) g_context->stop = true;
+  // Not shrunk: a time-out (every attempt could wait the full limit again),
+  // a fresh node's failure (nothing to shrink), and a crash or protocol
+  // error at scale (every attempt replays 10^4 commands and more on a
+  // restarted instance; the case itself is the counterexample).
+  if (f.status == FindingStatus::Timeout || g_context->trace.empty() || (g_context->no_take_out && is_call_failure(f)))
+    g_context->stop = true;
   RC_FAIL(f.clause + ": " + f.message);
   return true;  // unreachable: RC_FAIL throws
 }
@@ -374,7 +389,7 @@ struct Step final : rc::state::Command<Node, Implementation> {
     }
     if (r.failure && c.checker->failed_at() >= 0)  // found for an earlier command (sparse reading)
       c.trace.resize(static_cast<std::size_t>(c.checker->failed_at()) + 1);
-    else if (r.failure && c.tolerated.count(r.failure->clause) && take_step_out(r))
+    else if (r.failure && is_tolerated(c, *r.failure) && take_step_out(r))
       return;
     const Node& after = c.checker->model();
     for (auto& note : r.notes) {
@@ -722,7 +737,9 @@ void start_context(CaseContext& ctx, const PropertySpec& spec, Implementation& s
     for (const auto& f : p.findings)
       if (depends_on_history(f.finding)) ctx.history_kinds.insert(finding_kind(f.finding));
   ctx.deadline = deadline;
-  ctx.tolerated = o.tolerated;
+  // A baseline knows a clause's wrong answers; a crash, time-out or protocol
+  // error in it is still a finding.
+  for (const auto& clause : o.tolerated) ctx.tolerated[clause] = finding_severity(Finding{});
   ctx.baseline = o.tolerated;
   ctx.all_cases = property_cases(spec, o.cases);
   // A property at scale is split by case over the shards (assign_shards);
@@ -758,12 +775,16 @@ void record_round_failure(const rc::detail::FailureResult& failure, int round, C
   if (ctx.recorder && ctx.last_failure) {
     if (!ctx.failure_reproduced) {
       if (!confirm_finding(&pf, ctx, deadline, *out, run)) return;  // reported once already
-    } else if (pf.program.commands.size() < ctx.failure_program.commands.size() &&
+    } else if (is_call_failure(pf.finding) && pf.program.commands.size() < ctx.failure_program.commands.size() &&
                !case_fails_fresh(pf.finding, pf.program)) {
-      pf.program = ctx.failure_program;  // shrinking was misled by the instance's history
+      // Shrinking was misled by the instance's history (a crash shrinks on
+      // whatever command brings it about; a wrong answer must stay in its
+      // clause, which shrinking checks on each attempt).
+      pf.program = ctx.failure_program;
     }
   }
-  ctx.tolerated.insert(pf.finding.clause);
+  int& worst = ctx.tolerated[pf.finding.clause];
+  worst = std::max(worst, finding_severity(pf.finding));
   out->findings.push_back(std::move(pf));
   progress->failures = static_cast<int>(out->findings.size());
 }
@@ -935,12 +956,19 @@ void decide_clauses(const RunOptions& o, const RouteLimits& limits, RunResult* r
     e.route_limit = route_limit_of(clause.id, limits);
     e.unreported_verdicts = run->unreported_verdicts;
     int chosen_index = 0;
+    std::vector<std::string> also;  // milder kinds of finding in the clause, shown in the note
     for (std::size_t i = 0; i < run->properties.size(); ++i) {
       const PropertyOutcome& po = run->properties[i];
       if (auto it = po.exercised.find(id); it != po.exercised.end()) e.exercised += it->second;
       if (auto it = po.derived_only.find(id); it != po.derived_only.end()) e.derived_only += it->second;
       auto take = [&](const Finding& f, const Program& p, bool known) {
-        if (!prefer_finding(p, static_cast<int>(i), co.finding, co.program, chosen_index)) return;
+        if (!prefer_finding(f, p, static_cast<int>(i), co.finding, co.program, chosen_index)) {
+          if (co.finding && finding_kind(f) != finding_kind(*co.finding))
+            also.push_back(finding_kind(f) + " (" + po.id + ")");
+          return;
+        }
+        if (co.finding && finding_kind(f) != finding_kind(*co.finding))
+          also.push_back(finding_kind(*co.finding) + " (" + co.found_by + ")");
         chosen_index = static_cast<int>(i);
         co.finding = f;
         co.program = p;
@@ -966,6 +994,10 @@ void decide_clauses(const RunOptions& o, const RouteLimits& limits, RunResult* r
     if (d.status.empty()) continue;  // not asked for and nothing found
     co.status = d.status;
     co.note = d.note;
+    if (!also.empty()) {
+      co.note = "the worst kind of finding in this clause is shown; also found:";
+      for (const auto& a : also) co.note += " " + a;
+    }
     run->clauses.push_back(co);
   }
 }
@@ -1153,12 +1185,19 @@ ReplayResult replay_program(const Program& program, Implementation& sut) {
     return r;
   }
   ProgramChecker checker(sut, /*follow_choices=*/true);
+  // A program at scale (a case of storage.scale, a history reproducer) is
+  // read as certify reads it: the documents every so often, a difference
+  // bisected back to its command (program_checker.h); reading both after
+  // each of 10^4 commands costs the node's size squared on a route without
+  // ?digest.
+  if (program.commands.size() >= kScaleMinElements / 2) checker.allow_sparse_reading();
   for (std::size_t i = 0; i < program.commands.size(); ++i) {
     StepResult s = checker.step(program.commands[i]);
     for (auto& n : s.notes) r.notes.push_back(n);
     if (s.failure) {
-      r.failure = blame_as_history(program, *s.failure, i).value_or(*s.failure);
-      r.failed_at = static_cast<int>(i);
+      const std::size_t at = checker.failed_at() >= 0 ? static_cast<std::size_t>(checker.failed_at()) : i;
+      r.failure = blame_as_history(program, *s.failure, at).value_or(*s.failure);
+      r.failed_at = static_cast<int>(at);
       return r;
     }
   }

@@ -217,7 +217,8 @@ void merge_clauses(const std::vector<json>& reports, RunResult* run) {
       e.exercised += co.exercised;
       e.derived_only += co.derived_only;
       if (!co.route_limit.empty()) e.route_limit = co.route_limit;
-      if (co.finding && prefer_finding(co.program, property_index(co.found_by), out.finding, out.program, chosen_index)) {
+      if (co.finding &&
+          prefer_finding(*co.finding, co.program, property_index(co.found_by), out.finding, out.program, chosen_index)) {
         chosen_index = property_index(co.found_by);
         out = co;
       }

@@ -33,14 +33,11 @@ std::string quoted_if_needed(const std::string& path) {
 std::string program_command_for(const std::string& exe_path, const std::string& path_env) {
   const fs::path exe(exe_path);
   std::error_code ec;
-  if (exe.parent_path().filename() == "cli" && fs::exists(exe.parent_path().parent_path() / "CMakeCache.txt", ec)) {
-    // The checkout's ./vgc script, by its absolute path, so that the line
-    // works from any directory (the default build tree is <checkout>/build).
-    const fs::path script = exe.parent_path().parent_path().parent_path() / "vgc";
-    if (fs::is_regular_file(script, ec) && ::access(script.c_str(), X_OK) == 0)
-      return quoted_if_needed(script.lexically_normal().string());
+  // A build tree's program (<build>/cli/vgc) by its absolute path: the line
+  // works from any directory and runs what ran (the checkout's ./vgc script
+  // would first build the whole tree, from the checkout only).
+  if (exe.parent_path().filename() == "cli" && fs::exists(exe.parent_path().parent_path() / "CMakeCache.txt", ec))
     return quoted_if_needed(exe_path);
-  }
   // The first vgc a shell would find on PATH (empty entries, the current
   // directory, are skipped: a printed command must not depend on it).
   std::string::size_type start = 0;

@@ -95,15 +95,21 @@ TEST(ClauseStatus, AFindingDecidesAndAStoppedPropertyLeavesItUnchecked) {
   EXPECT_EQ(decide_clause_status(clause("LAYER-NAME-1"), off).status, "");  // left out
 }
 
-TEST(ClauseStatus, TheShortestProgramWinsTiesToTheEarlierProperty) {
+TEST(ClauseStatus, TheWorstKindThenTheShortestProgramWinsTiesToTheEarlierProperty) {
   const Program two({cmd::VertexDelete{1}, cmd::VertexDelete{2}});
   const Program one({cmd::VertexDelete{1}});
-  const std::optional<Finding> chosen = Finding("X", FindingStatus::Fail, "x");
-  EXPECT_TRUE(prefer_finding(one, 5, chosen, two, 1));
-  EXPECT_FALSE(prefer_finding(two, 0, chosen, one, 5));
-  EXPECT_TRUE(prefer_finding(one, 0, chosen, one, 5));
-  EXPECT_FALSE(prefer_finding(one, 5, chosen, one, 0));
-  EXPECT_TRUE(prefer_finding(two, 9, std::nullopt, one, 0));
+  const Finding wrong("X", FindingStatus::Fail, "x");
+  const Finding crash("X", FindingStatus::Crash, "crash while applying it");
+  const std::optional<Finding> chosen = wrong;
+  EXPECT_TRUE(prefer_finding(wrong, one, 5, chosen, two, 1));
+  EXPECT_FALSE(prefer_finding(wrong, two, 0, chosen, one, 5));
+  EXPECT_TRUE(prefer_finding(wrong, one, 0, chosen, one, 5));
+  EXPECT_FALSE(prefer_finding(wrong, one, 5, chosen, one, 0));
+  EXPECT_TRUE(prefer_finding(wrong, two, 9, std::nullopt, one, 0));
+  // A crash is never hidden behind a wrong answer of the same clause,
+  // however much longer its program.
+  EXPECT_TRUE(prefer_finding(crash, two, 9, chosen, one, 0));
+  EXPECT_FALSE(prefer_finding(wrong, one, 0, std::optional<Finding>(crash), two, 9));
 }
 
 TEST(CostlyClass, TheClassIsTheLargestElementIdsKindAndPowerOfTwo) {

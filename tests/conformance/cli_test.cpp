@@ -272,7 +272,7 @@ TEST_F(Cli, AFaultIsRejectedReplaysAndCanBeBaselined) {
   ASSERT_EQ(r.exit_code, 1) << context(r);
   expect_report_files(dir_ / "rep", "not-conformant");
   EXPECT_NE(r.out.find("BONE-FOREST-1"), std::string::npos) << context(r);
-  EXPECT_NE(r.out.find("re-run: VGC_FAULT='bone-cycles-accepted' " + (fs::path(VGC_SOURCE_DIR) / "vgc").string() + " certify --impl"),
+  EXPECT_NE(r.out.find("re-run: VGC_FAULT='bone-cycles-accepted' " + std::string(VGC_BINARY) + " certify --impl"),
             std::string::npos)
       << "the re-run line lacks the environment the run needed: " << context(r);
   EXPECT_NE(r.out.find(" --strict"), std::string::npos) << context(r);
@@ -295,10 +295,9 @@ TEST_F(Cli, AFaultIsRejectedReplaysAndCanBeBaselined) {
   const Result again = vgc("replay " + shell_quote(file.string()) + " --impl " + shell_quote(impl), env);
   EXPECT_EQ(again.exit_code, 1) << context(again);
   EXPECT_NE(again.out.find("BONE-FOREST-1"), std::string::npos) << context(again);
-  // The replay line that summary.md prints, run as printed (by the source
-  // tree's vgc script, named by its absolute path so that the line works
-  // from any directory; it would build first: here the binary itself).
-  const std::regex replay_line("Replay: `([^`]*)" + (fs::path(VGC_SOURCE_DIR) / "vgc").string() + " (replay [^`]*)`");
+  // The replay line that summary.md prints, run as printed (the build
+  // tree's program by its absolute path, so that it works from any directory).
+  const std::regex replay_line("Replay: `([^`]*)" + std::string(VGC_BINARY) + " (replay [^`]*)`");
   std::smatch m;
   ASSERT_TRUE(std::regex_search(summary, m, replay_line)) << summary;
   EXPECT_EQ(m[1].str(), "VGC_FAULT='bone-cycles-accepted' ") << "the replay line carries the environment";
@@ -473,8 +472,8 @@ TEST_F(Cli, ACapabilityFaultReplaysItsCapabilityCheck) {
       if (c.at("id") == clause) {
         const std::string line = c.at("replay");
         // It carries the environment the run needed (VGC_FAULT), before the
-        // source tree's vgc script (its absolute path).
-        const std::string program = (fs::path(VGC_SOURCE_DIR) / "vgc").string() + " ";
+        // program (its absolute path).
+        const std::string program = std::string(VGC_BINARY) + " ";
         const auto at = line.find(program);
         ASSERT_NE(at, std::string::npos) << line;
         const std::string printed_env = line.substr(0, at);

@@ -71,11 +71,14 @@ PY
 grep -q -- "$clause" "$(dirname "$summary")/summary.md" || fail "summary.md does not name $clause"
 [ "$confirm" = "-" ] || grep -q -- "- $confirm:" "$(dirname "$summary")/summary.md" || fail "summary.md does not say '$confirm'"
 if [ "$route" = exec ] || [ -n "$restart" ]; then
-  # The replay line, run as printed (its ./vgc is this vgc): a fresh
-  # instance shows the clause again.
+  # The replay line, run as printed (it names this vgc by its absolute
+  # path; a bare `vgc` or `./vgc` is this vgc too): a fresh instance shows
+  # the clause again.
   [ -n "$restart" ] && "$work/restart.sh"
-  line=${replay/.\/vgc /\"$vgc\" }
-  [ "$line" != "$replay" ] || line=${replay/vgc /\"$vgc\" }
+  case "$replay" in
+    ./vgc\ *|vgc\ *) line="\"$vgc\" ${replay#* }" ;;
+    *) line=$replay ;;
+  esac
   r=$(eval "$line" 2>&1)
   [ $? -eq 1 ] || fail "the replay line did not exit 1: $line: $r"
   printf '%s\n' "$r" | grep -q -- "$clause" || fail "the replay line does not name $clause: $r"

@@ -53,6 +53,15 @@ std::vector<FaultInfo> build_catalog() {
       {"polygon-delete-ignored", "POLY-DELETE-1", "fail", "answers ok to a polygon delete and keeps the polygon"},
       {"crash-on-self-parent", "BONE-FOREST-1", "crash", "aborts on a bone that names itself as parent (its cycle check)"},
       {"hang-on-subscribe-real64", "LAYER-SUBSCRIBE-1", "timeout", "never answers a REAL64 subscription"},
+      // Issue 27: a worse kind of failure hidden behind a milder finding of
+      // the same clause. Each has the milder deviation too, which most
+      // cases find first; certify must still report the crash.
+      {"destroy-missing-ok-double-free", "LAYER-DESTROY-1", "crash",
+       "answers ok to destroying a missing layer (a wrong verdict), and aborts (a double free) when that layer "
+       "existed and was destroyed before"},
+      {"real32-ignored-grow-crash", "VERTEX-SET-1", "crash",
+       "answers ok to vertex_set_xyz_real32 and stores nothing (a wrong state), and aborts (a realloc of a freed "
+       "block) when a vertex past every id so far is created after a vertex was deleted"},
       {"wrong-reason-codes", "REASON-1", "fail", "rejects with the right verdict but always says REJECTED (SHOULD)"},
       {"subdivision-ignores-creases", "SUBD-CATMARK-1", "fail",
        "claims subdivision; ?subdivide refines as if every crease were 0"},
@@ -327,6 +336,23 @@ FaultyAnswer FaultyNode::apply(const Command& original) {
   if (auto* x = std::get_if<cmd::BoneCreate>(&c); x && is("crash-on-self-parent") && x->parent == x->bone_id) {
     Node trial = node_;
     if (trial.apply(c) == Reason::BoneCycle) std::abort();  // dies in its cycle handling
+  }
+  // destroy-missing-ok-double-free
+  if (auto* x = std::get_if<cmd::LayerDestroy>(&c); x && is("destroy-missing-ok-double-free") && x->layer_id > 1) {
+    if (!node_.find_layer(x->layer_id)) {
+      if (destroyed_layers_.count(x->layer_id)) std::abort();  // freed once already
+      return {true, ""};
+    }
+    destroyed_layers_.insert(x->layer_id);
+  }
+  // real32-ignored-grow-crash
+  if (is("real32-ignored-grow-crash")) {
+    if (auto* x = std::get_if<cmd::VertexSetXyzReal32>(&c); x && x->layer_id == 0) return {true, ""};
+    if (std::holds_alternative<cmd::VertexDelete>(c)) vertex_deleted_ = true;
+    if (auto* x = std::get_if<cmd::VertexSetXyzReal64>(&c); x && x->layer_id == 0 && x->vertex_id != kNone32) {
+      if (vertex_deleted_ && (!largest_vertex_id_ || x->vertex_id > *largest_vertex_id_)) std::abort();
+      largest_vertex_id_ = std::max(largest_vertex_id_.value_or(0), x->vertex_id);
+    }
   }
   // hang-on-subscribe-real64
   if (auto* x = std::get_if<cmd::LayerSubscribe>(&c); x && is("hang-on-subscribe-real64") && x->real_format == 1)

@@ -14,6 +14,8 @@
 #include <map>
 #include <string>
 #include <string_view>
+#include <optional>
+#include <set>
 #include <vector>
 
 #include "command.h"
@@ -93,6 +95,12 @@ class FaultyNode {
   std::vector<int> faults_;  // indexes into fault_catalog(); every one is active
   Node node_;
   std::vector<Command> history_;  // every command node_ was given (the rule faults' path)
+  // destroy-missing-ok-double-free and real32-ignored-grow-crash: what the
+  // node went through (kept as it goes: a scan of history_ per command
+  // would cost a case at scale its square).
+  std::set<std::uint16_t> destroyed_layers_;
+  bool vertex_deleted_ = false;
+  std::optional<std::uint32_t> largest_vertex_id_;
   NodeDigest digest_;
   ChangeLog changes_;
   bool digest_stale_ = false;
