@@ -41,7 +41,7 @@ std::optional<Finding> snapshot_difference(const Node& model, Implementation& su
 // answering ok, so that a polygon naming it is now refused), the rule
 // broken is the one that made it differ, not ACCEPT-1: the reference
 // replays the mesh up to the command, once, and the snapshots are compared.
-Finding verdict_difference(const ObjMesh& mesh, std::size_t index, Reason want, const Answer& got,
+Finding verdict_difference(const MeshProgram& mesh, std::size_t index, Reason want, const Answer& got,
                            Implementation& sut) {
   const Command& c = mesh.program.commands[index];
   const std::string which = "`" + print_command(c) + "` (command " + std::to_string(index + 1) + " of " +
@@ -60,7 +60,7 @@ Finding verdict_difference(const ObjMesh& mesh, std::size_t index, Reason want, 
 
 // The mesh on a fresh instance and on the reference: verdicts per command,
 // the snapshots once at the end.
-std::optional<Finding> build(const ObjMesh& mesh, Implementation& sut, Node* model) {
+std::optional<Finding> build(const MeshProgram& mesh, Implementation& sut, Node* model) {
   const Answer fresh = sut.reset();
   if (fresh.status != CallStatus::Ok) return call_failure("STABLE-1", fresh.status, "resetting to a fresh node", fresh.detail);
   const auto& commands = mesh.program.commands;
@@ -77,7 +77,7 @@ std::optional<Finding> build(const ObjMesh& mesh, Implementation& sut, Node* mod
   return snapshot_difference(*model, sut, "after the mesh's " + std::to_string(commands.size()) + " commands");
 }
 
-bool all_triangles(const ObjMesh& mesh) { return mesh.quads == 0 && mesh.triangles > 0; }
+bool all_triangles(const MeshProgram& mesh) { return mesh.quads == 0 && mesh.triangles > 0; }
 
 }  // namespace
 
@@ -95,7 +95,7 @@ bool MeshCertification::any_failed() const {
   return false;
 }
 
-MeshCertification certify_mesh(const ObjMesh& mesh, Implementation& sut, int levels) {
+MeshCertification certify_mesh(const MeshProgram& mesh, Implementation& sut, int levels) {
   MeshCertification out;
   out.commands = mesh.program.commands.size();
   Node model;
@@ -146,7 +146,7 @@ MeshCertification certify_mesh(const ObjMesh& mesh, Implementation& sut, int lev
   return out;
 }
 
-RunResult mesh_run_result(const MeshCertification& m, const ObjMesh& mesh, const std::string& implementation,
+RunResult mesh_run_result(const MeshCertification& m, const MeshProgram& mesh, const std::string& implementation,
                           double seconds) {
   RunResult run;
   run.implementation = implementation;

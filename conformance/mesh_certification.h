@@ -5,7 +5,7 @@
 // SUBD-CATMARK-1 ("subdivision", against OpenSubdiv, per level),
 // NORMALS-SPLIT-1 ("normals") and LOOP-TRIANGLE-1 ("loop", per level, on an
 // all-triangle mesh), through the checks the oracle layer registers
-// (capability.h); the mesh as obj_import.h builds it.
+// (capability.h); the mesh as mesh_program.h builds it.
 //
 // Rationale: generated cases hold a handful of polygons; a production mesh
 // holds 10^4 to 10^6 and may show what they never do. The mesh is built on
@@ -26,7 +26,7 @@
 
 #include "check_step.h"
 #include "implementation.h"
-#include "obj_import.h"
+#include "mesh_program.h"
 #include "runner.h"
 
 namespace vgc {
@@ -55,7 +55,7 @@ struct MeshCertification {
   bool any_failed() const;
 };
 
-MeshCertification certify_mesh(const ObjMesh& mesh, Implementation& sut, int levels);
+MeshCertification certify_mesh(const MeshProgram& mesh, Implementation& sut, int levels);
 
 // The certification as a run the report writers take (report.h): one
 // "property" per check and level (mesh.<capability>[.level<N>], one case
@@ -68,7 +68,7 @@ MeshCertification certify_mesh(const ObjMesh& mesh, Implementation& sut, int lev
 // POLY-CORNERS-1 (the storage a difference would be blamed on) passed. A
 // route that reports no verdicts (the Verse wire) is judged by the snapshot
 // at the end alone.
-RunResult mesh_run_result(const MeshCertification& m, const ObjMesh& mesh, const std::string& implementation,
+RunResult mesh_run_result(const MeshCertification& m, const MeshProgram& mesh, const std::string& implementation,
                           double seconds);
 
 }  // namespace vgc
