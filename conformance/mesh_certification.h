@@ -35,7 +35,7 @@ struct MeshCheckOutcome {
   std::string capability;  // "manifold", "subdivision", "normals", "loop"
   std::string clause;      // MESH-CLASSIFY-1, ...
   int level = 0;           // the subdivision level (0 for manifold and normals)
-  std::string status;      // "pass", "fail", "not-judged", "not-claimed", "no-oracle"
+  std::string status;      // "pass", "fail", "not-judged", "not-claimed", "no-oracle", "timeout", "stopped"
   std::optional<Finding> finding;  // for "fail"
   std::string note;        // for "not-judged", "not-claimed", "no-oracle"
   double seconds = 0;
@@ -53,9 +53,28 @@ struct MeshCertification {
   // ran and matched the reference, or when any check passed or failed.
   bool any_judged() const;
   bool any_failed() const;
+  // A check (or the build's snapshot) stopped at a limit of vgc's (time,
+  // answer size): no verdict on it, the run is incomplete (exit 2).
+  bool any_incomplete() const;
+  bool built = false;      // the mesh was built and its snapshot compared
+  bool abandoned = false;  // a check was left running (see MeshCertifyOptions)
+  std::string stopped_why;  // "cancelled by SIGTERM", "the budget of 10 s ran out"
 };
 
-MeshCertification certify_mesh(const MeshProgram& mesh, Implementation& sut, int levels);
+// What certify's options select (cli/cmd_certify.cpp --levels, --clauses,
+// --budget). A check whose clause the glob does not select is left out; a
+// check not started within the budget, or when the run is cancelled
+// (cancel.h), is "stopped" and the run incomplete. A check in progress is
+// waited for in steps of 50 ms: on cancellation or at the budget it is
+// abandoned (`abandoned`: a thread still runs it, so the caller writes its
+// report and exits without returning through the implementation).
+struct MeshCertifyOptions {
+  int levels = 2;
+  std::string clauses = "*";
+  double budget_seconds = 0;  // 0: none
+};
+
+MeshCertification certify_mesh(const MeshProgram& mesh, Implementation& sut, const MeshCertifyOptions& options);
 
 // The certification as a run the report writers take (report.h): one
 // "property" per check and level (mesh.<capability>[.level<N>], one case
