@@ -22,7 +22,7 @@
 #include <vector>
 
 #include "mesh_certification.h"
-#include "obj_import.h"
+#include "mesh_import.h"
 #include "baseline.h"
 #include "cancel.h"
 #include "clause.h"
@@ -54,8 +54,9 @@ struct Options {
   std::string reports = "reports";
   bool quiet = false;
   bool strict = false;
-  std::string mesh;  // --mesh FILE.obj: the derived-geometry checks on that mesh instead
+  std::string mesh;  // --mesh FILE: the derived-geometry checks on that mesh instead
   int levels = 2;    // --levels: subdivision levels judged on --mesh
+  bool triangulate = false;  // --triangulate: with --mesh, split faces of 5+ corners
 };
 
 std::string utc_now() {
@@ -193,32 +194,52 @@ std::string rerun_command(const Options& o) {
 int run_mesh(const Options& o) {
   if (o.levels < 1 || o.levels > 4)
     return usage(fmt::format("--levels is {}: give 1 to 4 subdivision levels (default 2)", o.levels));
+  if (!(o.budget > 0))
+    return usage(fmt::format("--budget is {:g}: give a positive number of seconds (default 300)", o.budget));
+  if (!(o.timeout > 0))
+    return usage(fmt::format("--timeout is {:g}: give a positive number of seconds (default 5)", o.timeout));
+  if (const std::string bad = unmatched_pattern(o.clauses); !bad.empty())
+    return usage("--clauses pattern '" + bad + "' matches no clause id: `vgc clauses` lists them; with --mesh the "
+                 "checks are MESH-CLASSIFY-1, NORMALS-SPLIT-1, SUBD-CATMARK-1 and LOOP-TRIANGLE-1");
   if (std::string why; !reports_writable(o.reports, &why))
     return usage("cannot write reports under '" + o.reports + "' (" + why +
                  "): give --reports a directory you can write (it is created if missing)");
-  ObjMesh mesh;
-  ObjError error;
-  if (!import_obj(o.mesh, &mesh, &error)) {
-    if (error.line) say(stderr, "{}:{}:{}: error: {}\n", o.mesh, error.line, error.column, error.message);
-    else say(stderr, "vgc certify: --mesh {}: {}\n", o.mesh, error.message);
+  MeshProgram mesh;
+  MeshFileError error;
+  if (!import_mesh(o.mesh, MeshImportOptions{o.triangulate}, &mesh, &error)) {
+    if (error.line)
+      say(stderr, "{}:{}:{}: error: {}\n", one_line_text(o.mesh), error.line, error.column, error.message);
+    else
+      say(stderr, "vgc certify: --mesh {}: {}\n", one_line_text(o.mesh), error.message);
     return 2;
   }
+  if (mesh.split_faces)
+    say(stderr, "vgc certify: --triangulate split {} faces of more than 4 corners into triangles\n",
+        mesh.split_faces);
   install_cancel_handlers();
   auto sut = open_impl_or_report("certify", o.impl, o.timeout, o.verse_bone_form);
   if (!sut) return 2;
   register_oracle_checks();
-  say(stderr, "vgc certify: {} on {} ({} vertices, {} triangles, {} quads; up to level {})\n", o.impl, o.mesh,
+  say(stderr, "vgc certify: {} on {} ({} vertices, {} triangles, {} quads; up to level {})\n", o.impl,
+      one_line_text(o.mesh),
       mesh.vertices, mesh.triangles, mesh.quads, o.levels);
   const auto t0 = std::chrono::steady_clock::now();
   const std::string started = utc_now();
-  const MeshCertification r = certify_mesh(mesh, *sut, o.levels);
+  MeshCertifyOptions mo;
+  mo.levels = o.levels;
+  mo.clauses = o.clauses;
+  mo.budget_seconds = o.budget;
+  const MeshCertification r = certify_mesh(mesh, *sut, mo);
   const RunResult run = mesh_run_result(r, mesh, sut->name(),
                                         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
   ReportContext ctx;
   ctx.implementation_spec = o.impl;
   ctx.started = started;
   ctx.command_line = vgc_environment_prefix() + program_command() + " certify --mesh " + shell_quote(o.mesh) +
-                     " --impl " + shell_quote(o.impl) + " --levels " + std::to_string(o.levels);
+                     " --impl " + shell_quote(o.impl) + " --levels " + std::to_string(o.levels) +
+                     (o.triangulate ? " --triangulate" : "") + (o.clauses != "*" ? " --clauses " + shell_quote(o.clauses) : "") +
+                     " --budget " + fmt::format("{:g}", o.budget) +
+                     (o.timeout != 5 ? " --timeout " + fmt::format("{:g}", o.timeout) : "");
   const Verdict verdict = judge(run, nullptr, o.strict);
   std::string werror;
   if (!claim_run_dir(o.reports, run, &ctx, &werror) || !write_report(o.reports, run, verdict, ctx, &werror)) {
@@ -244,13 +265,27 @@ int run_mesh(const Options& o) {
   std::string counts;
   for (const auto& [status, n] : tally) counts += fmt::format("{}{} {}", counts.empty() ? "" : ", ", n, status);
   if (!r.build_failure) counts += std::string(counts.empty() ? "" : "; ") + "stored as the reference stores it";
-  const char* verdict_name = r.any_failed() ? "not conformant" : r.any_judged() ? "conformant" : "incomplete";
-  say("{}: {} on {} ({})\n", o.impl, verdict_name, o.mesh, counts.empty() ? "no check run" : counts);
+  const char* verdict_name = r.any_failed()                            ? "not conformant"
+                             : r.any_incomplete() || !r.any_judged() ? "incomplete"
+                                                                     : "conformant";
+  say("{}: {} on {} ({})\n", o.impl, verdict_name, one_line_text(o.mesh), counts.empty() ? "no check run" : counts);
   if (!r.any_failed() && !checks_judged)
     say("  only the storage of the mesh was judged: the implementation claims none of manifold, subdivision, "
         "normals, loop (docs/adapters.md section 5)\n");
   say("report: {}/summary.md\n", ctx.run_dir);
-  return r.any_failed() ? 1 : r.any_judged() ? 0 : 2;
+  if (!r.stopped_why.empty()) say("  stopped: {}; the verdict is incomplete\n", r.stopped_why);
+  else if (r.any_incomplete())
+    say("  a check stopped at a limit of vgc's (time or answer size), not at anything the implementation did: "
+        "give --timeout more seconds (it scales with the mesh already) and run again\n");
+  const int code = cancel_signal()                         ? 128 + cancel_signal()
+                   : r.any_failed()                        ? 1
+                   : r.any_incomplete() || !r.any_judged() ? 2
+                                                           : 0;
+  if (r.abandoned) {  // a check is still running on another thread: leave without unwinding through it
+    std::fflush(nullptr);
+    _exit(code);
+  }
+  return code;
 }
 
 int run(const Options& o) {
@@ -415,8 +450,11 @@ void add(CLI::App& app, int* exit_code) {
   sub->add_option("--reports", o->reports, "Directory for reports")->capture_default_str();
   sub->add_flag("--quiet", o->quiet, "No progress line");
   sub->add_option("--mesh", o->mesh,
-                  "A Wavefront OBJ mesh: build it on the implementation and run the derived-geometry checks "
-                  "(manifold, subdivision per level, normals, loop) on it instead of the catalog");
+                  "A mesh file (.obj, .off, .ply, .stl): build it on the implementation and run the "
+                  "derived-geometry checks (manifold, subdivision per level, normals, loop) on it instead of the "
+                  "catalog");
+  sub->add_flag("--triangulate", o->triangulate,
+                "With --mesh: split faces of more than 4 corners into triangles (CGAL; concave faces included)");
   sub->add_option("--levels", o->levels, "With --mesh: subdivision levels to judge (1 to 4)")->capture_default_str();
   sub->add_flag("--strict", o->strict,
                 "Also gate on IMPLEMENTATION-DEFINED clauses (the suite's reading of points the spec leaves open)");

@@ -3,7 +3,14 @@
 
 #include <algorithm>
 #include <chrono>
+#include <sstream>
+#include <functional>
+#include <future>
+#include <memory>
+#include <thread>
+#include <cmath>
 
+#include "cancel.h"
 #include "capability.h"
 #include "clause.h"
 #include "command_text.h"
@@ -23,9 +30,18 @@ double since(Clock::time_point t0) { return std::chrono::duration<double>(Clock:
 // localizes the rule; a mesh of 10^5 commands is compared once), `when`
 // saying at which point of the mesh.
 std::optional<Finding> snapshot_difference(const Node& model, Implementation& sut, const std::string& when) {
+  const std::string want = print_snapshot(model);
+  sut.expect_answer_bytes(want.size());
   const Document snap = sut.snapshot();
-  if (snap.status != CallStatus::Ok) return call_failure("STABLE-1", snap.status, "showing the snapshot", snap.detail);
-  const auto d = diff_documents(print_snapshot(model), snap.text);
+  if (snap.status != CallStatus::Ok) {
+    Finding f = call_failure("STABLE-1", snap.status, "showing the snapshot", snap.detail);
+    if (!snap.limit.empty()) {
+      f.status = FindingStatus::Timeout;  // vgc's limit, not a verdict
+      f.message += " (a limit of vgc's, not a verdict: raise " + snap.limit + ")";
+    }
+    return f;
+  }
+  const auto d = diff_documents(want, snap.text);
   if (!d) return std::nullopt;
   Finding f(d->kind == "polygon" ? "POLY-CORNERS-1" : "VERTEX-SET-1", FindingStatus::Fail,
             when + ", the snapshot differs: " + d->describe());
@@ -41,7 +57,7 @@ std::optional<Finding> snapshot_difference(const Node& model, Implementation& su
 // answering ok, so that a polygon naming it is now refused), the rule
 // broken is the one that made it differ, not ACCEPT-1: the reference
 // replays the mesh up to the command, once, and the snapshots are compared.
-Finding verdict_difference(const ObjMesh& mesh, std::size_t index, Reason want, const Answer& got,
+Finding verdict_difference(const MeshProgram& mesh, std::size_t index, Reason want, const Answer& got,
                            Implementation& sut) {
   const Command& c = mesh.program.commands[index];
   const std::string which = "`" + print_command(c) + "` (command " + std::to_string(index + 1) + " of " +
@@ -60,11 +76,16 @@ Finding verdict_difference(const ObjMesh& mesh, std::size_t index, Reason want, 
 
 // The mesh on a fresh instance and on the reference: verdicts per command,
 // the snapshots once at the end.
-std::optional<Finding> build(const ObjMesh& mesh, Implementation& sut, Node* model) {
+std::optional<Finding> build(const MeshProgram& mesh, Implementation& sut, Node* model,
+                             const std::function<std::string()>& should_stop, std::string* stopped) {
   const Answer fresh = sut.reset();
   if (fresh.status != CallStatus::Ok) return call_failure("STABLE-1", fresh.status, "resetting to a fresh node", fresh.detail);
   const auto& commands = mesh.program.commands;
   for (std::size_t i = 0; i < commands.size(); ++i) {
+    if (i % 1024 == 0 && !(*stopped = should_stop()).empty()) {
+      *stopped += " while building the mesh (command " + std::to_string(i + 1) + ")";
+      return std::nullopt;
+    }
     const Reason want = model->apply(commands[i]);
     const Answer got = sut.apply(commands[i]);
     if (got.status != CallStatus::Ok)
@@ -77,43 +98,136 @@ std::optional<Finding> build(const ObjMesh& mesh, Implementation& sut, Node* mod
   return snapshot_difference(*model, sut, "after the mesh's " + std::to_string(commands.size()) + " commands");
 }
 
-bool all_triangles(const ObjMesh& mesh) { return mesh.quads == 0 && mesh.triangles > 0; }
+bool all_triangles(const MeshProgram& mesh) { return mesh.quads == 0 && mesh.triangles > 0; }
+
+// About how long the answer to a check's request is on `mesh` (bytes), so
+// that an out-of-process route's limits scale with it: a vertex line is
+// about 60 bytes, a face line 30; level L of Catmull-Clark has 4^(L-1)
+// faces per corner, of Loop 4^L per triangle, with about as many vertices
+// as faces (half for Loop); ?normals a line per corner.
+std::size_t expected_answer_bytes(const std::string& capability, int level, const MeshProgram& mesh) {
+  const double corners = 3.0 * static_cast<double>(mesh.triangles) + 4.0 * static_cast<double>(mesh.quads);
+  double bytes = 0;
+  if (capability == "subdivision") bytes = corners * std::pow(4.0, level - 1) * (30 + 60);
+  else if (capability == "loop") bytes = static_cast<double>(mesh.triangles) * std::pow(4.0, level) * (30 + 30);
+  else if (capability == "normals") bytes = corners * 80;
+  return static_cast<std::size_t>(bytes);
+}
 
 }  // namespace
 
 bool MeshCertification::any_judged() const {
-  if (!build_failure && commands > 0) return true;  // the storage of the mesh was judged
+  if (!build_failure && built) return true;  // the storage of the mesh was judged
   for (const auto& c : checks)
     if (c.status == "pass" || c.status == "fail") return true;
   return false;
 }
 
+bool MeshCertification::any_incomplete() const {
+  if (!stopped_why.empty()) return true;
+  if (build_failure && build_failure->status == FindingStatus::Timeout) return true;
+  for (const auto& c : checks)
+    if (c.status == "timeout") return true;
+  return false;
+}
+
 bool MeshCertification::any_failed() const {
+  if (build_failure && build_failure->status == FindingStatus::Timeout) return false;
   if (build_failure) return true;
   for (const auto& c : checks)
     if (c.status == "fail") return true;
   return false;
 }
 
-MeshCertification certify_mesh(const ObjMesh& mesh, Implementation& sut, int levels) {
+namespace {
+
+struct Planned {
+  const char* capability;
+  const char* clause;
+  int level;
+};
+
+// The checks --levels and --clauses select, in report order.
+std::vector<Planned> plan_checks(const MeshProgram& mesh, const MeshCertifyOptions& options) {
+  std::vector<Planned> all = {{"manifold", "MESH-CLASSIFY-1", 0}, {"normals", "NORMALS-SPLIT-1", 0}};
+  for (int l = 1; l <= options.levels; ++l) all.push_back({"subdivision", "SUBD-CATMARK-1", l});
+  if (all_triangles(mesh))
+    for (int l = 1; l <= options.levels; ++l) all.push_back({"loop", "LOOP-TRIANGLE-1", l});
+  std::vector<Planned> out;
+  for (const Planned& p : all)
+    if (clause_selected(options.clauses, p.clause)) out.push_back(p);
+  return out;
+}
+
+std::string budget_text(double seconds) {
+  std::ostringstream out;
+  out << seconds;
+  return out.str();
+}
+
+// Why the run must stop now ("" to go on): a cancel signal, or the budget.
+std::string stop_reason(const MeshCertifyOptions& options, Clock::time_point t0) {
+  if (cancel_signal()) return std::string("cancelled by ") + cancel_signal_name();
+  if (options.budget_seconds > 0 && since(t0) > options.budget_seconds)
+    return "the budget (--budget " + budget_text(options.budget_seconds) + ") ran out";
+  return "";
+}
+
+// One claimed check, run on a thread of its own and waited for in steps of
+// 50 ms, so that a cancel signal or the budget stops the wait at once. On
+// a stop the thread is left running with its own copy of the model
+// (*abandoned): the caller must not return through `sut`.
+void run_one_check(const Planned& p, const CapabilityCheck& check, const std::shared_ptr<const Node>& model,
+                   Implementation& sut, const MeshProgram& mesh, const MeshCertifyOptions& options,
+                   Clock::time_point t0, MeshCheckOutcome* o, MeshCertification* out) {
+  const auto t = Clock::now();
+  const CapabilityRequest request{p.capability, p.level == 0 ? 1 : p.level, std::nullopt};
+  sut.expect_answer_bytes(expected_answer_bytes(p.capability, p.level, mesh));
+  auto result = std::make_shared<std::promise<std::optional<Finding>>>();
+  std::future<std::optional<Finding>> done = result->get_future();
+  std::thread([result, &check, model, &sut, request] {
+    result->set_value(run_capability_check(check, *model, sut, request));
+  }).detach();
+  while (done.wait_for(std::chrono::milliseconds(50)) != std::future_status::ready) {
+    const std::string why = stop_reason(options, t0);
+    if (why.empty()) continue;
+    o->status = "stopped";
+    o->note = why + " during this check";
+    o->seconds = since(t);
+    out->abandoned = true;
+    out->stopped_why = why;
+    return;
+  }
+  std::optional<Finding> f = done.get();
+  o->seconds = since(t);
+  if (!f) {
+    o->status = "pass";
+  } else if (f->status == FindingStatus::NotJudged) {
+    o->status = "not-judged";
+    o->note = f->message;
+  } else if (f->status == FindingStatus::Timeout) {
+    // No answer within vgc's limits: no verdict (the run is incomplete).
+    o->status = "timeout";
+    o->note = f->message;
+  } else {
+    o->status = "fail";
+    o->finding = std::move(f);
+  }
+}
+
+}  // namespace
+
+MeshCertification certify_mesh(const MeshProgram& mesh, Implementation& sut, const MeshCertifyOptions& options) {
   MeshCertification out;
   out.commands = mesh.program.commands.size();
-  Node model;
+  auto model = std::make_shared<Node>();
   const auto t0 = Clock::now();
-  out.build_failure = build(mesh, sut, &model);
+  out.build_failure = build(mesh, sut, model.get(), [&] { return stop_reason(options, t0); }, &out.stopped_why);
   out.build_seconds = since(t0);
-  if (out.build_failure) return out;
+  if (out.build_failure || !out.stopped_why.empty()) return out;
+  out.built = true;
   const std::vector<std::string> claimed = query_capabilities(sut);
-  struct Planned {
-    const char* capability;
-    const char* clause;
-    int level;
-  };
-  std::vector<Planned> plan = {{"manifold", "MESH-CLASSIFY-1", 0}, {"normals", "NORMALS-SPLIT-1", 0}};
-  for (int l = 1; l <= levels; ++l) plan.push_back({"subdivision", "SUBD-CATMARK-1", l});
-  if (all_triangles(mesh))
-    for (int l = 1; l <= levels; ++l) plan.push_back({"loop", "LOOP-TRIANGLE-1", l});
-  for (const Planned& p : plan) {
+  for (const Planned& p : plan_checks(mesh, options)) {
     MeshCheckOutcome o;
     o.capability = p.capability;
     o.clause = p.clause;
@@ -126,27 +240,19 @@ MeshCertification certify_mesh(const ObjMesh& mesh, Implementation& sut, int lev
     } else if (!check || (!check->check && !check->check_drawn)) {
       o.status = "no-oracle";
       o.note = "this vgc has no oracle linked for \"" + std::string(p.capability) + "\"";
+    } else if (!out.stopped_why.empty() || !(o.note = stop_reason(options, t0)).empty()) {
+      o.status = "stopped";
+      if (out.stopped_why.empty()) out.stopped_why = o.note;
+      o.note = out.stopped_why + " before this check";
     } else {
-      const auto t = Clock::now();
-      const CapabilityRequest request{p.capability, p.level == 0 ? 1 : p.level, std::nullopt};
-      std::optional<Finding> f = run_capability_check(*check, model, sut, request);
-      o.seconds = since(t);
-      if (!f) {
-        o.status = "pass";
-      } else if (f->status == FindingStatus::NotJudged) {
-        o.status = "not-judged";
-        o.note = f->message;
-      } else {
-        o.status = "fail";
-        o.finding = std::move(f);
-      }
+      run_one_check(p, *check, model, sut, mesh, options, t0, &o, &out);
     }
     out.checks.push_back(std::move(o));
   }
   return out;
 }
 
-RunResult mesh_run_result(const MeshCertification& m, const ObjMesh& mesh, const std::string& implementation,
+RunResult mesh_run_result(const MeshCertification& m, const MeshProgram& mesh, const std::string& implementation,
                           double seconds) {
   RunResult run;
   run.implementation = implementation;
@@ -154,7 +260,8 @@ RunResult mesh_run_result(const MeshCertification& m, const ObjMesh& mesh, const
   run.options.seed = 0;
   run.seconds = seconds;
   run.conformant = !m.any_failed();
-  run.complete = true;
+  run.complete = !m.any_incomplete();
+  if (cancel_signal()) run.cancelled_by = cancel_signal_name();
   const std::string found_by = "mesh";
   const std::string origin = "The mesh's program, as vgc import writes it (a user's mesh is judged whole, not shrunk)";
   // The build judges the node's storage of the whole mesh: its snapshot is
@@ -164,10 +271,28 @@ RunResult mesh_run_result(const MeshCertification& m, const ObjMesh& mesh, const
   built.status = m.build_failure ? "fail" : "pass";
   built.cases = built.cases_target = built.judged = 1;
   built.seconds = m.build_seconds;
+  if (!m.build_failure && !m.built) {  // stopped (cancelled, the budget) before the mesh was built
+    built.status = "stopped";
+    built.note = m.stopped_why;
+    built.judged = 0;
+    run.properties.push_back(built);
+    run.complete = false;
+    return run;
+  }
   run.properties.push_back(built);
   if (m.build_failure) {
     ClauseOutcome co;
     co.clause = find_clause(m.build_failure->clause);
+    if (m.build_failure->status == FindingStatus::Timeout) {  // vgc's limit: no verdict
+      run.properties.back().status = "stopped";
+      run.properties.back().note = m.build_failure->message;
+      co.status = "unchecked";
+      co.note = m.build_failure->message;
+      co.properties = {built.id};
+      run.complete = false;
+      if (co.clause) run.clauses.push_back(std::move(co));
+      return run;
+    }
     co.status = "fail";
     co.finding = m.build_failure;
     co.found_by = built.id;
@@ -195,8 +320,8 @@ RunResult mesh_run_result(const MeshCertification& m, const ObjMesh& mesh, const
   for (const auto& c : m.checks) {
     PropertyOutcome p;
     p.id = found_by + "." + c.capability + (c.level ? ".level" + std::to_string(c.level) : "");
-    p.status = c.status == "pass" || c.status == "fail" ? c.status : "skipped";
-    if (p.status == "skipped") p.note = c.note;
+    p.status = c.status == "pass" || c.status == "fail" || c.status == "stopped" ? c.status : "skipped";
+    if (p.status == "skipped" || p.status == "stopped") p.note = c.note;
     p.cases_target = 1;
     p.cases = c.status == "not-claimed" || c.status == "no-oracle" ? 0 : 1;
     p.judged = c.status == "pass" || c.status == "fail" ? 1 : 0;
@@ -213,7 +338,7 @@ RunResult mesh_run_result(const MeshCertification& m, const ObjMesh& mesh, const
     ClauseOutcome co;
     co.clause = find_clause(id);
     if (!co.clause) continue;
-    bool any_pass = false, claimed = false;
+    bool any_pass = false, claimed = false, timed_out = false;
     std::string unjudged;
     for (const auto& c : m.checks) {
       if (c.clause != id) continue;
@@ -224,8 +349,10 @@ RunResult mesh_run_result(const MeshCertification& m, const ObjMesh& mesh, const
         ++co.exercised;
       }
       if (c.status == "pass") any_pass = true;
-      if ((c.status == "not-judged" || c.status == "no-oracle") && unjudged.empty())
+      const bool no_verdict = c.status == "timeout" || c.status == "stopped";
+      if ((c.status == "not-judged" || c.status == "no-oracle" || no_verdict) && unjudged.empty())
         unjudged = prop + ": " + c.note;
+      if (no_verdict) timed_out = true;
       if (c.status == "fail" && !co.finding) {
         co.finding = c.finding;
         co.found_by = prop;
@@ -236,7 +363,7 @@ RunResult mesh_run_result(const MeshCertification& m, const ObjMesh& mesh, const
     }
     if (co.finding) co.status = "fail";
     else if (!claimed) co.status = "not-claimed", co.note = "the implementation does not claim it";
-    else if (!unjudged.empty() && !any_pass) co.status = "unchecked", co.note = unjudged;
+    else if (!unjudged.empty() && (!any_pass || timed_out)) co.status = "unchecked", co.note = unjudged;
     else co.status = "pass";
     if (co.status == "unchecked") run.complete = false;
     run.clauses.push_back(std::move(co));

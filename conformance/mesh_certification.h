@@ -5,7 +5,7 @@
 // SUBD-CATMARK-1 ("subdivision", against OpenSubdiv, per level),
 // NORMALS-SPLIT-1 ("normals") and LOOP-TRIANGLE-1 ("loop", per level, on an
 // all-triangle mesh), through the checks the oracle layer registers
-// (capability.h); the mesh as obj_import.h builds it.
+// (capability.h); the mesh as mesh_program.h builds it.
 //
 // Rationale: generated cases hold a handful of polygons; a production mesh
 // holds 10^4 to 10^6 and may show what they never do. The mesh is built on
@@ -26,7 +26,7 @@
 
 #include "check_step.h"
 #include "implementation.h"
-#include "obj_import.h"
+#include "mesh_program.h"
 #include "runner.h"
 
 namespace vgc {
@@ -35,7 +35,7 @@ struct MeshCheckOutcome {
   std::string capability;  // "manifold", "subdivision", "normals", "loop"
   std::string clause;      // MESH-CLASSIFY-1, ...
   int level = 0;           // the subdivision level (0 for manifold and normals)
-  std::string status;      // "pass", "fail", "not-judged", "not-claimed", "no-oracle"
+  std::string status;      // "pass", "fail", "not-judged", "not-claimed", "no-oracle", "timeout", "stopped"
   std::optional<Finding> finding;  // for "fail"
   std::string note;        // for "not-judged", "not-claimed", "no-oracle"
   double seconds = 0;
@@ -53,9 +53,28 @@ struct MeshCertification {
   // ran and matched the reference, or when any check passed or failed.
   bool any_judged() const;
   bool any_failed() const;
+  // A check (or the build's snapshot) stopped at a limit of vgc's (time,
+  // answer size): no verdict on it, the run is incomplete (exit 2).
+  bool any_incomplete() const;
+  bool built = false;      // the mesh was built and its snapshot compared
+  bool abandoned = false;  // a check was left running (see MeshCertifyOptions)
+  std::string stopped_why;  // "cancelled by SIGTERM", "the budget of 10 s ran out"
 };
 
-MeshCertification certify_mesh(const ObjMesh& mesh, Implementation& sut, int levels);
+// What certify's options select (cli/cmd_certify.cpp --levels, --clauses,
+// --budget). A check whose clause the glob does not select is left out; a
+// check not started within the budget, or when the run is cancelled
+// (cancel.h), is "stopped" and the run incomplete. A check in progress is
+// waited for in steps of 50 ms: on cancellation or at the budget it is
+// abandoned (`abandoned`: a thread still runs it, so the caller writes its
+// report and exits without returning through the implementation).
+struct MeshCertifyOptions {
+  int levels = 2;
+  std::string clauses = "*";
+  double budget_seconds = 0;  // 0: none
+};
+
+MeshCertification certify_mesh(const MeshProgram& mesh, Implementation& sut, const MeshCertifyOptions& options);
 
 // The certification as a run the report writers take (report.h): one
 // "property" per check and level (mesh.<capability>[.level<N>], one case
@@ -68,7 +87,7 @@ MeshCertification certify_mesh(const ObjMesh& mesh, Implementation& sut, int lev
 // POLY-CORNERS-1 (the storage a difference would be blamed on) passed. A
 // route that reports no verdicts (the Verse wire) is judged by the snapshot
 // at the end alone.
-RunResult mesh_run_result(const MeshCertification& m, const ObjMesh& mesh, const std::string& implementation,
+RunResult mesh_run_result(const MeshCertification& m, const MeshProgram& mesh, const std::string& implementation,
                           double seconds);
 
 }  // namespace vgc

@@ -9,6 +9,8 @@
 #include <set>
 #include <sstream>
 #include <string>
+#include <string_view>
+#include <unordered_map>
 #include <vector>
 
 #include "cgal_manifold.h"
@@ -31,10 +33,15 @@ Finding finding(const char* clause, std::string message, FindingStatus st = Find
 std::optional<Finding> check_answer(const char* clause, const std::string& request, const Document& d,
                                     const char* header) {
   if (d.status != CallStatus::Ok) {
-    const FindingStatus st = d.status == CallStatus::Timeout ? FindingStatus::Timeout
-                             : d.status == CallStatus::Crash ? FindingStatus::Crash
-                                                             : FindingStatus::Fail;
-    return finding(clause, std::string(call_status_name(d.status)) + " on " + request + ": " + d.detail, st);
+    // A limit of vgc's (time, answer size) is no verdict on the
+    // implementation: a timeout naming what to raise, never a fail.
+    const FindingStatus st = d.status == CallStatus::Timeout || !d.limit.empty() ? FindingStatus::Timeout
+                             : d.status == CallStatus::Crash                     ? FindingStatus::Crash
+                                                                                 : FindingStatus::Fail;
+    return finding(clause,
+                   std::string(call_status_name(d.status)) + " on " + request + ": " + d.detail +
+                       (d.limit.empty() ? "" : " (a limit of vgc's, not a verdict: raise " + d.limit + ")"),
+                   st);
   }
   if (d.text.rfind(std::string(header) + " 1\n", 0) != 0)
     return finding(clause, "answered " + request + " with \"" + d.text.substr(0, d.text.find('\n')) +
@@ -43,21 +50,37 @@ std::optional<Finding> check_answer(const char* clause, const std::string& reque
   return std::nullopt;
 }
 
-// "key value" lines of a document (first word -> rest), header and end left out.
-std::vector<std::pair<std::string, std::string>> document_lines(const std::string& text) {
-  std::vector<std::pair<std::string, std::string>> out;
-  std::istringstream in(text);
-  std::string line;
-  std::getline(in, line);  // header
-  while (std::getline(in, line)) {
+// "key value" lines of a document (first word -> rest), header and end
+// left out: views into `text` (a level-2 answer holds 10^6 lines; a string
+// pair per line was most of reading it).
+using DocumentLine = std::pair<std::string_view, std::string_view>;
+std::vector<DocumentLine> document_lines(std::string_view text) {
+  std::vector<DocumentLine> out;
+  std::size_t at = text.find('\n');  // past the header
+  at = at == std::string_view::npos ? text.size() : at + 1;
+  while (at < text.size()) {
+    std::size_t end = text.find('\n', at);
+    if (end == std::string_view::npos) end = text.size();
+    const std::string_view line = text.substr(at, end - at);
+    at = end + 1;
     if (line == "end") break;
     const auto sp = line.find(' ');
-    out.emplace_back(line.substr(0, sp), sp == std::string::npos ? std::string() : line.substr(sp + 1));
+    out.emplace_back(line.substr(0, sp), sp == std::string_view::npos ? std::string_view() : line.substr(sp + 1));
   }
   return out;
 }
 
-
+// The words of `s` (split on spaces).
+std::vector<std::string_view> words_of(std::string_view s) {
+  std::vector<std::string_view> out;
+  for (std::size_t i = 0; i < s.size();) {
+    while (i < s.size() && s[i] == ' ') ++i;
+    const std::size_t start = i;
+    while (i < s.size() && s[i] != ' ') ++i;
+    if (i > start) out.push_back(s.substr(start, i - start));
+  }
+  return out;
+}
 
 std::string point_text(const std::array<double, 3>& p) {
   return "(" + format_f64(p[0]) + ", " + format_f64(p[1]) + ", " + format_f64(p[2]) + ")";
@@ -74,26 +97,24 @@ struct SubdivisionAnswer {
 // Reads `text`; the problem as a message, or nullopt.
 std::optional<std::string> read_subdivision(const std::string& text, SubdivisionAnswer* out) {
   for (const auto& [k, v] : document_lines(text)) {
-    std::istringstream in(v);
     if (k == "vertex") {
-      std::string x, y, z;
+      const std::vector<std::string_view> w = words_of(v);
       std::array<double, 3> p{};
-      if (!(in >> x >> y >> z) || !parse_f64(x, &p[0]) || !parse_f64(y, &p[1]) || !parse_f64(z, &p[2]))
-        return "unreadable line \"vertex " + v + "\"";
+      if (w.size() < 3 || !parse_f64(w[0], &p[0]) || !parse_f64(w[1], &p[1]) || !parse_f64(w[2], &p[2]))
+        return "unreadable line \"vertex " + std::string(v) + "\"";
       out->vertices.push_back(p);
     } else if (k == "face") {
       std::vector<int> f;
-      std::string w;
-      while (in >> w) {
+      for (std::string_view w : words_of(v)) {
         std::uint32_t i = 0;
-        if (!parse_uint(w, 32, &i) || i > 0x7FFFFFFFu) return "unreadable line \"face " + v + "\"";
+        if (!parse_uint(w, 32, &i) || i > 0x7FFFFFFFu) return "unreadable line \"face " + std::string(v) + "\"";
         f.push_back(static_cast<int>(i));
       }
       out->face_lines.push_back(std::move(f));
     } else if (k == "faces") {
-      out->faces = std::strtol(v.c_str(), nullptr, 10);
+      out->faces = std::strtol(std::string(v).c_str(), nullptr, 10);
     } else if (k == "level") {
-      out->level = std::strtol(v.c_str(), nullptr, 10);
+      out->level = std::strtol(std::string(v).c_str(), nullptr, 10);
     }
   }
   for (const auto& f : out->face_lines)
@@ -107,27 +128,39 @@ std::optional<std::string> read_subdivision(const std::string& text, Subdivision
 // `tol` (max norm); got_to_want[g] is the partner of got[g] or -1. The
 // first want vertex left without a partner, or nullopt when all have one;
 // with `all_unmatched`, goes on and lists every want vertex left without.
+// The answer is sorted by (x cell of width tol, y): a want vertex looks in
+// three x cells, each by binary search on y, so a mesh whose vertices share
+// one x (a plane x = c: every level of a cube's face) costs n log n, not n^2
+// as a window on x alone did.
 std::optional<std::size_t> match_vertices(const std::vector<std::array<double, 3>>& got,
                                           const std::vector<std::array<double, 3>>& want, double tol,
                                           std::vector<int>* got_to_want,
                                           std::vector<std::size_t>* all_unmatched = nullptr) {
-  // Both sides by x: each want vertex takes the nearest unused answer within the tolerance.
-  std::vector<std::size_t> order(got.size());
-  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return got[a][0] < got[b][0]; });
-  std::vector<double> xs(order.size());
-  for (std::size_t i = 0; i < order.size(); ++i) xs[i] = got[order[i]][0];
+  auto cell = [tol](double x) { return static_cast<long long>(std::floor(x / tol)); };
+  struct Key {
+    long long cx;
+    double y;
+    std::size_t g;
+  };
+  std::vector<Key> keys(got.size());
+  for (std::size_t g = 0; g < got.size(); ++g) keys[g] = {cell(got[g][0]), got[g][1], g};
+  std::sort(keys.begin(), keys.end(), [](const Key& a, const Key& b) { return a.cx != b.cx ? a.cx < b.cx : a.y < b.y; });
   got_to_want->assign(got.size(), -1);
   for (std::size_t w = 0; w < want.size(); ++w) {
     const auto& p = want[w];
-    auto lo = std::lower_bound(xs.begin(), xs.end(), p[0] - tol);
     std::size_t best = got.size();
     double best_d = tol;
-    for (auto it = lo; it != xs.end() && *it <= p[0] + tol; ++it) {
-      const std::size_t g = order[static_cast<std::size_t>(it - xs.begin())];
-      if ((*got_to_want)[g] >= 0) continue;
-      const double dist = std::max({std::fabs(got[g][0] - p[0]), std::fabs(got[g][1] - p[1]), std::fabs(got[g][2] - p[2])});
-      if (dist <= best_d) best = g, best_d = dist;
+    const long long c = cell(p[0]);
+    for (long long cx = c - 1; cx <= c + 1; ++cx) {
+      auto lo = std::lower_bound(keys.begin(), keys.end(), Key{cx, p[1] - tol, 0},
+                                 [](const Key& a, const Key& b) { return a.cx != b.cx ? a.cx < b.cx : a.y < b.y; });
+      for (auto it = lo; it != keys.end() && it->cx == cx && it->y <= p[1] + tol; ++it) {
+        const std::size_t g = it->g;
+        if ((*got_to_want)[g] >= 0) continue;
+        const double dist =
+            std::max({std::fabs(got[g][0] - p[0]), std::fabs(got[g][1] - p[1]), std::fabs(got[g][2] - p[2])});
+        if (dist <= best_d) best = g, best_d = dist;
+      }
     }
     if (best == got.size()) {
       if (!all_unmatched) return w;
@@ -205,7 +238,7 @@ std::optional<Finding> check_classify(const Node& model, Implementation& sut) {
   const Document d = sut.request("?classify");
   if (auto f = check_answer(kClause, "?classify", d, "vgc-classify")) return f;
   std::map<std::string, std::string> got;
-  for (const auto& [k, v] : document_lines(d.text)) got[k] = v;
+  for (const auto& [k, v] : document_lines(d.text)) got[std::string(k)] = std::string(v);
 
   const MeshArrays mesh = extract_mesh(model);
   const CgalManifoldReport cgal = cgal_classify_mesh(mesh);
@@ -272,24 +305,24 @@ std::optional<Finding> check_normals(const Node& model, Implementation& sut) {
   if (auto f = check_answer(kClause, request, d, "vgc-normals")) return f;
 
   // The answer, per corner of the mesh (face_offsets order).
-  std::map<std::uint32_t, int> face_of_id;
+  std::unordered_map<std::uint32_t, int> face_of_id;
   for (int f = 0; f < mesh.face_count(); ++f) face_of_id[mesh.polygon_ids[static_cast<std::size_t>(f)]] = f;
   const std::size_t corners = mesh.face_vertices.size();
   std::vector<std::array<double, 3>> got(corners);
   std::vector<char> seen(corners, 0);
   for (const auto& [k, v] : document_lines(d.text)) {
-    std::istringstream in(v);
-    std::string id_text, corner_text, x, y, z;
+    const std::vector<std::string_view> w = words_of(v);
     std::uint32_t id = 0, corner = 0;
     std::array<double, 3> n{};
-    if (k != "corner" || !(in >> id_text >> corner_text >> x >> y >> z) || !parse_uint(id_text, 32, &id) ||
-        !parse_uint(corner_text, 32, &corner) || !parse_f64(x, &n[0]) || !parse_f64(y, &n[1]) || !parse_f64(z, &n[2]))
-      return finding(kClause, request + ": unreadable line \"" + k + " " + v + "\"");
+    if (k != "corner" || w.size() < 5 || !parse_uint(w[0], 32, &id) || !parse_uint(w[1], 32, &corner) ||
+        !parse_f64(w[2], &n[0]) || !parse_f64(w[3], &n[1]) || !parse_f64(w[4], &n[2]))
+      return finding(kClause, request + ": unreadable line \"" + std::string(k) + " " + std::string(v) + "\"");
     auto it = face_of_id.find(id);
     if (it == face_of_id.end() || static_cast<int>(corner) >= mesh.face_sizes[static_cast<std::size_t>(it->second)])
-      return finding(kClause, request + ": \"corner " + v + "\" names no corner of a live polygon");
+      return finding(kClause, request + ": \"corner " + std::string(v) + "\" names no corner of a live polygon");
     const auto c = static_cast<std::size_t>(mesh.face_offsets[static_cast<std::size_t>(it->second)]) + corner;
-    if (seen[c]) return finding(kClause, request + ": corner " + id_text + " " + corner_text + " is given twice");
+    if (seen[c])
+      return finding(kClause, request + ": corner " + std::string(w[0]) + " " + std::string(w[1]) + " is given twice");
     seen[c] = 1;
     got[c] = n;
   }
@@ -317,14 +350,32 @@ std::optional<Finding> check_normals(const Node& model, Implementation& sut) {
   // The edges, as spec 003 defines sharpness: tagged (a corner crease
   // 0xFFFFFFFF on either side), not used by exactly two faces, or used by
   // two faces in the same direction. Corner c carries the edge c -> next.
-  std::map<std::pair<int, int>, std::vector<std::size_t>> uses;
+  // The corners using each edge: corners sorted by edge key, each corner's
+  // run of that order (sorting, not a map of vectors: linear-ish in the mesh).
   auto edge_key = [&](std::size_t c) {
-    const int a = mesh.face_vertices[c], b = mesh.face_vertices[corner_at(c, 1)];
-    return std::make_pair(std::min(a, b), std::max(a, b));
+    const auto a = static_cast<std::uint32_t>(mesh.face_vertices[c]);
+    const auto b = static_cast<std::uint32_t>(mesh.face_vertices[corner_at(c, 1)]);
+    return (static_cast<std::uint64_t>(std::min(a, b)) << 32) | std::max(a, b);
   };
-  for (std::size_t c = 0; c < corners; ++c) uses[edge_key(c)].push_back(c);
+  std::vector<std::pair<std::uint64_t, std::size_t>> by_edge(corners);
+  for (std::size_t c = 0; c < corners; ++c) by_edge[c] = {edge_key(c), c};
+  std::sort(by_edge.begin(), by_edge.end());
+  std::vector<std::size_t> sorted_corner(corners), run_start(corners), run_size(corners);
+  for (std::size_t i = 0; i < corners;) {
+    std::size_t j = i;
+    while (j < corners && by_edge[j].first == by_edge[i].first) ++j;
+    for (std::size_t k = i; k < j; ++k) {
+      sorted_corner[k] = by_edge[k].second;
+      run_start[by_edge[k].second] = i, run_size[by_edge[k].second] = j - i;
+    }
+    i = j;
+  }
+  auto uses_of = [&](std::size_t c) {
+    return std::vector<std::size_t>(sorted_corner.begin() + static_cast<std::ptrdiff_t>(run_start[c]),
+                                    sorted_corner.begin() + static_cast<std::ptrdiff_t>(run_start[c] + run_size[c]));
+  };
   auto sharp = [&](std::size_t c) {
-    const auto& u = uses[edge_key(c)];
+    const auto u = uses_of(c);
     if (u.size() != 2 || mesh.face_vertices[u[0]] == mesh.face_vertices[u[1]]) return true;
     for (std::size_t x : u)
       if (x < mesh.corner_edge_creases.size() && mesh.corner_edge_creases[x] == 0xFFFFFFFFu) return true;
@@ -334,7 +385,7 @@ std::optional<Finding> check_normals(const Node& model, Implementation& sut) {
   // corners at a (c and next(o)) and at b (next(c) and o) share a fan.
   for (std::size_t c = 0; c < corners; ++c) {
     if (sharp(c)) continue;
-    const auto& u = uses[edge_key(c)];
+    const auto u = uses_of(c);
     const std::size_t o = u[0] == c ? u[1] : u[0];
     for (const auto& [p, q] : {std::make_pair(c, corner_at(o, 1)), std::make_pair(corner_at(c, 1), o)})
       if (differ(got[p], got[q]))
@@ -468,11 +519,12 @@ std::optional<Finding> check_loop(const Node& model, Implementation& sut, int le
                                 "has " + std::to_string(tree.size()) + " triangles at level " + std::to_string(level));
   static const char* kChild[] = {"T0 (the centre)", "T1 (nearest vertex 0)", "T2 (nearest vertex 1)",
                                  "T3 (nearest vertex 2)"};
+  // By position (the vertices already matched one to one): coinciding
+  // vertices make any pairing by index arbitrary. One tolerance for the
+  // level (it was computed per face line: faces x vertices).
+  const double tol = tolerance_of(osd.levels.back().positions);
   for (std::size_t i = 0; i < tree.size(); ++i) {
     const auto& line = got.face_lines[i];
-    // By position (the vertices already matched one to one): coinciding
-    // vertices make any pairing by index arbitrary.
-    const double tol = tolerance_of(osd.levels.back().positions);
     bool same = line.size() == 3;
     for (std::size_t k = 0; same && k < 3; ++k)
       same = near(got.vertices[static_cast<std::size_t>(line[k])],

@@ -67,9 +67,12 @@ inline constexpr std::size_t kMaxSendPacketBytes = 1400;
 // until acks come (r6 V_NOQ_WINDOW_SIZE is 100000; ours is smaller so a
 // burst cannot overflow a peer's socket buffer).
 inline constexpr std::size_t kWindowBytes = 48 * 1024;
-// A packet id more than this past the expected one is a protocol error
-// (r6 would nak every id in between).
-inline constexpr std::uint32_t kMaxPacketGap = 1024;
+// A packet id up to this past the expected one: every id in between is
+// naked, as r6 does (a burst the kernel dropped, 2,000 packets and more,
+// resynchronises); further is a protocol error (a hostile id must not cost
+// 4 * 10^9 naks). It was 1,024, and a session that lost more was stuck for
+// good (issue 28).
+inline constexpr std::uint32_t kMaxPacketGap = 65536;
 
 class Channel {
  public:

@@ -10,6 +10,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <utility>
 #include <cmath>
 #include <mutex>
 #include <thread>
@@ -160,6 +161,7 @@ bool ExecImplementation::spawn(std::string* error) {
   set_nonblocking(out_fd_);
   set_nonblocking(err_fd_);
   out_buf_.clear();
+  out_pos_ = 0;
   err_partial_.clear();
   err_lines_.clear();
   return true;
@@ -213,7 +215,7 @@ bool ExecImplementation::pump(bool want_write, Clock::time_point dl, bool* can_w
     int out_i = -1, err_i = -1, in_i = -1;
     if (cancel_fd() >= 0) fds[n++] = {cancel_fd(), POLLIN, 0};
     // Stop reading stdout once it holds more than any acceptable answer.
-    if (out_fd_ >= 0 && out_buf_.size() <= options_.max_answer_bytes) {
+    if (out_fd_ >= 0 && buffered() <= answer_limit()) {
       out_i = n;
       fds[n++] = {out_fd_, POLLIN, 0};
     }
@@ -288,16 +290,25 @@ ExecImplementation::Io ExecImplementation::write_all(const std::string& data, Cl
 ExecImplementation::Io ExecImplementation::read_line(std::string* line, Clock::time_point dl) {
   std::size_t scanned = 0;
   for (;;) {
-    const std::size_t nl = out_buf_.find('\n', scanned);
+    const std::size_t nl = out_buf_.find('\n', out_pos_ + scanned);
     if (nl != std::string::npos) {
-      if (nl > options_.max_answer_bytes) return Io::TooLong;
-      line->assign(out_buf_, 0, nl);
-      out_buf_.erase(0, nl + 1);
+      if (nl - out_pos_ > answer_limit()) return Io::TooLong;
+      line->assign(out_buf_, out_pos_, nl - out_pos_);
+      out_pos_ = nl + 1;
+      // Taken lines are dropped in bulk: erasing each line from the front
+      // moved the rest of a 64 KiB read per line (a 10^6-line answer).
+      if (out_pos_ == out_buf_.size()) {
+        out_buf_.clear();
+        out_pos_ = 0;
+      } else if (out_pos_ > (std::size_t{1} << 20) && out_pos_ > out_buf_.size() / 2) {
+        out_buf_.erase(0, out_pos_);
+        out_pos_ = 0;
+      }
       if (!line->empty() && line->back() == '\r') line->pop_back();
       return Io::Ok;
     }
-    scanned = out_buf_.size();
-    if (out_buf_.size() > options_.max_answer_bytes) return Io::TooLong;
+    scanned = buffered();
+    if (buffered() > answer_limit()) return Io::TooLong;
     if (out_fd_ < 0) return Io::Eof;
     if (!pump(false, dl, nullptr)) return Io::Timeout;
   }
@@ -307,12 +318,12 @@ ExecImplementation::Io ExecImplementation::exchange(const std::string& line, std
                                                     Clock::time_point dl) {
   // Output nobody asked for (a second answer line, a banner) would be
   // taken for the answer to this request: refuse what has already arrived.
-  if (out_buf_.empty() && out_fd_ >= 0) {
+  if (buffered() == 0 && out_fd_ >= 0) {
     char buf[4096];
     const ssize_t r = read(out_fd_, buf, sizeof buf);
     if (r > 0) out_buf_.append(buf, static_cast<std::size_t>(r));
   }
-  if (!out_buf_.empty()) return Io::Unrequested;
+  if (buffered() != 0) return Io::Unrequested;
   const Io w = write_all(line + "\n", dl);
   if (w != Io::Ok) return w;  // WriteFailed: it closed its stdin or died
   return read_line(answer, dl);
@@ -373,11 +384,12 @@ void ExecImplementation::fail_io(Io io, const std::string& what) {
   switch (io) {
     case Io::Ok: return;
     case Io::Timeout:
-      fail(CallStatus::Timeout, "no complete answer to " + what + " within " + seconds_text(options_.timeout_seconds));
+      fail(CallStatus::Timeout, "no complete answer to " + what + " within " +
+                                    seconds_text(request_timeout_ > 0 ? request_timeout_ : options_.timeout_seconds));
       return;
     case Io::TooLong:
       fail(CallStatus::ProtocolError, "the answer to " + what + " is longer than " +
-                                          std::to_string(options_.max_answer_bytes) + " bytes");
+                                          std::to_string(answer_limit()) + " bytes");
       return;
     case Io::Eof:
       fail(CallStatus::Crash, "end of its output while answering " + what);
@@ -386,7 +398,7 @@ void ExecImplementation::fail_io(Io io, const std::string& what) {
       fail(CallStatus::Crash, "its input was closed when sending " + what);
       return;
     case Io::Unrequested: {
-      const std::string first = out_buf_.substr(0, out_buf_.find('\n'));
+      const std::string first = out_buf_.substr(out_pos_, out_buf_.find('\n', out_pos_) - out_pos_);
       fail(CallStatus::ProtocolError, "it wrote " + quote_line(first) + " before being sent " + what +
                                           " (more than one answer line to an earlier request?)");
       return;
@@ -555,7 +567,13 @@ Document ExecImplementation::request_document(const char* request, const char* h
     d.detail = a.detail;
     return d;
   }
-  const auto dl = deadline();
+  // Limits for this answer: the options' own, or scaled to the answer
+  // expected (expect_answer_bytes), 4 MiB per --timeout.
+  const std::size_t expected = std::exchange(next_request_bytes_, 0);
+  answer_limit_ = std::max(options_.max_answer_bytes, 4 * expected);
+  request_timeout_ = options_.timeout_seconds * (1.0 + static_cast<double>(expected) / (4 << 20));
+  const auto dl = Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(
+                                     std::max(0.0, request_timeout_)));
   std::string line;
   Io io = exchange(request, &line, dl);
   const std::string head = std::string(header) + " ";
@@ -570,8 +588,11 @@ Document ExecImplementation::request_document(const char* request, const char* h
     while (io == Io::Ok) {
       d.text += line;
       d.text += '\n';
-      if (line == "end") return d;
-      if (d.text.size() > options_.max_answer_bytes) {
+      if (line == "end") {
+        answer_limit_ = 0, request_timeout_ = 0;
+        return d;
+      }
+      if (d.text.size() > answer_limit()) {
         io = Io::TooLong;
         break;
       }
@@ -579,6 +600,9 @@ Document ExecImplementation::request_document(const char* request, const char* h
     }
     fail_io(io, request);
   }
+  if (io == Io::Timeout) d.limit = "--timeout";
+  if (io == Io::TooLong) d.limit = "the answer size limit";
+  answer_limit_ = 0, request_timeout_ = 0;
   d.status = failed_;
   d.detail = failed_detail_;
   d.text.clear();

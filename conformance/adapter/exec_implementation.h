@@ -57,6 +57,12 @@ class ExecImplementation final : public Implementation {
   // capability_document_header knows): read as a document like
   // ?snapshot; an "error ..." answer is returned as it is (status Ok).
   Document request(const std::string& line) override;
+  // The next request's document is expected to be about `bytes` long (a
+  // derived answer on a large mesh): its size limit becomes at least 4x
+  // that, and its time limit grows by --timeout per 4 MiB expected
+  // (request_limits), so that a correct implementation is never cut off
+  // by a limit sized for generated cases.
+  void expect_answer_bytes(std::size_t bytes) override { next_request_bytes_ = bytes; }
   // Asks ?capabilities once (per ExecImplementation, not per instance: the
   // same program) whether the program claims the word `digest`; call it on
   // a fresh node (a program that fails the question is started again).
@@ -108,6 +114,14 @@ class ExecImplementation final : public Implementation {
   int out_fd_ = -1;  // its stdout
   int err_fd_ = -1;  // its stderr
   std::string out_buf_;
+  std::size_t out_pos_ = 0;  // out_buf_ before it is read (a line is taken by moving it, not by erasing)
+  // The answer limits of the next request (expect_answer_bytes) and of the
+  // one being read; 0: the options' own.
+  std::size_t next_request_bytes_ = 0;
+  std::size_t answer_limit_ = 0;
+  double request_timeout_ = 0;
+  std::size_t answer_limit() const { return answer_limit_ ? answer_limit_ : options_.max_answer_bytes; }
+  std::size_t buffered() const { return out_buf_.size() - out_pos_; }
   std::string err_partial_;
   std::deque<std::string> err_lines_;
   int digest_claimed_ = -1;  // offers_digest(): -1 not asked yet, 0 no, 1 yes

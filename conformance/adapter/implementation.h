@@ -18,6 +18,7 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <utility>
 
 #include "command.h"
 #include "document_digest.h"
@@ -58,9 +59,15 @@ struct Answer {
 // The text documents of snapshot.h and derived_document.h, as the
 // implementation printed them.
 struct Document {
+  Document() = default;
+  Document(CallStatus s, std::string t, std::string d = {}) : status(s), text(std::move(t)), detail(std::move(d)) {}
   CallStatus status = CallStatus::Ok;
   std::string text;      // whole document including the final "end\n"
   std::string detail;
+  // Set when the call stopped at a limit of vgc's (time, answer size), not
+  // at anything the implementation did wrong: what to raise, e.g.
+  // "--timeout". A finding then is a timeout, never a fail (issue 28).
+  std::string limit;
 };
 
 // The answer to `?digest` (docs/adapters.md, document_digest.h): the digests
@@ -136,6 +143,11 @@ class Implementation {
   // costs what the command changed (check_step.h ProgramChecker); without
   // it, both documents are read after every command. Default: no.
   virtual bool offers_digest() { return false; }
+  // The next request()'s document is expected to be about `bytes` long
+  // (certify --mesh: a derived answer on a mesh of 10^5 faces): an
+  // out-of-process route scales its size and time limits to fit. Default:
+  // nothing to scale.
+  virtual void expect_answer_bytes(std::size_t bytes) { (void)bytes; }
   // The digests of its two documents now; only called when offers_digest().
   virtual DigestAnswer digest() { return {CallStatus::ProtocolError, {}, "not supported"}; }
 };

@@ -46,7 +46,7 @@ check() {  # check NAME EXPECTED_RC LINE-REGEX... : certify --mesh output has ea
   shift 2
   rc=$(cat "$name.rc")
   [ "$rc" = "$want" ] || { cat "$name.out" >&2; fail "$name: exit $rc, expected $want"; }
-  for re in "$@"; do grep -Eq "$re" "$name.out" || { cat "$name.out" >&2; fail "$name: no line matching $re"; }; done
+  for re in "$@"; do grep -Eq -e "$re" "$name.out" || { cat "$name.out" >&2; fail "$name: no line matching $re"; }; done
 }
 
 "$vgc" certify --mesh grid.obj --levels 2 >ref.out 2>&1; echo $? >ref.rc
@@ -66,6 +66,48 @@ grep -q '"id": "mesh.subdivision.level1"' "$run/report.json" || fail "skew: repo
 grep -q "^The mesh's program, as vgc import writes it (a user's mesh is judged whole, not shrunk) (25 commands, from a fresh node; found by \`mesh.subdivision.level1\`):" \
   "$run/summary.md" || fail "skew: summary.md does not say the program is the mesh's own"
 grep -q 'Shrunk counterexample' "$run/summary.md" "$run/report.html" && fail "skew: the mesh's program is called shrunk"
+
+# A right answer later than vgc's --timeout (3 s: a loaded machine starts the
+# proxy in over 1 s): a timeout naming what to raise,
+# the run incomplete (exit 2), never a fail of the clause (issue 28).
+VGC_PROXY_SLOW=8 "$vgc" certify --mesh grid.obj --levels 2 --timeout 3 \
+  --impl "exec:$here/subdivision_skew_proxy.py $vgc" --reports R >slow.out 2>&1; echo $? >slow.rc
+check slow 2 '^  timeout +SUBD-CATMARK-1 +subdivision level 2 .*raise --timeout' '^  pass +SUBD-CATMARK-1 +subdivision level 1' \
+  ': incomplete on grid.obj' 'give --timeout more seconds'
+grep -Eq '^  fail ' slow.out && { cat slow.out >&2; fail "slow: a limit of vgc's was reported as a fail"; }
+
+# --clauses, --budget and --levels are honoured with --mesh (issue 28 item 4).
+"$vgc" certify --mesh grid.obj --clauses 'SUBD-*' --levels 1 >sel.out 2>&1; echo $? >sel.rc
+check sel 0 '^  pass +SUBD-CATMARK-1 +subdivision level 1' ': conformant on grid.obj \(1 pass;'
+grep -Eq 'MESH-CLASSIFY-1|NORMALS-SPLIT-1|level 2' sel.out && { cat sel.out >&2; fail "sel: a check --clauses/--levels left out ran"; }
+"$vgc" certify --mesh grid.obj --clauses 'NOPE-*' >nope.out 2>&1; echo $? >nope.rc
+check nope 2 "--clauses pattern 'NOPE-\*' matches no clause id"
+"$vgc" certify --mesh grid.obj --budget 0.000001 >budget.out 2>&1; echo $? >budget.rc
+check budget 2 'stopped: the budget \(--budget 1e-06\) ran out' ': incomplete on grid.obj'
+grep -Eq '^  pass ' budget.out && { cat budget.out >&2; fail "budget: a check ran past the budget"; }
+
+# The first SIGTERM stops a long mesh check within a second and writes an
+# incomplete report (exit 143): a 150 x 150 quad grid, level 4.
+python3 -c '
+n = 150
+for j in range(n + 1):
+    for i in range(n + 1): print("v %d %d %g" % (i, j, ((i * 7 + j * 13) % 10) / 10.0))
+for j in range(n):
+    for i in range(n):
+        a = j * (n + 1) + i + 1
+        print("f %d %d %d %d" % (a, a + 1, a + n + 2, a + n + 1))' >big.obj
+"$vgc" certify --mesh big.obj --levels 4 --clauses 'SUBD-*' --reports C >cancel.out 2>&1 &
+pid=$!
+for _ in $(seq 100); do grep -q 'up to level 4' cancel.out && break; sleep 0.1; done
+sleep 2
+kill -TERM "$pid"
+t0=$(date +%s%N)
+wait "$pid"; echo $? >cancel.rc
+ms=$((($(date +%s%N) - t0) / 1000000))
+check cancel 143 'stopped: cancelled by SIGTERM' ': incomplete on big.obj'
+[ "$ms" -le 1000 ] || { cat cancel.out >&2; fail "cancel: the run took $ms ms to stop after SIGTERM"; }
+run=$(sed -n 's/^report: \(.*\)\/summary.md$/\1/p' cancel.out)
+grep -q '"verdict": "incomplete"' "$run/report.json" 2>/dev/null || { cat cancel.out >&2; fail "cancel: no incomplete report"; }
 
 VGC_FAULT=classify-misses-boundary "$vgc" certify --mesh grid.obj --impl "plugin:$requests" >classify.out 2>&1
 echo $? >classify.rc

@@ -4,16 +4,25 @@ subdivision is wrong: it forwards every line to a child `VGC serve` (the
 reference) and relays the answers, except that in the answer to
 `?subdivide N` the x of every 7th refined vertex is moved by 0.25. A
 stand-in for a node whose subdivision code is broken on real meshes
-(tests/ci/certify_mesh_test.sh)."""
+(tests/ci/certify_mesh_test.sh).
+
+With VGC_PROXY_SLOW=SECONDS it skews nothing: it answers `?subdivide 2`
+SECONDS late (a host too slow for vgc's --timeout, whose answer is right)."""
+import os
 import subprocess
 import sys
+import time
+
+slow = float(os.environ.get("VGC_PROXY_SLOW", "0"))
 
 child = subprocess.Popen([sys.argv[1], "serve"], stdin=subprocess.PIPE, stdout=subprocess.PIPE, text=True, bufsize=1)
 for line in sys.stdin:
     child.stdin.write(line)
     child.stdin.flush()
     request = line.strip()
-    skew = request.startswith("?subdivide ")
+    skew = request.startswith("?subdivide ") and not slow
+    if slow and request == "?subdivide 2":
+        time.sleep(slow)
     single = request in ("?hello", "?reset", "?quit") or not request.startswith("?")
     answer = child.stdout.readline()
     if not answer:

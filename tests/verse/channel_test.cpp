@@ -92,6 +92,25 @@ TEST(VerseChannel, AHugeIdJumpIsAProtocolErrorNotAMillionNaks) {
   EXPECT_EQ(b.counters().naks_sent, 0u);
 }
 
+// Issue 28: a peer whose 2,000 packets in a row were lost (a kernel's
+// socket buffer overflowing in a burst) is resynchronised: every missing id
+// is naked, as r6 does, and the packets after it are taken; with a gap
+// limit of 1,024 the session was stuck for good (each later packet a
+// protocol error).
+TEST(VerseChannel, TwoThousandLostPacketsAreNakedAndTheSessionGoesOn) {
+  const DataKey key = make_data_key();
+  Channel b(key, 0.25);
+  for (std::uint32_t id : {2u + 2000u, 2u + 2001u}) {
+    std::string d = build_packet(id, cmd_bytes(id));
+    xor_packet(&d, key);
+    std::vector<WireCommand> got;
+    const Status st = b.on_datagram(reinterpret_cast<const std::uint8_t*>(d.data()), d.size(), Clock::now(), &got);
+    EXPECT_TRUE(st.ok()) << "packet " << id << ": " << st.detail;
+    EXPECT_EQ(got.size(), 1u) << "packet " << id;
+  }
+  EXPECT_EQ(b.counters().naks_sent, 2000u);
+}
+
 TEST(VerseChannel, TheWindowHoldsBackCommandsUntilAcks) {
   const DataKey key = make_data_key();
   Channel a(key, 10.0), b(key, 10.0);
