@@ -800,7 +800,18 @@ RunResult run_certification(Implementation& implementation, const RunOptions& o)
       continue;
     }
     if (!spec.capability.empty()) {
-      if (!asked) claimed = query_capabilities(sut), asked = true;
+      // A cancelled run asks nothing more (the question would end unanswered
+      // and read as "claims nothing"): what the implementation claims is
+      // then unknown, and its capability clauses unchecked, not not-claimed.
+      if (!asked && !cancel_signal()) claimed = query_capabilities(sut), asked = !cancel_signal();
+      if (!asked) {
+        skipped.status = "stopped";
+        skipped.cases_target = property_cases(spec, o.cases);
+        skipped.note = std::string("cancelled by ") + cancel_signal_name() +
+                       " before the implementation was asked which capabilities it claims";
+        run.properties.push_back(skipped);
+        continue;
+      }
       if (std::find(claimed.begin(), claimed.end(), spec.capability) == claimed.end()) {
         skipped.note = "not claimed";
         run.properties.push_back(skipped);

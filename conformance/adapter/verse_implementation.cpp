@@ -7,6 +7,8 @@
 #include <type_traits>
 #include <vector>
 
+#include <fmt/core.h>
+
 #include "command_text.h"
 #include "verse_client.h"
 #include "wire_commands.h"
@@ -25,6 +27,11 @@ constexpr double kDeadSessionSeconds = 1.0;
 // does not answer (r6 after running a node_index_subscribe decoded from
 // garbage) gets a fresh login after this, not the whole --timeout.
 constexpr double kFirstCreateSeconds = 1.0;
+
+// "5 s (--timeout)": a limit as the message that reports it names it.
+std::string limit_text(double seconds, const char* option) {
+  return fmt::format("{:g} s ({})", seconds, option);
+}
 
 double seconds_left(Clock::time_point deadline) {
   return std::max(0.0, std::chrono::duration<double>(deadline - Clock::now()).count());
@@ -196,7 +203,7 @@ Answer VerseImplementation::connect() {
   verse::ClientOptions o;
   o.name = login_;
   if (const char* pw = std::getenv("VERSE_PASSWORD")) o.password = pw;
-  o.login_timeout_s = options_.timeout_seconds;
+  o.login_timeout_s = options_.start_timeout_seconds;  // a login is a start (OpenOptions)
   o.bone_form = bone_form_;
   o.unacknowledged_limit_s = std::min(kDeadSessionSeconds, options_.timeout_seconds);
   const std::string where = host_ + ":" + std::to_string(port_);
@@ -207,10 +214,11 @@ Answer VerseImplementation::connect() {
     // silent: waiting for it again at every test case would only turn a
     // dead host into a run as long as cases x --timeout.
     if (st.code == verse::Status::Code::Timeout && ever_connected_)
-      silent_since_ = "no answer to a login within " + std::to_string(options_.timeout_seconds) + " s";
+      silent_since_ = "no answer to a login within " + limit_text(options_.start_timeout_seconds, "--start-timeout");
     if (!st.ok())
       return failed(call_status_of(st), "logging in to the Verse host at " + where + " as \"" + login_ +
-                                            "\": " + st.to_string());
+                                            "\": " + st.to_string() +
+                                            (st.code == verse::Status::Code::Timeout ? " (--start-timeout)" : ""));
   }
   identity_ = "Verse host at " + where + " (release " + std::to_string(driver_->host_release()) + ")";
   broken_ = false;
@@ -300,8 +308,8 @@ Answer VerseImplementation::settle(const std::string& what) {
       if (driver_->unacknowledged_for() > kDeadSessionSeconds) {
         Answer lost = failed(CallStatus::Crash,
                       what + ": the host has not acknowledged the driver's packets for " +
-                          std::to_string(kDeadSessionSeconds) +
-                          " s: it dropped the session (r6 does so silently when the rest of a packet it could not "
+                          limit_text(kDeadSessionSeconds, "vgc's limit for an unacknowledged packet") +
+                          ": it dropped the session (r6 does so silently when the rest of a packet it could not "
                           "decode reads as connect_terminate)");
         driver_lost_ = true;
         return lost;
@@ -312,7 +320,7 @@ Answer VerseImplementation::settle(const std::string& what) {
       if (st.code == verse::Status::Code::Timeout)
         return failed(CallStatus::Timeout,
                       what + ": the host did not echo the round-trip node_name_set \"" + name + "\" to a subscriber "
-                      "within " + std::to_string(options_.timeout_seconds) + " s");
+                      "within " + limit_text(options_.timeout_seconds, "--timeout"));
       return failed(call_status_of(st), what + ": " + st.to_string());
     }
     if (const auto* n = std::get_if<verse::wire::NodeNameSet>(&w); n && n->node_id == node_ && n->name == name) break;
@@ -338,7 +346,7 @@ Answer VerseImplementation::settle(const std::string& what) {
       if (st.code == verse::Status::Code::Timeout)
         return failed(CallStatus::Timeout, what + ": the host did not echo the observer's round-trip node_name_set "
                                                   "after its layer subscriptions within " +
-                                               std::to_string(options_.timeout_seconds) + " s");
+                                               limit_text(options_.timeout_seconds, "--timeout"));
       return failed(call_status_of(st), what + ": " + st.to_string());
     }
   }
