@@ -13,6 +13,7 @@
 #   INPUT_SHARD            I/N                                        (--shard, default 1/1)
 #   INPUT_BUDGET           seconds for the whole run                  (--budget, default 300)
 #   INPUT_TIMEOUT          seconds per answer                         (--timeout, default 5)
+#   INPUT_START_TIMEOUT    seconds to start the implementation        (--start-timeout, default 60)
 #   INPUT_STRICT           true: also gate on IMPLEMENTATION-DEFINED clauses (--strict)
 #   INPUT_REPORTS          where runs are written (default $RUNNER_TEMP/vgc-reports)
 #   INPUT_VGC              the vgc program to use (relative: to the workspace);
@@ -94,6 +95,7 @@ fi
 [ -n "${INPUT_SEED:-}" ] && args+=(--seed "$INPUT_SEED")
 [ -n "${INPUT_BUDGET:-}" ] && args+=(--budget "$INPUT_BUDGET")
 [ -n "${INPUT_TIMEOUT:-}" ] && args+=(--timeout "$INPUT_TIMEOUT")
+[ -n "${INPUT_START_TIMEOUT:-}" ] && args+=(--start-timeout "$INPUT_START_TIMEOUT")
 shard=${INPUT_SHARD:-1/1}
 args+=(--shard "$shard")
 case "${INPUT_STRICT:-false}" in

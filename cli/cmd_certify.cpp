@@ -269,6 +269,22 @@ int run_mesh(const Options& o) {
   return r.any_failed() ? 1 : r.any_judged() ? 0 : 2;
 }
 
+// One line per finding, with its replay command (CI annotations read them).
+void print_findings(const RunResult& result, const ReportContext& ctx, const Options& o) {
+  for (const auto& co : result.clauses) {
+    if (!co.finding) continue;
+    const std::string id(co.clause->id);
+    const bool known = ctx.baseline && ctx.baseline->reasons.count(id);
+    const char* tag = co.clause->level == ClauseLevel::Should ? "should"
+                      : known                                  ? "known"
+                      : !finding_gates(co, o.strict)           ? "profile"
+                                                               : co.status.c_str();
+    say("  {:<8} {:<24} {}\n", tag, co.clause->id, co.finding->message);
+    say("           replay: {}\n",
+        replay_command((std::filesystem::path(ctx.run_dir) / counterexample_path(co)).string(), o.impl));
+  }
+}
+
 int run(const Options& o) {
   if (!o.mesh.empty()) return run_mesh(o);
   RunOptions ro;
@@ -365,18 +381,7 @@ int run(const Options& o) {
   if (result.preflight)
     say("  the implementation could not show a fresh node: {}: {}\n", result.preflight->clause,
                result.preflight->message);
-  for (const auto& co : result.clauses) {
-    if (!co.finding) continue;
-    const std::string id(co.clause->id);
-    const bool known = ctx.baseline && ctx.baseline->reasons.count(id);
-    const char* tag = co.clause->level == ClauseLevel::Should ? "should"
-                      : known                                  ? "known"
-                      : !finding_gates(co, o.strict)           ? "profile"
-                                                               : co.status.c_str();
-    say("  {:<8} {:<24} {}\n", tag, co.clause->id, co.finding->message);
-    say("           replay: {}\n",
-               replay_command((std::filesystem::path(ctx.run_dir) / counterexample_path(co)).string(), o.impl));
-  }
+  print_findings(result, ctx, o);
   for (const auto& id : verdict.stale_baseline)
     say("  stale    {:<24} in the baseline but no case diverged on it: remove it\n", id);
   for (const auto& p : result.properties)

@@ -723,6 +723,32 @@ std::uint64_t property_seed(std::uint64_t run_seed, std::string_view property_id
   return z ^ (z >> 31);
 }
 
+namespace {
+
+// What the implementation claims (?capabilities), asked once. A cancelled
+// run asks nothing more (the question would end unanswered and read as
+// "claims nothing"): what it claims is then unknown, and false is returned.
+bool claims_known(Implementation& sut, bool* asked, std::vector<std::string>* claimed) {
+  if (!*asked && !cancel_signal()) {
+    *claimed = query_capabilities(sut);
+    *asked = !cancel_signal();
+  }
+  return *asked;
+}
+
+// A capability property of a cancelled run, when what the implementation
+// claims was never known: stopped, so its clauses are unchecked, not
+// not-claimed (issue 31, item 6).
+PropertyOutcome stopped_before_claims(PropertyOutcome p, const PropertySpec& spec, const RunOptions& o) {
+  p.status = "stopped";
+  p.cases_target = property_cases(spec, o.cases);
+  p.note = std::string("cancelled by ") + cancel_signal_name() +
+           " before the implementation was asked which capabilities it claims";
+  return p;
+}
+
+}  // namespace
+
 RunResult run_certification(Implementation& implementation, const RunOptions& o) {
   load_rapidcheck_configuration_quietly();
   // Every call goes through the recorder: a call failure's history since the
@@ -800,16 +826,8 @@ RunResult run_certification(Implementation& implementation, const RunOptions& o)
       continue;
     }
     if (!spec.capability.empty()) {
-      // A cancelled run asks nothing more (the question would end unanswered
-      // and read as "claims nothing"): what the implementation claims is
-      // then unknown, and its capability clauses unchecked, not not-claimed.
-      if (!asked && !cancel_signal()) claimed = query_capabilities(sut), asked = !cancel_signal();
-      if (!asked) {
-        skipped.status = "stopped";
-        skipped.cases_target = property_cases(spec, o.cases);
-        skipped.note = std::string("cancelled by ") + cancel_signal_name() +
-                       " before the implementation was asked which capabilities it claims";
-        run.properties.push_back(skipped);
+      if (!claims_known(sut, &asked, &claimed)) {
+        run.properties.push_back(stopped_before_claims(skipped, spec, o));
         continue;
       }
       if (std::find(claimed.begin(), claimed.end(), spec.capability) == claimed.end()) {

@@ -145,7 +145,10 @@ python3 -c 'import os, signal, sys; signal.signal(signal.SIGINT, signal.SIG_DFL)
   INPUT_VGC="$vgc" INPUT_CASES=100000 INPUT_BUDGET=120 INPUT_SEED=1 INPUT_IMPL=reference \
   bash "$script" >"$run/log" 2>&1 &
 script_pid=$!
-sleep 3
+# Once vgc runs its cases (its first line is printed after its signal
+# handlers are in place), however long that takes on a loaded machine.
+for _ in $(seq 600); do grep -q '(seed 1, ' "$run/log" 2>/dev/null && break; sleep 0.1; done
+sleep 1
 t0=$(date +%s%N)
 kill -INT "$script_pid"
 wait "$script_pid"
