@@ -7,6 +7,7 @@
 #include <regex>
 #include <sstream>
 
+#include "bounded_text.h"
 #include "program_text.h"
 
 namespace vgc {
@@ -70,7 +71,7 @@ bool import_obj(const std::string& path, ObjMesh* out, ObjError* error) {
   config.mtl_search_path = "";
   tinyobj::ObjReader reader;
   if (!reader.ParseFromFile(path, config)) {
-    error->message = trimmed(reader.Error());
+    error->message = bounded_text(trimmed(reader.Error()));  // it may quote the file's bytes
     if (error->message.empty()) error->message = "tinyobjloader could not read it";
     error->line = line_of(error->message);
     error->column = error->line ? 1 : 0;

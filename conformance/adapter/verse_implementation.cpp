@@ -9,6 +9,7 @@
 
 #include <fmt/core.h>
 
+#include "cancel.h"
 #include "command_text.h"
 #include "verse_client.h"
 #include "wire_commands.h"
@@ -204,6 +205,7 @@ Answer VerseImplementation::connect() {
   o.name = login_;
   if (const char* pw = std::getenv("VERSE_PASSWORD")) o.password = pw;
   o.login_timeout_s = options_.start_timeout_seconds;  // a login is a start (OpenOptions)
+  o.stop = [] { return cancel_signal() != 0; };          // a cancelled run waits for nothing (cancel.h)
   o.bone_form = bone_form_;
   o.unacknowledged_limit_s = std::min(kDeadSessionSeconds, options_.timeout_seconds);
   const std::string where = host_ + ":" + std::to_string(port_);
@@ -300,6 +302,9 @@ Answer VerseImplementation::settle(const std::string& what) {
   if (const verse::Status st = driver_->send(mark); !st.ok())
     return failed(call_status_of(st), what + ": sending the round-trip node_name_set: " + st.to_string());
   for (;;) {
+    if (cancel_signal())  // a Timeout to the runner, which drops what a cancel cut short
+      return failed(CallStatus::Timeout, what + ": not answered: the run was cancelled by " +
+                                             std::string(cancel_signal_name()));
     verse::WireCommand w;
     const double left = seconds_left(deadline);
     const verse::Status st = observer_->receive(&w, std::min(left, kSessionCheckSeconds));

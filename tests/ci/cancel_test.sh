@@ -11,8 +11,9 @@
 # signal's message, exit 130). A cancelled run used to leave no report.
 # Then (issue 31, item 6) report.json's exit_code is the process's and the
 # stdout lines are not lost; a whole certification through exec:'vgc
-# serve' is cancelled at a dozen moments, and one while its implementation
-# is still starting: each stops within 2 s and writes its report.
+# serve' is cancelled at ten moments, one while its implementation is still
+# starting, one during a Verse login to a host that does not answer: each
+# stops within 2 s and writes its report.
 set -uo pipefail
 [ $# -ge 2 ] || { echo "usage: $0 VGC FAULT_PLUGIN" >&2; exit 2; }
 vgc=$1 plugin=$2
@@ -143,4 +144,29 @@ r = json.load(open(sys.argv[1]))
 statuses = {c["status"] for c in r["clauses"]}
 assert statuses == {"unchecked"}, statuses
 PY
-echo "cancel: SIGTERM and SIGINT stop the run within 3 s and write an incomplete report with the finding; a second signal exits at once; $cancelled runs through exec:'vgc serve' cancelled by timeout at moments from 0.3 s to 8 s and a run cancelled while its implementation started each stopped within 2 s with a whole report (exit_code 143, claimed capabilities not not-claimed)"
+# Over the Verse wire, cancelled during the login to a host that does not
+# answer (stopped): the login's limit is --start-timeout (60 s), and the
+# wait must end at the cancel, not at the limit.
+"$vgc" serve --verse 127.0.0.1:0 >"$tmp/host.out" 2>"$tmp/host.err" &
+host_pid=$!
+for _ in $(seq 300); do grep -q '^vgc-verse listening' "$tmp/host.out" && break; sleep 0.1; done
+port=$(sed -n 's/^vgc-verse listening .*:\([0-9]*\)$/\1/p' "$tmp/host.out")
+[ -n "$port" ] || { kill "$host_pid"; fail "verse: the host did not start"; }
+kill -STOP "$host_pid"
+name=verse-login
+"$vgc" certify --quiet --clauses 'LAYER-*' --impl "verse:127.0.0.1:$port" --reports "$tmp/$name" \
+  >"$tmp/$name.out" 2>"$tmp/$name.err" &
+run_pid=$!
+# Once vgc has its UDP socket (its login has begun; its handlers are in place before).
+for _ in $(seq 600); do ls -l "/proc/$run_pid/fd" 2>/dev/null | grep -q 'socket:' && break; sleep 0.1; done
+sleep 0.5
+t0=$(date +%s%N)
+kill -TERM "$run_pid"
+wait "$run_pid"; rc=$?
+ms=$(( ($(date +%s%N) - t0) / 1000000 ))
+kill -CONT "$host_pid"; kill "$host_pid"; wait "$host_pid" 2>/dev/null
+claims=
+expect_cancelled "$name" "$rc" "$ms"
+echo "cancel: verse-login: stopped $ms ms after the signal, report written"
+
+echo "cancel: SIGTERM and SIGINT stop the run within 3 s and write an incomplete report with the finding; a second signal exits at once; $cancelled runs through exec:'vgc serve' cancelled by timeout at moments from 0.3 s to 8 s a run cancelled while its implementation started and one cancelled during a Verse login each stopped within 2 s with a whole report (exit_code 143, claimed capabilities not not-claimed)"
