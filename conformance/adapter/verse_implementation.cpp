@@ -173,6 +173,13 @@ std::string VerseImplementation::identity() const {
   return id;
 }
 
+std::string VerseImplementation::merge_identity() const {
+  std::string id = "verse: a Verse host of release " + std::to_string(release_);
+  if (bone_form_known_)
+    id += ", bone_create in the " + std::string(bone_form_ == verse::BoneForm::R6 ? "r6 form" : "spec 2.6.3 form");
+  return id;
+}
+
 Answer VerseImplementation::failed(CallStatus s, const std::string& detail) {
   broken_ = true;
   Answer a;
@@ -222,7 +229,8 @@ Answer VerseImplementation::connect() {
                                             "\": " + st.to_string() +
                                             (st.code == verse::Status::Code::Timeout ? " (--start-timeout)" : ""));
   }
-  identity_ = "Verse host at " + where + " (release " + std::to_string(driver_->host_release()) + ")";
+  release_ = driver_->host_release();
+  identity_ = "Verse host at " + where + " (release " + std::to_string(release_) + ")";
   broken_ = false;
   ever_connected_ = true;
   return {};
