@@ -575,15 +575,147 @@ bool confirm_finding(PropertyFinding* pf, CaseContext& ctx, Clock::time_point de
   return true;
 }
 
-PropertyOutcome run_property(const PropertySpec& spec, Implementation& sut, const RunOptions& o,
-                             Clock::time_point deadline, RunProgress* progress, Clock::time_point run_start,
-                             RunResult* run) {
-  PropertyOutcome out;
-  out.id = std::string(spec.id);
-  out.seed = property_seed(o.seed, spec.id);
-  const auto start = Clock::now();
+// What every case of one property draws and checks.
+struct CaseSpec {
+  Focus focus = Focus::Anything;
+  const CapabilityCheck* capability = nullptr;  // an optional capability's check, or none
+  std::string_view capability_name;
+  std::string capability_clause_list;  // its clauses, comma-separated
+  bool at_scale = false;
+};
 
-  CaseContext ctx;
+// Tallies a fresh case when it ends, however it ends.
+struct CaseTally {
+  CaseContext& c;
+  bool counted;
+  ~CaseTally() {
+    if (!counted || c.shrinking) return;  // the failing case itself is counted with its finding
+    ++c.cases_done;
+    if (c.set_aside_case) ++c.set_aside;
+    else if (c.not_judged_case) ++c.not_judged;
+    else if (!c.abandoned && !c.deadline_hit) ++c.judged;
+    if (c.cases_done >= c.set_aside_min_cases && c.set_aside > kSetAsideShare * c.cases_done) c.dominated = true;
+  }
+};
+
+// Whether a case runs here at all: not after a stop, a dominated property,
+// the deadline or the target; and, for a fresh case, in this shard. Case k
+// of a property split by case runs in shard k mod N: RapidCheck draws each
+// case from its own split of the seed, so skipping another shard's case,
+// before drawing anything, leaves every other case as the unsharded run
+// draws it.
+bool case_runs_here(CaseContext& c, bool counted) {
+  if (c.stop || c.dominated || c.deadline_hit || past_deadline()) return false;
+  if (counted && c.cases_done >= c.target) return false;
+  return !counted || owns_case(c, c.case_index++);
+}
+
+void reset_case(CaseContext& c) {
+  c.trace.clear();
+  c.checker = std::make_unique<ProgramChecker>(*c.sut, /*follow_choices=*/true);
+  c.abandoned = false;
+  c.set_aside_case = false;
+  c.not_judged_case = false;
+  c.taken_out = 0;
+}
+
+bool case_still_judged(CaseContext& c) {
+  return !c.stop && !c.abandoned && !c.set_aside_case && !c.deadline_hit && !past_deadline();
+}
+
+// The fresh node must look like the reference's; false ends the case.
+bool check_fresh_node(CaseContext& c) {
+  if (auto f = check_fresh(*c.sut)) {
+    if (past_deadline()) return false;  // cut short by a cancel: no finding
+    if (!fail_case(*f)) return false;
+  }
+  if (!c.shrinking) {
+    count_exercised(fresh_node_clauses());
+    for (Rule rule : {Rule::BaseLayers, Rule::InitialCreases}) ++(*c.rule_uses)[std::string(rule_name(rule))];
+  }
+  return true;
+}
+
+// A capability case starts from a small open surface, so that its random
+// commands edit a mesh rather than mostly build nothing; false ends the case.
+bool build_capability_start(CaseContext& c, std::string_view capability) {
+  for (const auto& cmd : capability_start_commands(capability)) {
+    c.trace.push_back(cmd);
+    StepResult r = c.checker->step(cmd);
+    if (r.failure && past_deadline()) return false;
+    if (r.failure) {
+      fail_case(*r.failure);
+      return false;
+    }
+  }
+  return true;
+}
+
+// The case's commands, drawn by RapidCheck from the model (rc::state), each
+// a Step judged as it runs.
+void run_drawn_commands(CaseContext& c, Focus focus) {
+  const Node start = c.checker->model();
+  const auto commands = *rc::state::gen::commands(start, [focus](const Node& model) {
+    return rc::gen::map(gen_command(model, focus), [](vgc::Command cmd) {
+      return std::shared_ptr<const rc::state::Command<Node, Implementation>>(std::make_shared<Step>(cmd));
+    });
+  });
+  rc::state::runAll(commands, start, *c.sut);
+}
+
+// Where the steps compared digests, the whole documents once at the end
+// (program_checker.h); a difference is localized to its command. False
+// ends the case.
+bool compare_whole_documents(CaseContext& c) {
+  if (!case_still_judged(c)) return false;
+  if (auto l = c.checker->finish(c.trace)) {
+    c.trace.resize(static_cast<std::size_t>(l->index) + 1);
+    fail_case(*l->step.failure);
+    return false;
+  }
+  return true;
+}
+
+// An optional capability: judged on the final state, the variant
+// (subdivision level) chosen by the case; a check that needs more
+// (check_drawn) gets a value drawn for the case.
+void check_capability(CaseContext& c, const CaseSpec& s) {
+  if (!case_still_judged(c)) return;
+  const int variant = static_cast<int>(c.trace.size() % 3) + 1;
+  CapabilityRequest request{s.capability->capability, variant, std::nullopt};
+  if (s.capability->check_drawn) request.draw = *rc::gen::arbitrary<std::uint32_t>();
+  const auto f = run_capability_check(*s.capability, c.checker->model(), *c.sut, request);
+  if (f && past_deadline()) return;  // cut short by a cancel: no finding
+  if (f && f->status != FindingStatus::NotJudged) {
+    fail_case(*f, request);
+  } else if (f) {  // run, and counted, but neither judged nor exercising anything
+    c.not_judged_case = true;
+  } else if (!c.shrinking) {  // a case the oracle could not judge exercises nothing
+    std::stringstream ids(s.capability_clause_list);
+    std::string id;
+    while (std::getline(ids, id, ',')) ++(*c.exercised)[id];
+  }
+}
+
+// One case of the property: what RapidCheck calls, fresh or shrinking.
+void run_case(const CaseSpec& s) {
+  CaseContext& c = *g_context;
+  const bool counted = !c.shrinking;  // fresh cases count toward the property's cases; shrink attempts do not
+  if (!case_runs_here(c, counted)) return;
+  reset_case(c);
+  CaseTally tally{c, counted};
+  if (!check_fresh_node(c)) return;
+  if (s.capability && !build_capability_start(c, s.capability_name)) return;
+  if (s.at_scale) run_scale_case();
+  else run_drawn_commands(c, s.focus);
+  if (!compare_whole_documents(c)) return;
+  if (s.capability) check_capability(c, s);
+}
+
+// The case state of one property (CaseContext), wired to its outcome and
+// to the run's tallies.
+void start_context(CaseContext& ctx, const PropertySpec& spec, Implementation& sut, const RunOptions& o,
+                   Clock::time_point deadline, RunResult* run, PropertyOutcome* out) {
   ctx.sut = &sut;
   ctx.recorder = dynamic_cast<HistoryRecorder*>(&sut);
   for (const auto& p : run->properties)  // history-dependent failures earlier properties found
@@ -596,119 +728,55 @@ PropertyOutcome run_property(const PropertySpec& spec, Implementation& sut, cons
   // A property at scale is split by case over the shards (assign_shards);
   // any other runs whole in its one shard.
   if (spec.at_scale) ctx.shard_index = o.shard_index, ctx.shard_count = o.shard_count;
-  else ctx.shard_index = 0, ctx.shard_count = 1;
   ctx.target = shard_cases(ctx.all_cases, ctx.shard_index, ctx.shard_count);
   if (spec.at_scale) ctx.set_aside_min_cases = 1, ctx.no_take_out = true;
-  ctx.exercised = &out.exercised;
+  ctx.exercised = &out->exercised;
   ctx.declared = &spec.clauses;
-  ctx.derived_only = &out.derived_only;
+  ctx.derived_only = &out->derived_only;
   ctx.kinds = &run->command_kinds;
   ctx.rule_uses = &run->rule_uses;
   ctx.unreported = &run->unreported_verdicts;
   ctx.avoided = &run->avoided;
   ctx.avoided_notes = &run->avoided_classes;
-  ctx.property_id = &out.id;
-  out.cases_target = ctx.target;
-  g_context = &ctx;
+  ctx.property_id = &out->id;
+}
 
-  const Focus focus = spec.focus;
-  const CapabilityCheck* capability =
-      spec.capability.empty() ? nullptr : find_capability_check(std::string(spec.capability));
-  const std::string_view capability_name = spec.capability;
-  const std::string capability_clause_list = capability_clauses(std::string(capability_name));
-  const bool at_scale = spec.at_scale;
-  auto property = [focus, capability, capability_name, &capability_clause_list, at_scale] {
-    CaseContext& c = *g_context;
-    if (c.stop || c.dominated || c.deadline_hit || past_deadline()) return;
-    // Fresh cases count toward the property's cases; shrink attempts do not.
-    const bool counted = !c.shrinking;
-    if (counted && c.cases_done >= c.target) return;
-    // Case k of the property runs in shard k mod N (RunOptions): RapidCheck
-    // draws each case from its own split of the seed, so skipping another
-    // shard's case, before drawing anything, leaves every other case as the
-    // unsharded run draws it.
-    if (counted && !owns_case(c, c.case_index++)) return;
-    c.trace.clear();
-    c.checker = std::make_unique<ProgramChecker>(*c.sut, /*follow_choices=*/true);
-    c.abandoned = false;
-    c.set_aside_case = false;
-    c.not_judged_case = false;
-    c.taken_out = 0;
-    struct Tally {  // at the end of the case, however it ends
-      CaseContext& c;
-      bool counted;
-      ~Tally() {
-        if (!counted || c.shrinking) return;  // the failing case itself is counted with its finding
-        ++c.cases_done;
-        if (c.set_aside_case) ++c.set_aside;
-        else if (c.not_judged_case) ++c.not_judged;
-        else if (!c.abandoned && !c.deadline_hit) ++c.judged;
-        if (c.cases_done >= c.set_aside_min_cases && c.set_aside > kSetAsideShare * c.cases_done) c.dominated = true;
-      }
-    } tally{c, counted};
-    if (auto f = check_fresh(*c.sut)) {
-      if (past_deadline()) return;  // cut short by a cancel: no finding
-      if (!fail_case(*f)) return;
+// A round's failure (RapidCheck shrank it): confirmed on a fresh instance,
+// then the property's next finding, its clause tolerated from now on.
+void record_round_failure(const rc::detail::FailureResult& failure, int round, CaseContext& ctx,
+                          Clock::time_point deadline, PropertyOutcome* out, const RunResult& run,
+                          RunProgress* progress) {
+  PropertyFinding pf;
+  pf.round = round;
+  if (ctx.last_failure) {
+    pf.finding = *ctx.last_failure;
+    pf.program = ctx.last_program;
+  } else {  // an exception escaped from somewhere we did not expect
+    pf.finding = Finding{"STABLE-1", FindingStatus::Fail, failure.description};
+  }
+  ++ctx.cases_done;  // the failing case
+  if (ctx.recorder && ctx.last_failure) {
+    if (!ctx.failure_reproduced) {
+      if (!confirm_finding(&pf, ctx, deadline, *out, run)) return;  // reported once already
+    } else if (pf.program.commands.size() < ctx.failure_program.commands.size() &&
+               !case_fails_fresh(pf.finding, pf.program)) {
+      pf.program = ctx.failure_program;  // shrinking was misled by the instance's history
     }
-    if (!c.shrinking) {
-      count_exercised(fresh_node_clauses());
-      for (Rule rule : {Rule::BaseLayers, Rule::InitialCreases}) ++(*c.rule_uses)[std::string(rule_name(rule))];
-    }
-    // A capability case starts from a small open surface, so that its
-    // random commands edit a mesh rather than mostly build nothing.
-    if (capability) {
-      for (const auto& cmd : capability_start_commands(capability_name)) {
-        c.trace.push_back(cmd);
-        StepResult r = c.checker->step(cmd);
-        if (r.failure && past_deadline()) return;
-        if (r.failure) {
-          fail_case(*r.failure);
-          return;
-        }
-      }
-    }
-    if (at_scale) {
-      run_scale_case();
-    } else {
-      const Node start = c.checker->model();
-      const auto commands = *rc::state::gen::commands(start, [focus](const Node& model) {
-        return rc::gen::map(gen_command(model, focus), [](vgc::Command cmd) {
-          return std::shared_ptr<const rc::state::Command<Node, Implementation>>(std::make_shared<Step>(cmd));
-        });
-      });
-      rc::state::runAll(commands, start, *c.sut);
-    }
-    // Where the steps compared digests, the whole documents once at the end
-    // (program_checker.h); a difference is localized to its command.
-    if (!c.stop && !c.abandoned && !c.set_aside_case && !c.deadline_hit && !past_deadline()) {
-      if (auto l = c.checker->finish(c.trace)) {
-        c.trace.resize(static_cast<std::size_t>(l->index) + 1);
-        fail_case(*l->step.failure);
-        return;
-      }
-    }
-    // An optional capability: judged on the final state, the variant
-    // (subdivision level) chosen by the case; a check that needs more
-    // (check_drawn) gets a value drawn for the case.
-    if (capability && !c.stop && !c.abandoned && !c.set_aside_case && !c.deadline_hit && !past_deadline()) {
-      const int variant = static_cast<int>(c.trace.size() % 3) + 1;
-      CapabilityRequest request{capability->capability, variant, std::nullopt};
-      if (capability->check_drawn) request.draw = *rc::gen::arbitrary<std::uint32_t>();
-      const auto f = run_capability_check(*capability, c.checker->model(), *c.sut, request);
-      if (f && past_deadline()) return;  // cut short by a cancel: no finding
-      if (f && f->status != FindingStatus::NotJudged) {
-        fail_case(*f, request);
-      } else if (f) {  // run, and counted, but neither judged nor exercising anything
-        c.not_judged_case = true;
-      } else if (!c.shrinking) {  // a case the oracle could not judge exercises nothing
-        std::stringstream ids(capability_clause_list);
-        std::string id;
-        while (std::getline(ids, id, ',')) ++(*c.exercised)[id];
-      }
-    }
-  };
+  }
+  ctx.tolerated.insert(pf.finding.clause);
+  out->findings.push_back(std::move(pf));
+  progress->failures = static_cast<int>(out->findings.size());
+}
 
-  std::string stop_note;
+// Rounds of RapidCheck until the property's cases are done: each finding
+// ends a round, and the next round runs the cases left with its clause
+// tolerated (a clause already tolerated cannot fail again, so there is at
+// most one round per catalog clause). Returns why it stopped early, if
+// RapidCheck gave up or erred.
+std::string run_rounds(const CaseSpec& cases, CaseContext& ctx, const PropertySpec& spec, const RunOptions& o,
+                       Clock::time_point deadline, RunProgress* progress, Clock::time_point run_start,
+                       PropertyOutcome* out, const RunResult& run) {
+  auto property = [&cases] { run_case(cases); };
   for (int round = 0; ctx.cases_done < ctx.target && ctx.case_index < ctx.all_cases; ++round) {
     ctx.shrinking = false;
     ctx.stop = false;
@@ -717,102 +785,112 @@ PropertyOutcome run_property(const PropertySpec& spec, Implementation& sut, cons
     ctx.last_failure.reset();
     ctx.last_program = Program{};
     progress->shrinking = false;
-
     rc::detail::TestParams params;
-    params.seed = round_seed(out.seed, round);
+    params.seed = round_seed(out->seed, round);
     params.maxSuccess = ctx.all_cases - ctx.case_index;
     params.maxSize = o.max_size;
     params.maxDiscardRatio = 10;
     rc::detail::TestMetadata meta;
-    meta.id = out.id;
+    meta.id = out->id;
     meta.description = std::string(spec.title);
     ProgressListener listener(progress, &o.progress, run_start);
     const auto result = rc::detail::checkTestable(property, meta, params, listener);
-    ++out.rounds;
-
+    ++out->rounds;
     rc::detail::FailureResult failure;
     rc::detail::GaveUpResult gave_up;
     rc::detail::Error error;
     if (result.match(failure)) {
-      PropertyFinding pf;
-      pf.round = round;
-      if (ctx.last_failure) {
-        pf.finding = *ctx.last_failure;
-        pf.program = ctx.last_program;
-      } else {  // an exception escaped from somewhere we did not expect
-        pf.finding = Finding{"STABLE-1", FindingStatus::Fail, failure.description};
-      }
-      ++ctx.cases_done;  // the failing case
-      if (ctx.recorder && ctx.last_failure) {
-        if (!ctx.failure_reproduced) {
-          if (!confirm_finding(&pf, ctx, deadline, out, *run)) continue;  // reported once already
-        } else if (pf.program.commands.size() < ctx.failure_program.commands.size()) {
-          if (!case_fails_fresh(pf.finding, pf.program))
-            pf.program = ctx.failure_program;  // shrinking was misled by the instance's history
-        }
-      }
-      ctx.tolerated.insert(pf.finding.clause);
-      out.findings.push_back(std::move(pf));
-      progress->failures = static_cast<int>(out.findings.size());
-      // A clause already tolerated cannot fail again, so each round adds a
-      // clause: at most one round per catalog clause.
+      record_round_failure(failure, round, ctx, deadline, out, run, progress);
       continue;
     }
-    if (result.match(gave_up)) stop_note = "RapidCheck gave up: " + gave_up.description;
-    if (result.match(error)) stop_note = "RapidCheck error: " + error.description;
+    if (result.match(gave_up)) return "RapidCheck gave up: " + gave_up.description;
+    if (result.match(error)) return "RapidCheck error: " + error.description;
     break;
   }
-  g_context = nullptr;
+  return "";
+}
 
-  out.seconds = std::chrono::duration<double>(Clock::now() - start).count();
-  // SHOULD-level notes and followed choices are confirmed like findings:
-  // one a fresh instance does not repeat depends on the history (the
-  // history-dependent finding, if the run has one, says what) and is left
-  // out.
+// SHOULD-level notes and followed choices are confirmed like findings: one
+// a fresh instance does not repeat depends on the history (the
+// history-dependent finding, if the run has one, says what) and is left
+// out. Returns how many were left out.
+int confirm_notes(CaseContext& ctx, Clock::time_point deadline, PropertyOutcome* out) {
   int unconfirmed = 0;
   for (auto& [clause, note] : ctx.notes) {
     if (ctx.recorder && !cancel_signal() && Clock::now() < deadline &&
         !note_reproduces_fresh(*ctx.recorder, note.first, note.second))
       ++unconfirmed;
     else
-      out.notes.push_back(note);
+      out->notes.push_back(note);
   }
-  // Baseline (and other tolerated) divergences, in the order of the
-  // catalog's ids: each once, with the shortest program it was seen on.
-  for (auto& [clause, pf] : ctx.tolerated_seen) {
+  return unconfirmed;
+}
+
+// Why the property did not run all its cases, or "".
+std::string stop_note_of(const CaseContext& ctx, const std::string& rapidcheck_note) {
+  const std::string ran = std::to_string(ctx.cases_done) + " of " + std::to_string(ctx.target) + " cases";
+  if (ctx.deadline_hit && cancel_signal()) return std::string("cancelled by ") + cancel_signal_name() + " after " + ran;
+  if (ctx.deadline_hit) return "the budget ran out after " + ran + "; raise --budget";
+  if (ctx.dominated) {
+    std::set<std::string> hits;
+    for (const auto& [clause, pf] : ctx.tolerated_seen) hits.insert(clause);
+    return std::to_string(ctx.set_aside) + " of its " + std::to_string(ctx.cases_done) +
+           " cases were set aside (first divergence in " + join(hits) + "), so it stopped before " +
+           std::to_string(ctx.target) + " cases";
+  }
+  if (!rapidcheck_note.empty()) return rapidcheck_note;
+  if (ctx.cases_done < ctx.target) return "it ran " + ran;
+  return "";
+}
+
+// The property's counts, its tolerated divergences (each once, with the
+// shortest program it was seen on, in the order of the catalog's ids), and
+// its status.
+void finish_outcome(const CaseContext& ctx, const std::string& stop_note, int unconfirmed_notes,
+                    PropertyOutcome* out) {
+  for (const auto& [clause, pf] : ctx.tolerated_seen) {
     bool found = false;
-    for (const auto& f : out.findings) found = found || f.finding.clause == clause;
-    if (!found) out.findings.push_back(pf);
+    for (const auto& f : out->findings) found = found || f.finding.clause == clause;
+    if (!found) out->findings.push_back(pf);
   }
-  out.cases = ctx.cases_done;
-  out.judged = ctx.judged;
-  out.set_aside = ctx.set_aside;
-  out.steps_taken_out = ctx.steps_taken_out;
-  out.not_judged = ctx.not_judged;
-  std::set<std::string> tolerated_hits;
-  for (const auto& [clause, pf] : ctx.tolerated_seen) tolerated_hits.insert(clause);
-  if (ctx.deadline_hit && cancel_signal()) {
-    stop_note = std::string("cancelled by ") + cancel_signal_name() + " after " +
-                std::to_string(ctx.cases_done) + " of " + std::to_string(ctx.target) + " cases";
-  } else if (ctx.deadline_hit) {
-    stop_note = "the budget ran out after " + std::to_string(ctx.cases_done) + " of " + std::to_string(ctx.target) +
-                " cases; raise --budget";
-  } else if (ctx.dominated) {
-    stop_note = std::to_string(ctx.set_aside) + " of its " + std::to_string(ctx.cases_done) +
-                " cases were set aside (first divergence in " + join(tolerated_hits) + "), so it stopped before " +
-                std::to_string(ctx.target) + " cases";
-  } else if (stop_note.empty() && ctx.cases_done < ctx.target) {
-    stop_note = "it ran " + std::to_string(ctx.cases_done) + " of " + std::to_string(ctx.target) + " cases";
-  }
+  out->cases = ctx.cases_done;
+  out->judged = ctx.judged;
+  out->set_aside = ctx.set_aside;
+  out->steps_taken_out = ctx.steps_taken_out;
+  out->not_judged = ctx.not_judged;
   if (!stop_note.empty()) {
-    out.status = "stopped";
-    out.note = stop_note;
-  } else {
-    out.status = out.findings.empty() ? "pass" : "fail";
-    if (unconfirmed)
-      out.note = std::to_string(unconfirmed) + " SHOULD-level or choice difference(s) did not repeat on a fresh "
-                 "instance: not reported (they depend on the implementation's history)";
+    out->status = "stopped";
+    out->note = stop_note;
+    return;
   }
+  out->status = out->findings.empty() ? "pass" : "fail";
+  if (unconfirmed_notes)
+    out->note = std::to_string(unconfirmed_notes) + " SHOULD-level or choice difference(s) did not repeat on a fresh "
+                "instance: not reported (they depend on the implementation's history)";
+}
+
+PropertyOutcome run_property(const PropertySpec& spec, Implementation& sut, const RunOptions& o,
+                             Clock::time_point deadline, RunProgress* progress, Clock::time_point run_start,
+                             RunResult* run) {
+  PropertyOutcome out;
+  out.id = std::string(spec.id);
+  out.seed = property_seed(o.seed, spec.id);
+  const auto start = Clock::now();
+  CaseContext ctx;
+  start_context(ctx, spec, sut, o, deadline, run, &out);
+  out.cases_target = ctx.target;
+  CaseSpec cases;
+  cases.focus = spec.focus;
+  cases.capability = spec.capability.empty() ? nullptr : find_capability_check(std::string(spec.capability));
+  cases.capability_name = spec.capability;
+  cases.capability_clause_list = capability_clauses(std::string(spec.capability));
+  cases.at_scale = spec.at_scale;
+  g_context = &ctx;
+  const std::string rapidcheck_note = run_rounds(cases, ctx, spec, o, deadline, progress, run_start, &out, *run);
+  g_context = nullptr;
+  out.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  const int unconfirmed = confirm_notes(ctx, deadline, &out);
+  finish_outcome(ctx, stop_note_of(ctx, rapidcheck_note), unconfirmed, &out);
   return out;
 }
 
