@@ -13,6 +13,7 @@
 #   INPUT_SHARD            I/N                                        (--shard, default 1/1)
 #   INPUT_BUDGET           seconds for the whole run                  (--budget, default 300)
 #   INPUT_TIMEOUT          seconds per answer                         (--timeout, default 5)
+#   INPUT_START_TIMEOUT    seconds to start the implementation        (--start-timeout, default 60)
 #   INPUT_STRICT           true: also gate on IMPLEMENTATION-DEFINED clauses (--strict)
 #   INPUT_REPORTS          where runs are written (default $RUNNER_TEMP/vgc-reports)
 #   INPUT_VGC              the vgc program to use (relative: to the workspace);
@@ -32,7 +33,8 @@
 # RUNNER_TEMP, GITHUB_ACTION_PATH (the action's checkout).
 #
 # Outputs (to $GITHUB_OUTPUT): verdict (conformant | not-conformant |
-# incomplete | error), exit-code (vgc's: 0, 1 or 2), report-dir (the run
+# incomplete | error), exit-code (vgc's: 0, 1 or 2; 130 or 143 for a run
+# cancelled by SIGINT or SIGTERM, incomplete), report-dir (the run
 # directory; empty when vgc wrote none), summary (its summary.md), junit
 # (its junit.xml), artifact-name.
 #
@@ -93,6 +95,7 @@ fi
 [ -n "${INPUT_SEED:-}" ] && args+=(--seed "$INPUT_SEED")
 [ -n "${INPUT_BUDGET:-}" ] && args+=(--budget "$INPUT_BUDGET")
 [ -n "${INPUT_TIMEOUT:-}" ] && args+=(--timeout "$INPUT_TIMEOUT")
+[ -n "${INPUT_START_TIMEOUT:-}" ] && args+=(--start-timeout "$INPUT_START_TIMEOUT")
 shard=${INPUT_SHARD:-1/1}
 args+=(--shard "$shard")
 case "${INPUT_STRICT:-false}" in
@@ -120,13 +123,44 @@ fi
 
 # 3. The run. The console shows vgc's own lines (one per property: CI logs);
 # stdout is kept to find the run directory vgc names ("report: DIR/summary.md").
+#
+# A cancelled job: the runner sends SIGINT to this script (the step's entry
+# process) only, then SIGTERM 7.5 s later, then kills the process tree. So
+# vgc runs in the background, in a session of its own (a terminal's Ctrl-C
+# reaches it once, through us, not twice: a second signal makes vgc exit
+# without its report), and `wait` (which a trapped signal interrupts, unlike
+# a foreground command) is how this script waits for it. The trap passes the
+# signal on; vgc then stops, writes its incomplete report and exits 128 +
+# the signal within a second or two, and the outputs and the job summary
+# below are written for it as for any run (action.yml uploads the report
+# with always()).
 out=$RUNNER_TEMP/vgc-certify-stdout.$$
 err=$RUNNER_TEMP/vgc-certify-stderr.$$
+fifo=$RUNNER_TEMP/vgc-certify-stderr-fifo.$$
 echo "vgc ${args[0]} in $workdir:"
 printf ' %q' "$vgc" "${args[@]}"
 echo
-(cd "$workdir" && "$vgc" "${args[@]}" 2>&1 >"$out") | tee "$err"
-code=${PIPESTATUS[0]}
+rm -f "$fifo"
+mkfifo "$fifo" || fail "cannot create a fifo under RUNNER_TEMP ($RUNNER_TEMP)"
+(trap '' INT TERM; exec tee "$err" <"$fifo") &
+tee_pid=$!
+(cd "$workdir" && exec setsid "$vgc" "${args[@]}" >"$out" 2>"$fifo") &
+vgc_pid=$!
+cancelled=
+pass_on() {  # pass_on SIGNAL: a cancelled job's signal, passed on to vgc
+  cancelled=$1
+  echo "vgc certify action: SIG$1 received: passing it on to vgc, which writes an incomplete report"
+  kill -"$1" "$vgc_pid" 2>/dev/null
+}
+trap 'pass_on INT' INT
+trap 'pass_on TERM' TERM
+while :; do  # `wait` returns early when a trapped signal arrives: then wait again
+  wait "$vgc_pid"
+  code=$?
+  kill -0 "$vgc_pid" 2>/dev/null || break
+done
+while kill -0 "$tee_pid" 2>/dev/null; do wait "$tee_pid"; done
+rm -f "$fifo"
 cat "$out"
 
 report_dir=$(sed -n 's|^report: \(.*\)/summary\.md$|\1|p' "$out" | tail -n 1)
@@ -135,6 +169,7 @@ case "$code" in
   1) verdict=not-conformant ;;
   *) if [ -n "$report_dir" ]; then verdict=incomplete; else verdict=error; fi ;;
 esac
+[ -n "$cancelled" ] && [ -z "$report_dir" ] && verdict=error  # cut short before vgc wrote a report
 
 {
   echo "verdict=$verdict"
@@ -169,7 +204,11 @@ case "$verdict" in
       while IFS=$'\t' read -r title message; do annotate "vgc $title" "$message"; done
     annotate "vgc certify" "${first_line:-not conformant} (report: $report_dir/summary.md)" ;;
   incomplete)
-    annotate "vgc certify" "${first_line:-incomplete}: some clauses could not be judged (the 'unchecked' lines above say why); raise 'cases' or 'budget' (report: $report_dir/summary.md)" ;;
+    if [ -n "$cancelled" ]; then
+      annotate "vgc certify" "${first_line:-incomplete}: the job was cancelled (SIG$cancelled); the report of what was judged before is in $report_dir/summary.md"
+    else
+      annotate "vgc certify" "${first_line:-incomplete}: some clauses could not be judged (the 'unchecked' lines above say why); raise 'cases' or 'budget' (report: $report_dir/summary.md)"
+    fi ;;
   error)
     msg=$(grep '^vgc' "$err" | grep -v '^vgc certify: .*(seed [0-9]*, ' | grep -v '^vgc certify: what to do' | tail -n 1)
     fix=$(grep '^vgc certify: what to do: ' "$err" | tail -n 1)

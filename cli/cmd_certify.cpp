@@ -5,13 +5,17 @@
 // infrastructure error or an incomplete run; 128 + the signal (130 SIGINT,
 // 143 SIGTERM) for a cancelled run, after its report (verdict
 // "incomplete", every finding so far) is written. A second SIGINT or
-// SIGTERM exits at once with that code, writing nothing more.
+// SIGTERM exits at once with that code, writing nothing more (the same
+// signal from the same sender within a second is the first one delivered
+// again, cancel.h: `timeout` sends it to vgc and to its process group).
 #include <fmt/core.h>
 #include <fcntl.h>
 #include <signal.h>
 #include <unistd.h>
 
 #include <cerrno>
+#include <climits>
+#include <cstdio>
 #include <chrono>
 #include <cstring>
 #include <ctime>
@@ -29,16 +33,22 @@
 #include "exec_implementation.h"  // shell_quote
 #include "implementation.h"
 #include "open_impl.h"
+#include "option_values.h"
 #include "program_command.h"
 #include "progress_line.h"
 #include "report.h"
 #include "runner.h"
 #include "subcommand.h"
 #include "terminal_text.h"
+#include "unstarted_implementation.h"
 #include "verdict.h"
 
 namespace vgc::cli {
 namespace {
+
+// The largest --max-size: sequences of up to about this many commands
+// (more only exhausts memory before any verdict).
+constexpr std::uint64_t kMaxSize = 100000;
 
 struct Options {
   std::string impl = "reference";
@@ -47,6 +57,7 @@ struct Options {
   int max_size = 50;
   double budget = 300;
   double timeout = 5;
+  double start_timeout = 60;  // --start-timeout
   std::string verse_bone_form = "auto";  // --verse-bone-form
   std::string clauses = "*";
   std::string baseline;
@@ -68,13 +79,15 @@ std::string utc_now() {
   return buf;
 }
 
+// "I/N" with 1 <= I <= N, each a whole decimal number (option_values.h).
 bool parse_shard(const std::string& s, int* index, int* count) {
-  int i = 0, n = 0;
-  char slash = 0, extra = 0;
-  if (std::sscanf(s.c_str(), "%d%c%d%c", &i, &slash, &n, &extra) != 3 || slash != '/' || n < 1 || i < 1 || i > n)
+  const std::size_t slash = s.find('/');
+  std::uint64_t i = 0, n = 0;
+  if (slash == std::string::npos || !parse_whole_number(std::string_view(s).substr(0, slash), &i) ||
+      !parse_whole_number(std::string_view(s).substr(slash + 1), &n) || n < 1 || n > INT_MAX || i < 1 || i > n)
     return false;
-  *index = i - 1;
-  *count = n;
+  *index = static_cast<int>(i) - 1;
+  *count = static_cast<int>(n);
   return true;
 }
 
@@ -147,13 +160,15 @@ bool reports_writable(const std::string& dir, std::string* why) {
 // SIGINT / SIGTERM (a cancelled CI job, Ctrl-C): the first asks the run to
 // stop (cancel.h) so that the report of what was found is written; a second
 // one exits at once. Only async-signal-safe calls here.
-extern "C" void on_cancel_signal(int sig) {
+extern "C" void on_cancel_signal(int sig, siginfo_t* info, void*) {
+  const long sender = info && info->si_code <= 0 ? static_cast<long>(info->si_pid) : 0;  // SI_USER, SI_QUEUE...
+  if (cancel_signal() && repeated_cancel(sig, sender)) return;  // the same cancel, delivered again (cancel.h)
   if (cancel_signal()) {
     const char msg[] = "\nvgc certify: second signal: exiting at once, no report\n";
     [[maybe_unused]] const ssize_t n = ::write(2, msg, sizeof msg - 1);
     _exit(128 + sig);
   }
-  request_cancel(sig);
+  request_cancel(sig, sender);
   const char msg[] = "\nvgc certify: cancelled: stopping the implementation and writing an incomplete report "
                      "(a second signal exits at once)\n";
   [[maybe_unused]] const ssize_t n = ::write(2, msg, sizeof msg - 1);
@@ -162,9 +177,9 @@ extern "C" void on_cancel_signal(int sig) {
 void install_cancel_handlers() {
   prepare_cancel();
   struct sigaction sa {};
-  sa.sa_handler = on_cancel_signal;
+  sa.sa_sigaction = on_cancel_signal;
   sigemptyset(&sa.sa_mask);
-  sa.sa_flags = 0;  // no SA_RESTART: a blocking wait returns EINTR and sees the request
+  sa.sa_flags = SA_SIGINFO;  // no SA_RESTART: a blocking wait returns EINTR and sees the request
   sigaction(SIGINT, &sa, nullptr);
   sigaction(SIGTERM, &sa, nullptr);
 }
@@ -179,6 +194,7 @@ std::string rerun_command(const Options& o) {
   if (!o.baseline.empty()) c += " --baseline " + shell_quote(o.baseline);
   if (o.strict) c += " --strict";
   if (o.timeout != 5) c += " --timeout " + fmt::format("{:g}", o.timeout);
+  if (o.start_timeout != 60) c += " --start-timeout " + fmt::format("{:g}", o.start_timeout);
   if (o.verse_bone_form != "auto") c += " --verse-bone-form " + o.verse_bone_form;
   return c;
 }
@@ -217,7 +233,7 @@ int run_mesh(const Options& o) {
     say(stderr, "vgc certify: --triangulate split {} faces of more than 4 corners into triangles\n",
         mesh.split_faces);
   install_cancel_handlers();
-  auto sut = open_impl_or_report("certify", o.impl, o.timeout, o.verse_bone_form);
+  auto sut = open_impl_or_report("certify", o.impl, {o.timeout, o.start_timeout}, o.verse_bone_form);
   if (!sut) return 2;
   register_oracle_checks();
   say(stderr, "vgc certify: {} on {} ({} vertices, {} triangles, {} quads; up to level {})\n", o.impl,
@@ -288,6 +304,22 @@ int run_mesh(const Options& o) {
   return code;
 }
 
+// One line per finding, with its replay command (CI annotations read them).
+void print_findings(const RunResult& result, const ReportContext& ctx, const Options& o) {
+  for (const auto& co : result.clauses) {
+    if (!co.finding) continue;
+    const std::string id(co.clause->id);
+    const bool known = ctx.baseline && ctx.baseline->reasons.count(id);
+    const char* tag = co.clause->level == ClauseLevel::Should ? "should"
+                      : known                                  ? "known"
+                      : !finding_gates(co, o.strict)           ? "profile"
+                                                               : co.status.c_str();
+    say("  {:<8} {:<24} {}\n", tag, co.clause->id, co.finding->message);
+    say("           replay: {}\n",
+        replay_command((std::filesystem::path(ctx.run_dir) / counterexample_path(co)).string(), o.impl));
+  }
+}
+
 int run(const Options& o) {
   if (!o.mesh.empty()) return run_mesh(o);
   RunOptions ro;
@@ -301,13 +333,6 @@ int run(const Options& o) {
                        "the second of three shards\n", o.shard);
     return 2;
   }
-  if (o.cases < 1)
-    return usage(fmt::format("--cases is {}: give a positive number of cases per property (default 200)", o.cases));
-  if (o.max_size < 1) return usage(fmt::format("--max-size is {}: give a positive size (default 50)", o.max_size));
-  if (!(o.budget > 0))
-    return usage(fmt::format("--budget is {:g}: give a positive number of seconds (default 300)", o.budget));
-  if (!(o.timeout > 0))
-    return usage(fmt::format("--timeout is {:g}: give a positive number of seconds (default 5)", o.timeout));
   if (const std::string bad = unmatched_pattern(o.clauses); !bad.empty())
     return usage("--clauses pattern '" + bad + "' matches no clause id: `vgc clauses` lists them; give comma-separated "
                  "ids or globs, e.g. --clauses 'LAYER-*,BONE-FOREST-1'");
@@ -324,8 +349,12 @@ int run(const Options& o) {
     for (const auto& [id, why] : baseline.reasons) ro.tolerated.insert(id);
   }
   install_cancel_handlers();
-  auto sut = open_impl_or_report("certify", o.impl, o.timeout, o.verse_bone_form);
-  if (!sut) return cancel_signal() ? 128 + cancel_signal() : 2;
+  std::unique_ptr<Implementation> sut =
+      open_impl_or_report("certify", o.impl, {o.timeout, o.start_timeout}, o.verse_bone_form);
+  if (!sut && !cancel_signal()) return 2;
+  if (!sut)  // cancelled while it started: the report says that nothing was judged
+    sut = std::make_unique<UnstartedImplementation>(
+        o.impl, std::string("not started: the run was cancelled by ") + cancel_signal_name() + " while it started");
 
   ReportContext ctx;
   ctx.implementation_spec = o.impl;
@@ -388,18 +417,7 @@ int run(const Options& o) {
   if (result.preflight)
     say("  the implementation could not show a fresh node: {}: {}\n", result.preflight->clause,
                result.preflight->message);
-  for (const auto& co : result.clauses) {
-    if (!co.finding) continue;
-    const std::string id(co.clause->id);
-    const bool known = ctx.baseline && ctx.baseline->reasons.count(id);
-    const char* tag = co.clause->level == ClauseLevel::Should ? "should"
-                      : known                                  ? "known"
-                      : !finding_gates(co, o.strict)           ? "profile"
-                                                               : co.status.c_str();
-    say("  {:<8} {:<24} {}\n", tag, co.clause->id, co.finding->message);
-    say("           replay: {}\n",
-               replay_command((std::filesystem::path(ctx.run_dir) / counterexample_path(co)).string(), o.impl));
-  }
+  print_findings(result, ctx, o);
   for (const auto& id : verdict.stale_baseline)
     say("  stale    {:<24} in the baseline but no case diverged on it: remove it\n", id);
   for (const auto& p : result.properties)
@@ -412,11 +430,12 @@ int run(const Options& o) {
                verdict.profile_differences.size());
   say("report: {}/summary.md\n", ctx.run_dir);
   say("re-run: {}\n", ctx.command_line);
-  if (cancel_signal()) {
+  // The exit code is the report's (verdict.h): 128 + the signal when the
+  // signal cut the run short; a signal that came after the last case found
+  // a whole run, whose report and exit code say so.
+  if (!result.cancelled_by.empty())
     say("cancelled by {}: the verdict is incomplete; the findings above are those found before\n",
-               cancel_signal_name());
-    return 128 + cancel_signal();
-  }
+        result.cancelled_by);
   return verdict.exit_code;
 }
 
@@ -424,41 +443,65 @@ void add(CLI::App& app, int* exit_code) {
   auto o = std::make_shared<Options>();
   auto* sub = app.add_subcommand("certify", "Certify an implementation of the geometry node against the spec");
   sub->add_option("--impl", o->impl, "reference | exec:CMD | plugin:PATH | verse:HOST[:PORT]")->capture_default_str();
-  sub->add_option("--seed", o->seed, "Seed; the same seed gives the same cases and verdicts")
-      ->capture_default_str()
-      ->check(CLI::Validator(
-          [](std::string& s) -> std::string {
-            if (!s.empty() && s.size() <= 20 && s.find_first_not_of("0123456789") == std::string::npos) return "";
-            return "takes a whole number from 0 to 18446744073709551615, got '" + s + "'";
-          },
-          "UINT64"));
-  sub->add_option("--cases", o->cases, "Test cases per property")->capture_default_str();
-  sub->add_option("--max-size", o->max_size, "RapidCheck size: longest command sequences")->capture_default_str();
-  sub->add_option("--budget", o->budget, "Wall-time limit in seconds; a run cut short is 'incomplete' (exit 2)")
-      ->capture_default_str();
+  auto* seed = sub->add_option("--seed", o->seed, "Seed; the same seed gives the same cases and verdicts")
+                   ->capture_default_str()
+                   ->transform(whole_number(0, UINT64_MAX, "the run's seed"));
+  auto* cases = sub->add_option("--cases", o->cases, "Test cases per property")
+                    ->capture_default_str()
+                    ->transform(whole_number(1, INT_MAX, "cases per property"));
+  auto* max_size = sub->add_option("--max-size", o->max_size, "RapidCheck size: longest command sequences")
+                       ->capture_default_str()
+                       ->transform(whole_number(1, kMaxSize, "commands (the RapidCheck size)"));
+  auto* budget = sub->add_option("--budget", o->budget,
+                                 "Wall-time limit in seconds; a run cut short is 'incomplete' (exit 2)")
+                     ->capture_default_str()
+                     ->transform(seconds("for the whole run"));
   sub->add_option("--timeout", o->timeout, "Seconds an out-of-process implementation has per answer")
-      ->capture_default_str();
-  sub->add_option("--verse-bone-form", o->verse_bone_form,
-                  "verse: the bone_create form to speak: auto (the form the host answers a probe in), spec "
-                  "(Verse spec 2.6.3) or r6 (r6's last release; docs/verse_wire.md section 4)")
-      ->check(CLI::IsMember({"auto", "spec", "r6"}))
-      ->capture_default_str();
+      ->capture_default_str()
+      ->transform(seconds("per answer"));
+  sub->add_option("--start-timeout", o->start_timeout,
+                  "Seconds an out-of-process implementation has to start (exec: and plugin: the ?hello answer, "
+                  "verse: the login), each time it is started")
+      ->capture_default_str()
+      ->transform(seconds("to start"));
+  auto* bone_form = sub->add_option("--verse-bone-form", o->verse_bone_form,
+                                    "verse: the bone_create form to speak: auto (the form the host answers a probe "
+                                    "in), spec (Verse spec 2.6.3) or r6 (r6's last release; docs/verse_wire.md "
+                                    "section 4)")
+                        ->check(CLI::IsMember({"auto", "spec", "r6"}))
+                        ->capture_default_str();
   sub->add_option("--clauses", o->clauses, "Clause ids to check: comma-separated glob patterns")->capture_default_str();
-  sub->add_option("--baseline", o->baseline, "File of known deviations: CLAUSE-ID reason, one per line");
+  auto* baseline = sub->add_option("--baseline", o->baseline, "File of known deviations: CLAUSE-ID reason, one per line");
   sub->add_option("--shard", o->shard, "Run shard I of N (1-based); shards together give the full verdicts")
       ->capture_default_str();
   sub->add_option("--reports", o->reports, "Directory for reports")->capture_default_str();
   sub->add_flag("--quiet", o->quiet, "No progress line");
-  sub->add_option("--mesh", o->mesh,
-                  "A mesh file (.obj, .off, .ply, .stl): build it on the implementation and run the "
-                  "derived-geometry checks (manifold, subdivision per level, normals, loop) on it instead of the "
-                  "catalog");
+  auto* mesh = sub->add_option("--mesh", o->mesh,
+                               "A mesh file (.obj, .off, .ply, .stl): build it on the implementation and run the "
+                               "derived-geometry checks (manifold, subdivision per level, normals, loop) on it "
+                               "instead of the catalog");
   sub->add_flag("--triangulate", o->triangulate,
-                "With --mesh: split faces of more than 4 corners into triangles (CGAL; concave faces included)");
-  sub->add_option("--levels", o->levels, "With --mesh: subdivision levels to judge (1 to 4)")->capture_default_str();
+                "With --mesh: split faces of more than 4 corners into triangles (CGAL; concave faces included)")
+      ->needs(mesh);
+  sub->add_option("--levels", o->levels, "With --mesh: subdivision levels to judge (1 to 4)")
+      ->capture_default_str()
+      ->transform(whole_number(1, 4, "subdivision levels"))
+      ->needs(mesh);
+  // What --mesh does not use: the mesh is the one case, judged whole (its
+  // --budget, --clauses, --timeout and --levels apply).
+  for (CLI::Option* generated : {seed, cases, max_size, baseline}) generated->excludes(mesh);
   sub->add_flag("--strict", o->strict,
                 "Also gate on IMPLEMENTATION-DEFINED clauses (the suite's reading of points the spec leaves open)");
-  sub->callback([o, exit_code] { *exit_code = run(*o); });
+  sub->callback([o, exit_code, bone_form] {
+    if (bone_form->count() && o->impl.rfind("verse:", 0) != 0) {
+      *exit_code = usage("--verse-bone-form is for --impl verse:HOST[:PORT] only; --impl is '" + o->impl + "'");
+      return;
+    }
+    // Each per-check and verdict line reaches a pipe or a CI log as it is
+    // printed, whatever ends the run afterwards (a second signal's _exit).
+    std::setvbuf(stdout, nullptr, _IOLBF, BUFSIZ);
+    *exit_code = run(*o);
+  });
 }
 
 const Subcommand kCertify{add};

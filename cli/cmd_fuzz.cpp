@@ -26,6 +26,8 @@
 // 2 a target could not be run or the table not written.
 #include <fmt/core.h>
 
+#include <climits>
+#include <cstdint>
 #include <cstdlib>
 #include <map>
 
@@ -39,6 +41,7 @@
 #include "wire_fuzz.h"
 #include "command_binary.h"
 #include "command_text.h"
+#include "option_values.h"
 #include "progress_line.h"
 #include "read_file.h"
 #include "subcommand.h"
@@ -117,9 +120,9 @@ int run_all(const FuzzArgs& a) {
   }
   for (const std::string& nt : a.target_times) {
     const auto eq = nt.find('=');
-    char* end = nullptr;
-    const double t = eq == std::string::npos ? 0 : std::strtod(nt.c_str() + eq + 1, &end);
-    if (eq == std::string::npos || end == nt.c_str() + eq + 1 || *end != '\0' || !(t > 0)) {
+    double t = 0;
+    if (eq == std::string::npos || eq == 0 || !parse_decimal(std::string_view(nt).substr(eq + 1), &t) || !(t > 0) ||
+        t > kMaxSeconds) {
       fmt::print(stderr, "vgc fuzz --all: --target-time takes NAME=SECONDS (e.g. verse_packet=3600), not '{}'\n", nt);
       return 2;
     }
@@ -213,9 +216,11 @@ void add_fuzz(CLI::App& app, int* exit_code) {
   sub->add_option("target", o.target,
                   "stream, text, differential, verse_packet, mesh_manifold, mesh_subdivision, property_<group>, or "
                   "wire (hostile traffic against a running Verse host, --impl verse:HOST[:PORT])");
-  sub->add_option("--time", o.time_s, "Campaign length in seconds, a wall-clock limit (default 60)");
+  sub->add_option("--time", o.time_s, "Campaign length in seconds, a wall-clock limit (default 60)")
+      ->transform(seconds("for the campaign (each target with --all)"));
   sub->add_option("--jobs", o.jobs,
-                  "Parallel fuzzing jobs (libFuzzer -fork=N, default 1); with --all, targets fuzzed at a time");
+                  "Parallel fuzzing jobs (libFuzzer -fork=N, default 1); with --all, targets fuzzed at a time")
+      ->transform(whole_number(1, 1024, "jobs"));
   sub->add_flag("--all", a->all,
                 "Soak: every target for --time seconds each from its committed corpus, --jobs at a time; "
                 "merges into a work corpus and writes a table (docs/fuzzing.md \"Soak\")");
@@ -226,7 +231,8 @@ void add_fuzz(CLI::App& app, int* exit_code) {
                 "not wall-clock, so a soak on a busy machine still gets its budget (wall capped at --wall-cap x)");
   sub->add_option("--wall-cap", a->wall_cap,
                   "With --all --cpu-time: stop a target starved of CPU after FACTOR times its budget of wall "
-                  "clock (default 6)");
+                  "clock (default 6)")
+      ->transform(decimal_in(1, 1000, "(a factor)"));
   sub->add_option("--targets", a->only, "With --all: only these targets (comma-separated)")->delimiter(',');
   sub->add_option("--work-corpus", a->work_corpus,
                   "With --all: the work corpus directory (default reports/fuzz/work-corpus)");
@@ -234,15 +240,18 @@ void add_fuzz(CLI::App& app, int* exit_code) {
                   "differential, property_<group>: the implementation under test, plugin:PATH; differential also "
                   "exec:CMD or verse:[NAME@]HOST[:PORT], a running implementation (docs/fuzzing.md)");
   sub->add_option("--timeout", o.call_timeout_s,
-                  "exec:/verse: seconds the implementation has per answer (default 5); longer is a hang (timeout)");
+                  "exec:/verse: seconds the implementation has per answer (default 5); longer is a hang (timeout)")
+      ->transform(seconds("per answer"));
   sub->add_option("--verse-bone-form", o.verse_bone_form,
                   "verse: the bone_create form to speak: auto (default), spec or r6 (docs/verse_wire.md section 4)")
       ->check(CLI::IsMember({"auto", "spec", "r6"}));
   sub->add_option("--restart", o.restart,
                   "verse: a shell command that starts a fresh host (and returns once it listens); run before a "
                   "crash or hang is confirmed on a fresh instance. Without it such findings are reported unconfirmed");
-  sub->add_option("--seed", o.seed, "libFuzzer seed (default 1)");
-  sub->add_option("--max-len", o.max_len, "Longest input in bytes (libFuzzer -max_len, default 1024)");
+  sub->add_option("--seed", o.seed, "libFuzzer seed (default 1)")
+      ->transform(whole_number(0, UINT_MAX, "the libFuzzer seed"));
+  sub->add_option("--max-len", o.max_len, "Longest input in bytes (libFuzzer -max_len, default 1024)")
+      ->transform(whole_number(1, std::uint64_t{1} << 24, "bytes"));
   sub->add_option("--baseline", o.baseline,
                   "Known deviations (the certify baseline format): their clauses are marked, not new; with "
                   "--impl exec:/verse: the target also passes over them (a crash or hang excepted)");
@@ -250,7 +259,8 @@ void add_fuzz(CLI::App& app, int* exit_code) {
   sub->add_flag("--stop-at-first", o.stop_at_first, "Stop at the first finding (time to find)");
   sub->add_option("--fuzz-build", o.fuzz_build, "The clang -DVGC_FUZZ=ON build directory");
   sub->add_option("--source-dir", o.source_dir, "The vgc source tree (corpora/, reports/)");
-  sub->add_option("--max-inputs", a->max_inputs, "wire: stop after this many inputs (default: only --time)");
+  sub->add_option("--max-inputs", a->max_inputs, "wire: stop after this many inputs (default: only --time)")
+      ->transform(whole_number(1, UINT64_MAX, "inputs"));
   sub->add_option("--write-seeds", a->write_seeds,
                   "wire: write the first inputs of every kind (--max-inputs per kind, default 3) as fuzz_verse_packet "
                   "seeds into DIR; no host needed");

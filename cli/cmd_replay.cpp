@@ -27,6 +27,7 @@
 #include "command_text.h"
 #include "implementation.h"
 #include "open_impl.h"
+#include "option_values.h"
 #include "program_text.h"
 #include "read_file.h"
 #include "runner.h"
@@ -42,6 +43,7 @@ struct Options {
   std::string file;
   std::string impl = "reference";
   double timeout = 5;
+  double start_timeout = 60;  // --start-timeout
   std::string verse_bone_form = "auto";  // --verse-bone-form
   bool strict = false;  // as certify --strict: IMPLEMENTATION-DEFINED readings gate
   bool wire = false;    // the file is a `vgc fuzz wire` transcript (fuzz/wire_fuzz.h)
@@ -75,7 +77,7 @@ int run(const Options& o) {
     say(stderr, "{}:{}:{}: error: {}\n", o.file, error.line, error.column, error.message);
     return 2;
   }
-  auto sut = open_impl_or_report("replay", o.impl, o.timeout, o.verse_bone_form);
+  auto sut = open_impl_or_report("replay", o.impl, {o.timeout, o.start_timeout}, o.verse_bone_form);
   if (!sut) return 2;
   register_oracle_checks();  // as certify: the oracles judge the capability checks
   const ReplayResult r = replay_program(program, *sut);
@@ -154,8 +156,13 @@ void add(CLI::App& app, int* exit_code) {
   sub->add_option("file", o->file, "Command file (a counterexample from reports/, or any command file)")->required();
   sub->add_option("--impl", o->impl, "reference | exec:CMD | plugin:PATH | verse:HOST[:PORT]")->capture_default_str();
   sub->add_option("--timeout", o->timeout, "Seconds an out-of-process implementation has per answer")
-      ->capture_default_str();
-  sub->add_option("--verse-bone-form", o->verse_bone_form,
+      ->capture_default_str()
+      ->transform(seconds("per answer"));
+  sub->add_option("--start-timeout", o->start_timeout,
+                  "Seconds an out-of-process implementation has to start (its ?hello answer, a Verse login)")
+      ->capture_default_str()
+      ->transform(seconds("to start"));
+  auto* bone_form = sub->add_option("--verse-bone-form", o->verse_bone_form,
                   "verse: the bone_create form to speak: auto (the form the host answers a probe in), spec "
                   "(Verse spec 2.6.3) or r6 (r6's last release; docs/verse_wire.md section 4)")
       ->check(CLI::IsMember({"auto", "spec", "r6"}))
@@ -166,7 +173,14 @@ void add(CLI::App& app, int* exit_code) {
   sub->add_flag("--strict", o->strict,
                 "Say the verdict as certify --strict would (IMPLEMENTATION-DEFINED readings gate); the exit "
                 "code is the same");
-  sub->callback([o, exit_code] { *exit_code = run(*o); });
+  sub->callback([o, exit_code, bone_form] {
+    if (bone_form->count() && o->impl.rfind("verse:", 0) != 0) {
+      say(stderr, "vgc replay: --verse-bone-form is for --impl verse:HOST[:PORT] only; --impl is '{}'\n", o->impl);
+      *exit_code = 2;
+      return;
+    }
+    *exit_code = run(*o);
+  });
 }
 
 const Subcommand kReplay{add};

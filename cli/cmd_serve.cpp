@@ -209,16 +209,18 @@ void add_serve(CLI::App& app, int* exit_code) {
   CLI::App* sub = app.add_subcommand(
       "serve", "Serve a node over the exec protocol on stdin/stdout (docs/adapters.md)");
   sub->add_option("--impl", opts->impl, "What to serve: reference (default) or plugin:PATH (loaded in this process)");
-  sub->add_flag("--done", opts->done,
+  auto* done = sub->add_flag("--done", opts->done,
                 "Answer every command \"done\" (processed, verdict not reported), as a host on the Verse wire "
                 "reports nothing (docs/adapters.md)");
-  sub->add_option("--verse", opts->verse,
+  auto* verse = sub->add_option("--verse", opts->verse,
                   "Serve as a Verse r6 host on UDP [ADDR:]PORT (default address 127.0.0.1; PORT 0: any free "
                   "port); prints 'vgc-verse listening ADDR:PORT' (docs/verse_wire.md)");
-  sub->add_flag("--like-r6", opts->like_r6,
+  auto* like_r6 = sub->add_flag("--like-r6", opts->like_r6,
                 "With --verse: behave as the r6 host does where a client must cope (a destroyed node's id is "
                 "reused; bone_create in r6's form, a packet that does not decode losing its rest; "
                 "docs/verse_wire.md)");
+  like_r6->needs(verse);
+  done->excludes(verse);  // a Verse host answers nothing: --done is the exec route's way to say so
   sub->callback([opts, exit_code] { *exit_code = run_serve(*opts); });
 }
 

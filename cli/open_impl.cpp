@@ -38,7 +38,7 @@ std::string what_to_do(const std::string& spec, const std::string& error) {
 }  // namespace
 
 std::unique_ptr<Implementation> open_impl_or_report(const char* subcommand, const std::string& spec,
-                                                    double timeout_seconds, const std::string& verse_bone_form) {
+                                                    TimeLimits limits, const std::string& verse_bone_form) {
   // A plugin file that is not there: said plainly, not as a child process
   // that failed to answer.
   if (spec.rfind("plugin:", 0) == 0 && spec.size() > 7) {
@@ -55,7 +55,8 @@ std::unique_ptr<Implementation> open_impl_or_report(const char* subcommand, cons
     }
   }
   OpenOptions open;
-  open.timeout_seconds = timeout_seconds;
+  open.timeout_seconds = limits.timeout_seconds;
+  open.start_timeout_seconds = limits.start_timeout_seconds;
   open.verse_bone_form = verse_bone_form;
   std::string error;
   auto sut = open_implementation(spec, open, &error);

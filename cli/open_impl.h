@@ -16,13 +16,19 @@
 
 namespace vgc::cli {
 
+// The time limits of an out-of-process implementation: --timeout per
+// call, --start-timeout per start (OpenOptions).
+struct TimeLimits {
+  double timeout_seconds = 5;
+  double start_timeout_seconds = 60;
+};
+
 // Opens `spec` ("reference", "exec:CMD", "plugin:PATH", "verse:HOST[:PORT]") with
-// `timeout_seconds` per call. On failure prints "vgc <subcommand>: <why>"
+// those limits. On failure prints "vgc <subcommand>: <why>"
 // to stderr and returns nullptr (the caller exits 2).
 // verse_bone_form: --verse-bone-form (auto | spec | r6; docs/verse_wire.md section 4).
 std::unique_ptr<Implementation> open_impl_or_report(const char* subcommand, const std::string& spec,
-                                                    double timeout_seconds,
-                                                    const std::string& verse_bone_form = "auto");
+                                                    TimeLimits limits, const std::string& verse_bone_form = "auto");
 
 // Registers the optional-capability checks of the oracles
 // (oracles/capability_checks.h) when this vgc is built with them; returns

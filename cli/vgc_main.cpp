@@ -9,6 +9,7 @@
 #include <system_error>
 #include <vector>
 
+#include "option_values.h"
 #include "program_command.h"
 #include "subcommand.h"
 #include "terminal_text.h"
@@ -45,6 +46,7 @@ int main(int argc, char** argv) {
   if (!ec) vgc::set_program_command(vgc::program_command_for(self.string(), path ? path : ""));
   int exit_code = 0;
   vgc::cli::add_all_subcommands(app, &exit_code);
+  vgc::cli::refuse_empty_values(app);  // `--reports ""`: exit 2 naming the option (option_values.h)
   // A word where the subcommand goes that names none: say which there are.
   if (argc > 1 && argv[1][0] != '-') {
     std::string names;

@@ -1109,6 +1109,19 @@ void run_one_property(std::size_t i, Implementation& sut, const RunOptions& o, C
   }
 }
 
+// A capability property of a cancelled run, when what the implementation
+// claims was never known (the cancel came before ?capabilities was
+// answered): stopped, so its clauses are unchecked, not not-claimed
+// (issue 31, item 6).
+PropertyOutcome stopped_before_claims(PropertyOutcome p, const PropertySpec& spec, const RunOptions& o) {
+  p.status = "stopped";
+  p.skip = PropertySkip::None;
+  p.cases_target = property_cases(spec, o.cases);
+  p.note = std::string("cancelled by ") + cancel_signal_name() +
+           " before the implementation was asked which capabilities it claims";
+  return p;
+}
+
 }  // namespace
 
 RunResult run_certification(Implementation& implementation, const RunOptions& o) {
@@ -1129,11 +1142,17 @@ RunResult run_certification(Implementation& implementation, const RunOptions& o)
 
   // Which properties run at all, then which of them run in this shard.
   const auto& props = property_catalog();
-  const std::vector<std::string> claimed = run.preflight ? std::vector<std::string>{} : query_capabilities(sut);
+  // A cancelled run asks nothing more: the question would end unanswered
+  // and read as "claims nothing" (stopped_before_claims).
+  bool claims_known = !run.preflight && !cancel_signal();
+  const std::vector<std::string> claimed = claims_known ? query_capabilities(sut) : std::vector<std::string>{};
+  claims_known = claims_known && !cancel_signal();
   std::vector<std::optional<PropertyOutcome>> not_run;
   std::vector<bool> runs;
   for (const PropertySpec& spec : props) {
     not_run.push_back(why_not_run(spec, o, run, limits, claimed));
+    if (!claims_known && not_run.back() && not_run.back()->skip == PropertySkip::NotClaimed)
+      not_run.back() = stopped_before_claims(*not_run.back(), spec, o);
     runs.push_back(!not_run.back());
   }
   const std::vector<int> shard = assign_shards(runs, o.shard_count, o.cases, !limits.route.empty());

@@ -55,6 +55,7 @@ struct ClientSession::Impl {
       Status st = flush();
       if (!st.ok()) return st;
       if (done()) return {};
+      if (options.stop && options.stop()) return Status::timeout(std::string("stopped while waiting for ") + waiting_for);
       const Clock::time_point now = Clock::now();
       const bool overdue =
           options.unacknowledged_limit_s > 0 && channel->oldest_unacknowledged() != Clock::time_point::max() &&
@@ -163,6 +164,10 @@ Status ClientSession::connect(const std::string& host, std::uint16_t port, const
       st = s.socket.send_to(s.host, stage_packet);
       if (!st.ok()) return st;
       sent_at = now;
+    }
+    if (options.stop && options.stop()) {
+      s.socket.close();
+      return Status::timeout(std::string("stopped while waiting for ") + stage_name);
     }
     if (now >= deadline) {
       s.socket.close();

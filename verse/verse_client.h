@@ -53,6 +53,11 @@ struct ClientOptions {
   // login packets included: captures (the fuzz seeds of
   // corpora/fuzz/fuzz_verse_packet) and debugging. Null: nothing.
   std::function<void(const std::string& clear_packet)> on_packet;
+  // Asked at least every 50 ms while a call waits (the login included):
+  // true ends the wait at once with a Timeout "stopped" status. vgc's
+  // certify stops so when its run is cancelled (SIGTERM, SIGINT), rather
+  // than waiting out a login limit of a minute. Null: never.
+  std::function<bool()> stop;
 };
 
 class ClientSession {

@@ -15,6 +15,7 @@
 #include <mutex>
 #include <thread>
 
+#include "bounded_text.h"
 #include "cancel.h"
 #include "capability_documents.h"
 #include "command_text.h"
@@ -112,9 +113,13 @@ ExecImplementation::~ExecImplementation() {
   close_fds();
 }
 
-ExecImplementation::Clock::time_point ExecImplementation::deadline() const {
-  const double s = std::max(0.0, options_.timeout_seconds);
+ExecImplementation::Clock::time_point ExecImplementation::deadline(double seconds) const {
+  const double s = std::max(0.0, seconds);
   return Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(s));
+}
+
+ExecImplementation::Clock::time_point ExecImplementation::deadline() const {
+  return deadline(options_.timeout_seconds);
 }
 
 void ExecImplementation::close_fds() {
@@ -278,7 +283,7 @@ ExecImplementation::Io ExecImplementation::write_all(const std::string& data, Cl
     if (n < 0 && errno == EAGAIN) {
       bool can_write = false;
       while (!can_write) {
-        if (!pump(true, dl, &can_write)) return Io::Timeout;
+        if (!pump(true, dl, &can_write)) return cancel_signal() ? Io::Cancelled : Io::Timeout;
       }
       continue;
     }
@@ -310,7 +315,7 @@ ExecImplementation::Io ExecImplementation::read_line(std::string* line, Clock::t
     scanned = buffered();
     if (buffered() > answer_limit()) return Io::TooLong;
     if (out_fd_ < 0) return Io::Eof;
-    if (!pump(false, dl, nullptr)) return Io::Timeout;
+    if (!pump(false, dl, nullptr)) return cancel_signal() ? Io::Cancelled : Io::Timeout;
   }
 }
 
@@ -384,12 +389,21 @@ void ExecImplementation::fail_io(Io io, const std::string& what) {
   switch (io) {
     case Io::Ok: return;
     case Io::Timeout:
-      fail(CallStatus::Timeout, "no complete answer to " + what + " within " +
-                                    seconds_text(request_timeout_ > 0 ? request_timeout_ : options_.timeout_seconds));
+      // The limit that ran out, by the option that sets it (OpenOptions).
+      fail(CallStatus::Timeout,
+           "no complete answer to " + what + " within " +
+               (starting_ ? seconds_text(options_.start_timeout_seconds) + " (--start-timeout)"
+                : request_timeout_ > 0
+                    ? seconds_text(request_timeout_) + " (--timeout, scaled with the size of the answer expected)"
+                    : seconds_text(options_.timeout_seconds) + " (--timeout)"));
+      return;
+    case Io::Cancelled:  // a Timeout to the runner, which drops what a cancel cut short
+      fail(CallStatus::Timeout, "not answered: the run was cancelled by " + std::string(cancel_signal_name()) +
+                                    " while vgc waited for the answer to " + what);
       return;
     case Io::TooLong:
-      fail(CallStatus::ProtocolError, "the answer to " + what + " is longer than " +
-                                          std::to_string(answer_limit()) + " bytes");
+      fail(CallStatus::ProtocolError, "the answer to " + what + " is longer than " + std::to_string(answer_limit()) +
+                                          " bytes (vgc's limit on one answer or document)");
       return;
     case Io::Eof:
       fail(CallStatus::Crash, "end of its output while answering " + what);
@@ -424,21 +438,24 @@ Answer ExecImplementation::start() {
   }
   failed_ = CallStatus::Ok;
   std::string line;
-  const Io io = exchange("?hello", &line, deadline());
+  starting_ = true;  // the ?hello answer is the start: --start-timeout
+  const Io io = exchange("?hello", &line, deadline(options_.start_timeout_seconds));
   if (io != Io::Ok) {
     fail_io(io, "?hello");
+    starting_ = false;
     Answer a;
     a.status = failed_;
     a.detail = failed_detail_;
     return a;
   }
+  starting_ = false;
   const std::string prefix = "vgc-exec ";
   if (line.rfind(prefix, 0) == 0) {
     const std::string rest = line.substr(prefix.size());
     const std::size_t sp = rest.find(' ');
     const std::string version = rest.substr(0, sp);
     if (version == "1") {
-      hello_name_ = sp == std::string::npos ? std::string() : rest.substr(sp + 1);
+      hello_name_ = sp == std::string::npos ? std::string() : bounded_text(std::string_view(rest).substr(sp + 1));
       return Answer{CallStatus::Ok, true, {}, {}, false};
     }
     fail(CallStatus::ProtocolError, "it speaks exec protocol version " + quote_line(version) +
@@ -539,17 +556,19 @@ Answer ExecImplementation::apply(const Command& c) {
     return a;
   }
   if (line.rfind(kRejected, 0) == 0) {
-    const std::string reason = line.substr(kRejected.size());
+    const std::string_view reason = std::string_view(line).substr(kRejected.size());
     const bool token = !reason.empty() && std::none_of(reason.begin(), reason.end(), [](char ch) {
       return static_cast<unsigned char>(ch) <= ' ' || ch == 0x7f;
     });
     if (token) {
-      a.reason = reason;
+      // No reason name is near kShownBytes long: a cut one still differs
+      // from the reference's, and every copy of it stays small.
+      a.reason = bounded_text(reason);
       return a;
     }
   } else if (line == "error" || line.rfind("error ", 0) == 0) {
     a.malformed = true;
-    a.detail = line.size() > 6 ? line.substr(6) : std::string();
+    a.detail = line.size() > 6 ? bounded_text(std::string_view(line).substr(6)) : std::string();
     return a;
   }
   fail(CallStatus::ProtocolError, "answered " + quote_line(line) + " to " + quote_line(text) +
@@ -586,7 +605,10 @@ Document ExecImplementation::request_document(const char* request, const char* h
                                         "; a document must start with \"" + header + " 1\"");
   } else {
     while (io == Io::Ok) {
-      d.text += line;
+      // A line of a document is short (the longest the reference prints is
+      // well under a KiB): a longer one is kept cut (bounded_text.h); it
+      // still differs from the reference's line, as the whole one did.
+      d.text += line.size() > kShownBytes ? bounded_text(line) : line;
       d.text += '\n';
       if (line == "end") {
         answer_limit_ = 0, request_timeout_ = 0;

@@ -39,8 +39,8 @@ class ExecImplementation final : public Implementation {
   ExecImplementation(const ExecImplementation&) = delete;
   ExecImplementation& operator=(const ExecImplementation&) = delete;
 
-  // Starts the program and performs the ?hello handshake within the
-  // timeout. On failure returns the Answer describing it (status != Ok) and
+  // Starts the program and performs the ?hello handshake within
+  // OpenOptions::start_timeout_seconds. On failure returns the Answer describing it (status != Ok) and
   // leaves the implementation in that failed state; reset() retries.
   Answer start();
 
@@ -81,7 +81,7 @@ class ExecImplementation final : public Implementation {
 
  private:
   using Clock = std::chrono::steady_clock;
-  enum class Io { Ok, Eof, Timeout, TooLong, WriteFailed, Unrequested };
+  enum class Io { Ok, Eof, Timeout, Cancelled, TooLong, WriteFailed, Unrequested };
 
   bool spawn(std::string* error);
   // Sends `line` + "\n" and reads one line, with one deadline for both.
@@ -101,7 +101,8 @@ class ExecImplementation final : public Implementation {
   void close_fds();
   Answer failed_answer() const;
   Document request_document(const char* request, const char* header, bool error_allowed = false);
-  Clock::time_point deadline() const;
+  Clock::time_point deadline() const;  // of a call: --timeout from now
+  Clock::time_point deadline(double seconds) const;
 
   std::string command_;
   OpenOptions options_;
@@ -125,6 +126,7 @@ class ExecImplementation final : public Implementation {
   std::string err_partial_;
   std::deque<std::string> err_lines_;
   int digest_claimed_ = -1;  // offers_digest(): -1 not asked yet, 0 no, 1 yes
+  bool starting_ = false;  // waiting for the ?hello answer: the limit is --start-timeout
   CallStatus failed_ = CallStatus::Ok;  // sticky failure until reset()
   std::string failed_detail_;
 };

@@ -153,7 +153,15 @@ class Implementation {
 };
 
 struct OpenOptions {
-  double timeout_seconds = 5.0;  // per call, for out-of-process implementations
+  // Per call, for out-of-process implementations (the --timeout option).
+  double timeout_seconds = 5.0;
+  // Starting one (the --start-timeout option): an exec program or an
+  // isolated plugin's child until its ?hello answer, a Verse host's login;
+  // each start, restarts included. Separate from the per-call limit and
+  // generous: a Python program or a JVM on a loaded CI runner takes seconds
+  // to start, and a start that is cut short is no finding, only a run that
+  // cannot begin (issue 31, item 3).
+  double start_timeout_seconds = 60.0;
   bool isolate_plugin = true;    // plugin: run it in a child process (vgc serve)
   // The vgc executable that serves an isolated plugin (`vgc serve --impl
   // plugin:PATH`). Empty: the running program (/proc/self/exe), which is

@@ -7,6 +7,9 @@
 #include <type_traits>
 #include <vector>
 
+#include <fmt/core.h>
+
+#include "cancel.h"
 #include "command_text.h"
 #include "verse_client.h"
 #include "wire_commands.h"
@@ -25,6 +28,11 @@ constexpr double kDeadSessionSeconds = 1.0;
 // does not answer (r6 after running a node_index_subscribe decoded from
 // garbage) gets a fresh login after this, not the whole --timeout.
 constexpr double kFirstCreateSeconds = 1.0;
+
+// "5 s (--timeout)": a limit as the message that reports it names it.
+std::string limit_text(double seconds, const char* option) {
+  return fmt::format("{:g} s ({})", seconds, option);
+}
 
 double seconds_left(Clock::time_point deadline) {
   return std::max(0.0, std::chrono::duration<double>(deadline - Clock::now()).count());
@@ -203,7 +211,8 @@ Answer VerseImplementation::connect() {
   verse::ClientOptions o;
   o.name = login_;
   if (const char* pw = std::getenv("VERSE_PASSWORD")) o.password = pw;
-  o.login_timeout_s = options_.timeout_seconds;
+  o.login_timeout_s = options_.start_timeout_seconds;  // a login is a start (OpenOptions)
+  o.stop = [] { return cancel_signal() != 0; };          // a cancelled run waits for nothing (cancel.h)
   o.bone_form = bone_form_;
   o.unacknowledged_limit_s = std::min(kDeadSessionSeconds, options_.timeout_seconds);
   const std::string where = host_ + ":" + std::to_string(port_);
@@ -214,10 +223,11 @@ Answer VerseImplementation::connect() {
     // silent: waiting for it again at every test case would only turn a
     // dead host into a run as long as cases x --timeout.
     if (st.code == verse::Status::Code::Timeout && ever_connected_)
-      silent_since_ = "no answer to a login within " + std::to_string(options_.timeout_seconds) + " s";
+      silent_since_ = "no answer to a login within " + limit_text(options_.start_timeout_seconds, "--start-timeout");
     if (!st.ok())
       return failed(call_status_of(st), "logging in to the Verse host at " + where + " as \"" + login_ +
-                                            "\": " + st.to_string());
+                                            "\": " + st.to_string() +
+                                            (st.code == verse::Status::Code::Timeout ? " (--start-timeout)" : ""));
   }
   release_ = driver_->host_release();
   identity_ = "Verse host at " + where + " (release " + std::to_string(release_) + ")";
@@ -300,6 +310,9 @@ Answer VerseImplementation::settle(const std::string& what) {
   if (const verse::Status st = driver_->send(mark); !st.ok())
     return failed(call_status_of(st), what + ": sending the round-trip node_name_set: " + st.to_string());
   for (;;) {
+    if (cancel_signal())  // a Timeout to the runner, which drops what a cancel cut short
+      return failed(CallStatus::Timeout, what + ": not answered: the run was cancelled by " +
+                                             std::string(cancel_signal_name()));
     verse::WireCommand w;
     const double left = seconds_left(deadline);
     const verse::Status st = observer_->receive(&w, std::min(left, kSessionCheckSeconds));
@@ -308,8 +321,8 @@ Answer VerseImplementation::settle(const std::string& what) {
       if (driver_->unacknowledged_for() > kDeadSessionSeconds) {
         Answer lost = failed(CallStatus::Crash,
                       what + ": the host has not acknowledged the driver's packets for " +
-                          std::to_string(kDeadSessionSeconds) +
-                          " s: it dropped the session (r6 does so silently when the rest of a packet it could not "
+                          limit_text(kDeadSessionSeconds, "vgc's limit for an unacknowledged packet") +
+                          ": it dropped the session (r6 does so silently when the rest of a packet it could not "
                           "decode reads as connect_terminate)");
         driver_lost_ = true;
         return lost;
@@ -320,7 +333,7 @@ Answer VerseImplementation::settle(const std::string& what) {
       if (st.code == verse::Status::Code::Timeout)
         return failed(CallStatus::Timeout,
                       what + ": the host did not echo the round-trip node_name_set \"" + name + "\" to a subscriber "
-                      "within " + std::to_string(options_.timeout_seconds) + " s");
+                      "within " + limit_text(options_.timeout_seconds, "--timeout"));
       return failed(call_status_of(st), what + ": " + st.to_string());
     }
     if (const auto* n = std::get_if<verse::wire::NodeNameSet>(&w); n && n->node_id == node_ && n->name == name) break;
@@ -346,7 +359,7 @@ Answer VerseImplementation::settle(const std::string& what) {
       if (st.code == verse::Status::Code::Timeout)
         return failed(CallStatus::Timeout, what + ": the host did not echo the observer's round-trip node_name_set "
                                                   "after its layer subscriptions within " +
-                                               std::to_string(options_.timeout_seconds) + " s");
+                                               limit_text(options_.timeout_seconds, "--timeout"));
       return failed(call_status_of(st), what + ": " + st.to_string());
     }
   }

@@ -8,6 +8,7 @@
 #include <map>
 #include <sstream>
 
+#include "bounded_text.h"
 #include "clause.h"
 #include "program_command.h"
 
@@ -28,12 +29,13 @@ bool parse_baseline(const std::string& text, Baseline* out, std::string* error) 
     std::string reason;
     if (end_id != std::string::npos) {
       const auto r = line.find_first_not_of(" \t", end_id);
-      if (r != std::string::npos) reason = line.substr(r);
+      // The reason is copied into every report: kept to a few KiB (bounded_text.h).
+      if (r != std::string::npos) reason = bounded_text(std::string_view(line).substr(r));
     }
     // "LINE:COLUMN: what is wrong; what to do" (columns count from 1).
     const std::string at = std::to_string(number) + ":" + std::to_string(first + 1) + ": ";
     if (!find_clause(id)) {
-      *error = at + "unknown clause id '" + id + "': use an id that `" + program_command() +
+      *error = at + "unknown clause id '" + bounded_text(id, 100) + "': use an id that `" + program_command() +
                " clauses` lists (one clause id, then the reason, per line)";
       return false;
     }

@@ -1,6 +1,8 @@
 // verdict.cpp — see verdict.h.
 #include "verdict.h"
 
+#include "cancel.h"
+
 #include <algorithm>
 #include <map>
 
@@ -41,7 +43,7 @@ Verdict judge(const RunResult& run, const Baseline* baseline, bool strict) {
   }
   if (!run.cancelled_by.empty()) {  // what it found is listed, but the run is no verdict
     v.name = "incomplete";
-    v.exit_code = 2;
+    v.exit_code = cancelled_exit_code(run.cancelled_by);  // the process's: 128 + the signal
   } else if (!v.new_failures.empty()) {
     v.name = "not-conformant";
     v.exit_code = 1;

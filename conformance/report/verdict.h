@@ -17,7 +17,10 @@
 // Then: any clause `unchecked` or property stopped makes the run
 // "incomplete" (exit 2): neither a pass nor a failure. Otherwise
 // "conformant" (exit 0). A cancelled run (RunResult::cancelled_by) is
-// "incomplete" whatever it found: its findings are listed all the same. Usage and infrastructure errors are also exit 2.
+// "incomplete" whatever it found: its findings are listed all the same,
+// and its exit code is the process's, 128 + the signal (143 SIGTERM, 130
+// SIGINT), so report.json and the exit status agree. Usage and
+// infrastructure errors are also exit 2.
 #pragma once
 
 #include <string>

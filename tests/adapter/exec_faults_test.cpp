@@ -135,10 +135,13 @@ TEST(ExecFaults, GarbageAnswersAreProtocolErrorsQuotingTheLine) {
 TEST(ExecFaults, AProgramThatNeverAnswersHelloDoesNotOpen) {
   std::string error;
   const auto t0 = Clock::now();
-  auto impl = open_implementation(faulty_spec("silent_hello.sh"), test_options(0.5), &error);
+  OpenOptions o = test_options(30);
+  o.start_timeout_seconds = 0.5;  // the start's own limit (--start-timeout), not the per-call one
+  auto impl = open_implementation(faulty_spec("silent_hello.sh"), o, &error);
   EXPECT_EQ(impl, nullptr);
   EXPECT_LT(seconds_since(t0), 2.0);
   EXPECT_NE(error.find("timeout"), std::string::npos) << error;
+  EXPECT_NE(error.find("within 0.5 s (--start-timeout)"), std::string::npos) << error;
   EXPECT_NE(error.find("?hello"), std::string::npos) << error;
   EXPECT_NE(error.find("silent_hello: ignoring ?hello"), std::string::npos) << error;
 }

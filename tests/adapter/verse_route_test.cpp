@@ -15,6 +15,8 @@
 #include <unistd.h>
 
 #include <gtest/gtest.h>
+
+#include <algorithm>
 #include <rapidcheck.h>
 #include <rapidcheck/gtest.h>
 
@@ -97,9 +99,13 @@ class ServedHost {
   std::string line_;
 };
 
+// A login (the start's limit, --start-timeout) is given 10 s at least: a
+// host that went silent costs one such wait (then vgc stops asking).
 std::unique_ptr<Implementation> open_verse(const ServedHost& host, double timeout_seconds = 5.0) {
   std::string error;
-  auto sut = open_implementation(host.spec(), test::test_options(timeout_seconds), &error);
+  OpenOptions o = test::test_options(timeout_seconds);
+  o.start_timeout_seconds = std::max(10.0, timeout_seconds);
+  auto sut = open_implementation(host.spec(), o, &error);
   EXPECT_NE(sut, nullptr) << error;
   return sut;
 }
@@ -109,7 +115,7 @@ RunOptions options(int cases) {
   o.seed = 1;
   o.cases = cases;
   o.max_size = 50;
-  o.budget_seconds = 120;
+  o.budget_seconds = 3600;  // load must not cut a test short; CTest's TIMEOUT guards a hang
   return o;
 }
 
@@ -159,9 +165,12 @@ TEST(VerseRoute, NoHostListeningIsAClearErrorWithinTheTimeout) {
   host.signal(SIGSTOP);
   std::string error;
   const auto start = std::chrono::steady_clock::now();
-  auto sut = open_implementation(host.spec(), test::test_options(0.5), &error);
+  OpenOptions o = test::test_options(30);
+  o.start_timeout_seconds = 0.5;  // a login is a start: its own limit
+  auto sut = open_implementation(host.spec(), o, &error);
   EXPECT_EQ(sut, nullptr);
   EXPECT_NE(error.find("cannot certify this host (timeout)"), std::string::npos) << error;
+  EXPECT_NE(error.find("(--start-timeout)"), std::string::npos) << error;
   EXPECT_NE(error.find("Is a Verse host listening there"), std::string::npos) << error;
   EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(20));  // bounded, not a hang
   host.signal(SIGCONT);

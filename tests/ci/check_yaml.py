@@ -65,8 +65,13 @@ if action:
     for name in ("verdict", "report-dir"):
         check(name in outputs and "steps.certify.outputs." + name in outputs[name].get("value", ""),
               f"action.yml has the output {name}")
-    check(any(str(s.get("uses", "")).startswith("actions/upload-artifact@") for s in steps),
-          "action.yml uploads the report as an artifact")
+    upload = next((s for s in steps if str(s.get("uses", "")).startswith("actions/upload-artifact@")), None)
+    check(upload is not None, "action.yml uploads the report as an artifact")
+    # A cancelled job runs only the steps whose condition holds whatever
+    # happened (GitHub's workflow cancellation reference): always(), not
+    # !cancelled(), or the incomplete report of a cancelled run is lost.
+    check(upload is not None and "always()" in str(upload.get("if", "")) and "cancelled()" not in str(upload.get("if", "")),
+          "action.yml uploads the report of a cancelled job too (if: always() ...)")
 
 # .github/workflows/*.yml
 for path in sorted((root / ".github" / "workflows").glob("*.yml")):

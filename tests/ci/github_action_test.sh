@@ -14,8 +14,10 @@
 # cut short by its budget (incomplete, exit 2, with a report); a plugin that
 # does not exist (error, exit 2, no report, vgc's message in the summary and
 # the annotation); a program the shell cannot find (the annotation says what
-# to do); a missing impl input; and the merge of three shards (input merge:
-# the unsharded verdict; a missing shard named).
+# to do); a missing impl input; a job cancelled in the middle of the run
+# (SIGINT to the script: outputs, summary and report all the same); and the
+# merge of three shards (input merge: the unsharded verdict; a missing
+# shard named).
 set -uo pipefail
 
 [ $# -eq 3 ] || { echo "usage: $0 SOURCE_DIR VGC FAULT_PLUGIN" >&2; exit 2; }
@@ -123,6 +125,45 @@ action noimpl
 check "no impl: exit 2" test "$status" -eq 2 || show
 check "no impl: the annotation names the input" grep -q "^::error title=vgc certify::the input 'impl' is required" "$run/log"
 check "no impl: verdict=error" test "$(output verdict)" = error
+
+# 9. A cancelled job: the runner sends SIGINT to the script alone (the
+# step's entry process) in the middle of the run. The script passes it on;
+# vgc writes its incomplete report, and the outputs and the job summary are
+# written for it (issue 31, item 6: the script used to have no trap; vgc
+# ran on and the runner killed everything 10 s later, with no report).
+run=$tmp/cancelled
+mkdir -p "$run/workspace" "$run/runner_temp"
+printf 'summary of an earlier step\n' >"$run/summary"
+: >"$run/output"
+# A command this script starts with & has SIGINT ignored (no job control),
+# and bash cannot trap a signal ignored when it started: the runner starts
+# the step's bash with SIGINT at its default, and so does python3 here.
+python3 -c 'import os, signal, sys; signal.signal(signal.SIGINT, signal.SIG_DFL); os.execvp("env", sys.argv[1:])' \
+  -i PATH=/usr/bin:/bin HOME="$run" \
+  GITHUB_WORKSPACE="$run/workspace" RUNNER_TEMP="$run/runner_temp" \
+  GITHUB_STEP_SUMMARY="$run/summary" GITHUB_OUTPUT="$run/output" GITHUB_ACTION_PATH="$source_dir" \
+  INPUT_VGC="$vgc" INPUT_CASES=100000 INPUT_BUDGET=120 INPUT_SEED=1 INPUT_IMPL=reference \
+  bash "$script" >"$run/log" 2>&1 &
+script_pid=$!
+# Once vgc runs its cases (its first line is printed after its signal
+# handlers are in place), however long that takes on a loaded machine.
+for _ in $(seq 600); do grep -q '(seed 1, ' "$run/log" 2>/dev/null && break; sleep 0.1; done
+sleep 1
+t0=$(date +%s%N)
+kill -INT "$script_pid"
+wait "$script_pid"
+status=$?
+ms=$(( ($(date +%s%N) - t0) / 1000000 ))
+echo "--- cancelled: exit $status after $ms ms"
+check "cancelled: the script ends within 5 s of SIGINT" test "$ms" -lt 5000
+check "cancelled: exit 130" test "$status" -eq 130 || show
+check "cancelled: verdict=incomplete" test "$(output verdict)" = incomplete
+check "cancelled: exit-code=130" test "$(output exit-code)" = 130
+check "cancelled: report-dir holds vgc's report (uploaded)" grep -q '"cancelled_by": "SIGINT"' "$(output report-dir)/report.json"
+check "cancelled: the job summary is the run's summary.md" grep -q '^# vgc certify: reference .* INCOMPLETE' "$run/summary"
+check "cancelled: the annotation says the job was cancelled" grep -q '^::error title=vgc certify::.*the job was cancelled (SIGINT)' "$run/log"
+check "cancelled: action.yml uploads the report of a cancelled job (always())" \
+  grep -q "if: \${{ always() && steps.certify.outputs.report-dir != '' }}" "$source_dir/action.yml"
 
 # The matrix's final job: the shards' run directories (downloaded artifacts)
 # merged into one run with the unsharded verdict (input merge).

@@ -34,7 +34,10 @@ fail() { echo "history_findings ($mode): $*" >&2; exit 1; }
 
 if [ "$mode" != crash ]; then
   case "$mode" in
-    hang) clause=STABLE-1 status=timeout shows=timeout timeout=(--timeout 1) ;;
+    # 3 s per answer: the hang is forever, so any limit finds it; a second
+    # was near what a loaded runner can take for a legitimate answer, and
+    # starting the proxy has its own limit (--start-timeout, default 60 s).
+    hang) clause=STABLE-1 status=timeout shows=timeout timeout=(--timeout 3) ;;
     garbage) clause=ACCEPT-1 status=fail shows=protocol-error timeout=() ;;
     reject) clause=STABLE-1 status=fail shows="^fail " timeout=() ;;
     *) echo "usage: $0 VGC FAULT_PLUGIN [hang|garbage|reject]" >&2; exit 2 ;;

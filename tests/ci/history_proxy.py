@@ -17,7 +17,9 @@ e.g. --impl plugin:PATH, go to `VGC serve`):
 A fresh start counts from 0 again, so a short sequence from a fresh
 instance never shows it. It also writes its pid and its child's pid to
 $HISTORY_PROXY_PIDS when that is set (one "proxy PID child PID" line per
-start), so a test can see whether they outlive the suite."""
+start), so a test can see whether they outlive the suite. In hang mode it
+creates the file $HISTORY_PROXY_HANGING, when that is set, as it starts to
+hang."""
 import os
 import subprocess
 import sys
@@ -35,6 +37,8 @@ for line in sys.stdin:
             if mode == "crash":
                 sys.exit(1)
             if mode == "hang":
+                if os.environ.get("HISTORY_PROXY_HANGING"):  # a test waits for this, not for a guessed time
+                    open(os.environ["HISTORY_PROXY_HANGING"], "a").close()
                 while True:
                     time.sleep(60)
             if mode == "garbage":
