@@ -126,6 +126,14 @@ std::string Channel::raw_datagram(std::uint32_t id, const std::string& clear) co
   return datagram;
 }
 
+std::string Channel::ack_only_datagram() {
+  const std::uint32_t last = expected_in_id_ == kFirstDataPacketId ? 1 : expected_in_id_ - 1;
+  std::string ack;
+  (void)encode_command(wire::PacketAck{last}, &ack);
+  ++counters_.sent;
+  return raw_datagram(take_id(), ack);
+}
+
 std::uint32_t Channel::take_id() {
   const std::uint32_t id = next_out_id_++;
   if (next_out_id_ == 0) next_out_id_ = kFirstDataPacketId;  // r6 skips 0 on wrap; 1 belongs to the login
