@@ -37,6 +37,22 @@ double seconds_left(Clock::time_point deadline) {
   return std::max(0.0, std::chrono::duration<double>(deadline - Clock::now()).count());
 }
 
+// Whether r6 may misread the packet that carries `c`: a string of 16 bytes
+// or more in one of its 16-byte fields (docs/verse_wire.md section 1),
+// after which r6 runs whatever the rest of the packet decodes to, which may
+// end the session (connect_terminate). r6 runs that packet to its end and
+// the barrier's packet after it before it forgets the session, so the
+// command itself is judged; the next call finds the session gone.
+bool may_desynchronise_r6(const Command& c) {
+  const auto long_name = [](const std::string& s) { return s.size() > kMaxNameBytes; };
+  if (const auto* l = std::get_if<cmd::LayerCreate>(&c)) return long_name(l->name);
+  if (const auto* v = std::get_if<cmd::CreaseSetVertex>(&c)) return long_name(v->layer);
+  if (const auto* e = std::get_if<cmd::CreaseSetEdge>(&c)) return long_name(e->layer);
+  if (const auto* b = std::get_if<cmd::BoneCreate>(&c))
+    return long_name(b->weight) || long_name(b->reference) || long_name(b->pos_label) || long_name(b->rot_label);
+  return false;
+}
+
 CallStatus call_status_of(const verse::Status& s) {
   switch (s.code) {
     case verse::Status::Code::Ok: return CallStatus::Ok;
@@ -231,7 +247,7 @@ Answer VerseImplementation::connect() {
                                             "\": " + st.to_string());
   }
   driver_avatar_ = driver_->avatar();
-  driver_announced_ = driver_dropped_ = false;
+  driver_announced_ = driver_dropped_ = desync_risk_ = false;
   // The observer follows the index of avatars (the driver's being destroyed
   // is the host ending its session) and of geometry nodes (the pool's).
   if (!keep_observer) {
@@ -312,8 +328,18 @@ Answer VerseImplementation::start() {
 }
 
 Answer VerseImplementation::reset() {
+  if (driver_dropped_ && !broken_) {  // seen after the command that caused it was judged
+    broken_ = true;
+    driver_lost_ = true;
+  }
   if (broken_ || !driver_ || !driver_->connected() || !observer_->connected()) return start();
   Answer a = make_node(kFirstCreateSeconds);
+  // A reset takes a node made ahead, with no round trip through the
+  // driver's session: after a command that may have ended it, one round
+  // trip on the new node tells (a dropped session is the next command's
+  // crash otherwise, in a case it has nothing to do with).
+  if (a.status == CallStatus::Ok && desync_risk_) a = settle("checking the session after a misread command");
+  desync_risk_ = false;
   if (a.status == CallStatus::Crash && !driver_->connected() && observer_->connected()) driver_lost_ = true;
   // A host may end a session without a word (r6 runs a connect_terminate
   // it decoded from the rest of a desynchronised packet and forgets the
@@ -422,8 +448,29 @@ Answer VerseImplementation::settle(const std::string& what) {
   if (const verse::Status st = driver_->send(mark); !st.ok())
     return failed(call_status_of(st), what + ": sending the round-trip node_name_set: " + st.to_string());
   ++round_trips_;
+  const auto is_echo = [&](const verse::WireCommand& w) {
+    const auto* n = std::get_if<verse::wire::NodeNameSet>(&w);
+    return n && n->node_id == node_ && n->name == name;
+  };
   for (;;) {
-    if (driver_dropped_) return lost("the host destroyed the driver's avatar node");
+    if (driver_dropped_) {
+      // r6 runs what it had received of a session before it forgets it, so
+      // the echo still comes when the barrier came in with the command that
+      // ended the session (the command is then judged, as before the
+      // drop could be seen). The observer's own round trip tells.
+      std::vector<verse::WireCommand> seen;
+      ++round_trips_;
+      const verse::Status st = observer_->barrier(node_, seconds_left(deadline), &seen);
+      bool echoed = false;
+      for (const auto& w : seen) {
+        std::string error;
+        if (is_echo(w)) echoed = true;
+        else if (!absorb(w, &error)) return failed(CallStatus::ProtocolError, what + ": " + error);
+      }
+      if (!st.ok() && !echoed) return failed(call_status_of(st), what + ": " + st.to_string());
+      if (!echoed) return lost("the host destroyed the driver's avatar node");
+      break;
+    }
     verse::WireCommand w;
     const double left = seconds_left(deadline);
     const verse::Status st = observer_->receive(&w, std::min(left, kSessionCheckSeconds));
@@ -441,7 +488,7 @@ Answer VerseImplementation::settle(const std::string& what) {
                       "within " + std::to_string(options_.timeout_seconds) + " s");
       return failed(call_status_of(st), what + ": " + st.to_string());
     }
-    if (const auto* n = std::get_if<verse::wire::NodeNameSet>(&w); n && n->node_id == node_ && n->name == name) break;
+    if (is_echo(w)) break;
     std::string error;
     if (!absorb(w, &error)) return failed(CallStatus::ProtocolError, what + ": " + error);
   }
@@ -473,6 +520,7 @@ Answer VerseImplementation::apply(const Command& c) {
   }
   if (const verse::Status st = driver_->send_geometry(node_, c); !st.ok())
     return failed(call_status_of(st), "sending `" + print_command(c) + "`: " + st.to_string());
+  if (may_desynchronise_r6(c)) desync_risk_ = true;
   Answer a = settle(what);
   if (a.status != CallStatus::Ok) return a;
   a.verdict_reported = false;  // `done`: a host acknowledges nothing

@@ -168,6 +168,9 @@ class VerseImplementation final : public Implementation {
   // driver's session.
   std::uint32_t driver_avatar_ = 0;
   bool driver_announced_ = false, driver_dropped_ = false;
+  // A command sent since the last reset may have made r6 end the driver's
+  // session (may_desynchronise_r6): the next reset checks the session.
+  bool desync_risk_ = false;
   verse::BoneForm bone_form_ = verse::BoneForm::Spec;
   bool bone_form_known_ = false;  // given as an option, or probed
   std::string bone_form_why_;     // for identity(): how the form was chosen
