@@ -180,6 +180,15 @@ std::vector<std::string> Channel::take_datagrams(Clock::time_point now) {
       ack_nak_.pop_front();
       used += 5;
     }
+    // The peer's ack-only packets ride along in a packet sent anyway (never
+    // in one of their own: that would start an endless exchange), up to 64
+    // a packet, leaving room for commands.
+    const bool sending_anyway = !acks.empty() || (!queue_.empty() && history_bytes_ < kWindowBytes);
+    for (int n = 0; sending_anyway && n < 64 && !ack_only_seen_.empty() && used + 5 <= kMaxSendPacketBytes / 2; ++n) {
+      (void)encode_command(wire::PacketAck{ack_only_seen_.front()}, &acks);
+      ack_only_seen_.pop_front();
+      used += 5;
+    }
     while (!queue_.empty() && history_bytes_ + commands.size() < kWindowBytes &&
            used + queue_.front().bytes.size() <= kMaxSendPacketBytes) {
       const bool alone = queue_.front().own_packet;
@@ -259,6 +268,7 @@ Status Channel::on_datagram(const std::uint8_t* data, std::size_t size, Clock::t
   expected_in_id_ = p.id + 1;
   if (expected_in_id_ == 0) expected_in_id_ = kFirstDataPacketId;
   if (has_commands) ack_nak_.push_back(wire::PacketAck{p.id});
+  else if (ack_only_seen_.size() < 4096) ack_only_seen_.push_back(p.id);  // beyond: the peer keeps it
   for (WireCommand& c : p.commands)
     if (!std::holds_alternative<wire::PacketAck>(c) && !std::holds_alternative<wire::PacketNak>(c))
       delivered->push_back(std::move(c));

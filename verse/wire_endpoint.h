@@ -149,6 +149,10 @@ class Channel {
   std::map<std::uint32_t, Sent> history_;
   std::size_t history_bytes_ = 0;
   std::deque<WireCommand> ack_nak_;  // to send, taken from the front
+  // Ack-only packets of the peer, acknowledged only in a packet sent anyway
+  // (take_datagrams): r6 keeps each packet it sent until it is acknowledged
+  // and walks all it keeps for every ack it receives.
+  std::deque<std::uint32_t> ack_only_seen_;
   Clock::time_point last_heard_;
   Counters counters_;
   std::function<void(const std::uint8_t*, std::size_t)> tap_;
