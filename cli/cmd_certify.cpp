@@ -295,6 +295,7 @@ int run(const Options& o) {
   ReportContext ctx;
   ctx.implementation_spec = o.impl;
   if (o.impl.rfind("verse:", 0) == 0) ctx.implementation_identity = sut->identity();  // host, release, bone form
+  ctx.merge_identity = sut->merge_identity();
   ctx.command_line = rerun_command(o);
   ctx.started = utc_now();
   if (!o.baseline.empty()) {

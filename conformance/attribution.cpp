@@ -254,6 +254,11 @@ std::string_view clause_for_derived(const Node& after, const DocumentDifference&
   return clause_for_derived(after, d.kind, bone_id);
 }
 
+const std::vector<std::string_view>& derived_only_clauses() {
+  static const std::vector<std::string_view> clauses = {"BONE-PARENT-1", "BONE-DOWNSTREAM-1"};
+  return clauses;
+}
+
 long bone_id_of(const std::string& line) {
   // "bone_pose <id> ..."
   const auto sp = line.find(' ');

@@ -63,6 +63,13 @@ std::string_view clause_for_derived(const Node& after, std::string_view line_kin
 // that is a vertex reference makes a quad), not on a crease.
 std::string_view clause_for_derived(const Node& after, const DocumentDifference& d, long bone_id);
 
+// The clauses only the derived document decides: no rule of the node
+// (rule_clauses.h) maps to them, and clause_for_derived can name them
+// (BONE-PARENT-1, BONE-DOWNSTREAM-1: a bone's world pose). A route that
+// carries no derived document cannot judge them at all, whatever its cases
+// draw (clause_status.h).
+const std::vector<std::string_view>& derived_only_clauses();
+
 // The bone id of a derived document's "bone_pose <id> ..." line, or -1.
 long bone_id_of(const std::string& line);
 

@@ -27,12 +27,14 @@ class Reproducer {
 
   // Whether `commands` from a fresh instance fail with the status sought;
   // when they do, *commands is cut after the command that failed.
-  bool fails(std::vector<Command>* commands) {
+  // `request`: the capability check to repeat after them (a capability
+  // finding's program).
+  bool fails(std::vector<Command>* commands, const std::optional<CapabilityRequest>& request = std::nullopt) {
     if (spent()) return false;
     ++attempts_;
     const Answer a = sut_.restart();
     if (a.status != CallStatus::Ok) return false;  // it cannot even start: nothing to learn here
-    const ReplayResult r = replay_program(Program{*commands, std::nullopt}, sut_);
+    const ReplayResult r = replay_program(Program{*commands, request}, sut_);
     if (!r.failure || !same_kind(*r.failure)) return false;
     if (r.failed_at >= 0 && static_cast<std::size_t>(r.failed_at) + 1 < commands->size())
       commands->resize(static_cast<std::size_t>(r.failed_at) + 1);
@@ -41,11 +43,10 @@ class Reproducer {
   }
   const Finding& last_failure() const { return last_; }
 
-  // The same kind of call failure as the one sought: a crash, a timeout, or
-  // a protocol error, on whatever command.
-  bool same_kind(const Finding& f) const {
-    return f.status == sought_.status && is_call_failure(f) && (f.status != FindingStatus::Fail || f.clause == sought_.clause);
-  }
+  // The same kind of failure as the one sought: a crash, a timeout, or a
+  // protocol error, on whatever command; or, for a wrong answer (a wrong
+  // verdict, reason or document), a wrong answer in whatever clause.
+  bool same_kind(const Finding& f) const { return finding_kind(f) == finding_kind(sought_); }
 
   // Same clause and status as `f`, from its own program on a fresh instance.
   bool reproduces(const PropertyFinding& f) {
@@ -137,13 +138,37 @@ bool is_call_failure(const Finding& f) {
 bool fails_fresh(Implementation& sut, const Finding& f, const Program& program) {
   Reproducer rep(sut, f, Clock::now() + std::chrono::hours(1), 1);
   std::vector<Command> commands = program.commands;
-  return rep.fails(&commands);
+  return rep.fails(&commands, program.request);
+}
+
+bool reproduces_fresh(Implementation& sut, const Finding& f, const Program& program) {
+  Reproducer rep(sut, f, Clock::now() + std::chrono::hours(1), 1);
+  PropertyFinding pf;
+  pf.finding = f;
+  pf.program = program;
+  return rep.reproduces(pf);
+}
+
+bool note_reproduces_fresh(Implementation& sut, const Finding& note, const Program& program) {
+  if (sut.restart().status != CallStatus::Ok) return false;
+  const ReplayResult r = replay_program(program, sut);
+  for (const Finding& n : r.notes)
+    if (n.clause == note.clause) return true;
+  return r.failure && r.failure->clause == note.clause;
+}
+
+std::string finding_kind(const Finding& f) {
+  if (depends_on_history(f)) return call_failure_kind(f);
+  if (f.status == FindingStatus::Crash) return "crash";
+  if (f.status == FindingStatus::Timeout) return "timeout";
+  if (is_call_failure(f)) return "protocol-error";
+  return "wrong-answer";
 }
 
 std::string call_failure_kind(const Finding& f) {
+  if (!depends_on_history(f)) return finding_kind(f);
   std::string_view m = f.message;
-  const std::string_view prefix = std::string_view(kHistoryPrefix);
-  if (m.substr(0, prefix.size()) == prefix) m.remove_prefix(std::min(m.size(), prefix.size() + 2));  // ": "
+  m.remove_prefix(std::min(m.size(), std::string_view(kHistoryPrefix).size() + 2));  // ": "
   return std::string(m.substr(0, m.find(' ')));
 }
 
@@ -162,11 +187,12 @@ bool confirm_call_failure(Implementation& sut, PropertyFinding* pf, const std::v
   const std::size_t since_start = whole.size();
   std::string how;
   std::vector<Command> reproducer = whole;
-  bool reproduced = rep.fails(&reproducer);
+  const std::optional<CapabilityRequest> request = pf->program.request;
+  bool reproduced = rep.fails(&reproducer, request);
   if (reproduced) {
     std::vector<std::vector<Command>> cases = reduce_cases(history, &rep);
     reproducer = flatten(cases);
-    rep.fails(&reproducer);  // cuts it after the failing command
+    rep.fails(&reproducer, request);  // cuts it after the failing command
     reproducer = reduce_commands(reproducer, &rep);
     how = fmt::format("the {} commands since the instance started, reduced (by cases, then commands; {} restarts{}) "
                       "to these {}, fail a fresh instance the same way",
@@ -176,21 +202,35 @@ bool confirm_call_failure(Implementation& sut, PropertyFinding* pf, const std::v
                       "again: the failure could not be reproduced (flaky?); the program below is that history",
                       since_start);
   }
-  const CallStatus as = pf->finding.status == FindingStatus::Crash     ? CallStatus::Crash
-                        : pf->finding.status == FindingStatus::Timeout ? CallStatus::Timeout
-                                                                       : CallStatus::ProtocolError;  // ACCEPT-1
+  // A protocol error is ACCEPT-1's whatever the history; a crash, a
+  // time-out or a wrong answer that only a history brings about is the
+  // implementation not standing up to that history: STABLE-1.
+  const std::string kind = finding_kind(pf->finding);
   Finding f;
   f.status = pf->finding.status;
-  f.clause = as == CallStatus::ProtocolError ? "ACCEPT-1" : "STABLE-1";
+  f.clause = kind == "protocol-error" ? "ACCEPT-1" : "STABLE-1";
   f.message = fmt::format(
       "{}: {} after {} commands since the instance started, while applying a "
       "command of {} (not blamed on it: the case it ended, {} commands from a fresh node, does not fail a fresh "
       "instance); {}. As "
       "seen: {}",
-      kHistoryPrefix, call_status_name(as), since_start, blamed, shrunk, how, pf->finding.message);
+      kHistoryPrefix, kind, since_start, blamed, shrunk, how, pf->finding.message);
   pf->finding = f;
-  pf->program = Program{reproducer, std::nullopt};
+  pf->program = Program{reproducer, request};
+  pf->program.history_kind = kind;
   return false;
+}
+
+std::optional<Finding> blame_as_history(const Program& program, const Finding& seen, std::size_t failed_at) {
+  if (program.history_kind.empty() || finding_kind(seen) != program.history_kind) return std::nullopt;
+  Finding f;
+  f.status = seen.status;
+  f.clause = program.history_kind == "protocol-error" ? "ACCEPT-1" : "STABLE-1";
+  f.message = fmt::format(
+      "{}: {} after {} commands from a fresh instance, on a command of {} (not blamed on it: this file "
+      "reproduces a finding certify confirmed as depending on the history). As seen: {}",
+      kHistoryPrefix, program.history_kind, failed_at + 1, seen.clause, seen.message);
+  return f;
 }
 
 }  // namespace vgc

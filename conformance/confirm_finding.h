@@ -1,14 +1,15 @@
-// confirm_finding.h — a crash, a timeout or a protocol error is reported
-// against a clause only when its shrunk counterexample does it again on a
-// fresh instance of the implementation.
+// confirm_finding.h — a finding of any kind (a crash, a timeout, a
+// protocol error, a wrong verdict, reason or document) is reported against
+// a clause only when its counterexample does it again on a fresh instance
+// of the implementation.
 //
 // Spec: STABLE-1 ("An implementation answers every call": it neither
 // crashes nor hangs on any command sequence) and ACCEPT-1 (answers within
 // the protocol); the clause catalog (clause.h).
 //
 // Rationale: an implementation that fails after so many commands since it
-// started (a leak, a counter) fails on whatever command happens to be
-// running then; blaming that command's clause is wrong, and the shrunk
+// started (a leak, a counter, a store that rejects everything once it is
+// full) fails on whatever command happens to be running then; blaming that command's clause is wrong, and the shrunk
 // "counterexample" replays as agreeing with the reference. So before such a
 // finding is reported, its program runs again on a new instance
 // (Implementation::restart). If it fails the same way, it stands as found.
@@ -24,6 +25,7 @@
 
 #include <chrono>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -67,18 +69,32 @@ class HistoryRecorder final : public Implementation {
 bool is_call_failure(const Finding& f);
 
 // Whether `program` fails a fresh instance (restarted) with the same kind
-// of call failure as `f` (a crash, a timeout, a protocol error).
+// of failure as `f` (finding_kind), on whatever command.
 bool fails_fresh(Implementation& sut, const Finding& f, const Program& program);
 
-// "crash", "timeout" or "protocol-error": the kind of call failure `f` is
-// (is_call_failure), or the kind a history-dependent finding is about.
+// Whether `program` on a fresh instance shows the SHOULD-level note (or
+// followed choice) `note` again, at its clause.
+bool note_reproduces_fresh(Implementation& sut, const Finding& note, const Program& program);
+
+// Whether `program` fails a fresh instance with `f`'s clause and status.
+bool reproduces_fresh(Implementation& sut, const Finding& f, const Program& program);
+
+// "crash", "timeout", "protocol-error" or "wrong-answer" (a wrong verdict,
+// reason or document): the kind of failure `f` is, or, for a finding that
+// depends on the history, the kind it is about. Kinds are what
+// confirmation compares: a history's reproducer must fail a fresh instance
+// with the same kind.
+std::string finding_kind(const Finding& f);
+
+// The same as finding_kind (the name the runner's callers used when only
+// call failures were confirmed).
 std::string call_failure_kind(const Finding& f);
 
 // Whether `f` is a finding that depends on the implementation's history
 // (confirm_call_failure made it).
 bool depends_on_history(const Finding& f);
 
-// Confirms the call failure `pf` (is_call_failure), found while
+// Confirms the finding `pf` (any kind but NotJudged), found while
 // the instance had been sent `history` since it started (the failing case
 // last). Returns true when pf's program fails a fresh instance with the same
 // clause and status: pf is left as it is. Otherwise rewrites pf as a finding
@@ -86,5 +102,12 @@ bool depends_on_history(const Finding& f);
 // Stops reducing at `deadline` or after `max_attempts` restarts.
 bool confirm_call_failure(Implementation& sut, PropertyFinding* pf, const std::vector<std::vector<Command>>& history,
                           std::chrono::steady_clock::time_point deadline, int max_attempts = 80);
+
+// What `vgc replay` shows for a history reproducer (Program::history_kind):
+// `seen`, the failure its commands brought about at command `failed_at`,
+// blamed as certify blamed it (STABLE-1, ACCEPT-1 for a protocol error)
+// when it is of the program's kind; nullopt otherwise (a program that is no
+// reproducer, or a failure of another kind, which stands as found).
+std::optional<Finding> blame_as_history(const Program& program, const Finding& seen, std::size_t failed_at);
 
 }  // namespace vgc

@@ -1,6 +1,9 @@
 // program_text.cpp — see program_text.h.
 #include "program_text.h"
 
+#include <algorithm>
+#include <iterator>
+
 namespace vgc {
 namespace {
 
@@ -41,14 +44,43 @@ std::string print_capability_directive(const CapabilityRequest& request) {
 
 std::string print_program(const Program& program) {
   std::string out = print_commands(program.commands);
+  if (!program.history_kind.empty()) out += "#! history " + program.history_kind + "\n";
   if (program.request) out += print_capability_directive(*program.request);
   return out;
 }
+
+namespace {
+
+// "#! history KIND": the program reproduces a finding that depends on the
+// implementation's history. Returns false with *error set on a malformed one.
+bool parse_history_directive(const std::vector<std::pair<std::string, std::size_t>>& t, std::string_view line,
+                             std::size_t line_number, std::size_t last_command, Program* out, TextError* error) {
+  if (!out->history_kind.empty()) {
+    set_error(error, line_number, 1, "a second history directive");
+    return false;
+  }
+  if (line_number < last_command) {
+    set_error(error, line_number, 1,
+              "the history directive must follow the last command (line " + std::to_string(last_command) + ")");
+    return false;
+  }
+  static const char* const kinds[] = {"crash", "timeout", "protocol-error", "wrong-answer"};
+  if (t.size() != 2 || std::find(std::begin(kinds), std::end(kinds), t[1].first) == std::end(kinds)) {
+    set_error(error, line_number, t.size() < 2 ? line.size() + 1 : t[1].second,
+              "expected \"#! history KIND\" with KIND one of crash, timeout, protocol-error, wrong-answer");
+    return false;
+  }
+  out->history_kind = t[1].first;
+  return true;
+}
+
+}  // namespace
 
 bool parse_program(std::string_view text, Program* out, TextError* error, std::vector<std::size_t>* lines,
                    std::size_t* directive_line) {
   out->commands.clear();
   out->request.reset();
+  out->history_kind.clear();
   if (directive_line) *directive_line = 0;
   std::vector<std::size_t> command_lines;
   if (!parse_commands(text, &out->commands, error, &command_lines)) {
@@ -66,6 +98,10 @@ bool parse_program(std::string_view text, Program* out, TextError* error, std::v
     text = nl == std::string_view::npos ? std::string_view{} : text.substr(nl + 1);
     if (line.substr(0, 2) != "#!") continue;
     const auto t = tokens(line, 2);
+    if (!t.empty() && t[0].first == "history") {
+      if (!parse_history_directive(t, line, line_number, last_command, out, error)) return false;
+      continue;
+    }
     if (t.empty() || t[0].first != "capability") continue;  // an ordinary comment
     if (found) {
       set_error(error, line_number, 1,

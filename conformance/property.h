@@ -34,6 +34,11 @@ struct PropertySpec {
   // 10^4 to 10^5 elements instead of drawing commands from the focus, and
   // the property runs a fiftieth of the cases (at least 2).
   bool at_scale = false;
+  // What a default run of it costs, in seconds of the reference behind
+  // exec: on this project's 2-core machine (docs/ci.md "Shards"; measured,
+  // median of 3): how `--shard` balances the shards (runner.cpp
+  // property_shard). Only the ratios matter.
+  double cost = 1.0;
 };
 
 // How many cases a property runs when the run asks for `cases` per property:

@@ -15,6 +15,8 @@
 #include <sstream>
 
 #include "capability.h"
+#include "clause_status.h"
+#include "costly_class.h"
 #include "exercised_clauses.h"
 #include "command_text.h"
 #include "confirm_finding.h"
@@ -68,6 +70,10 @@ struct CaseContext {
   bool not_judged_case = false;     // the oracle could not judge the case's capability check
   bool shrinking = false;           // this round found its failure: cases now are shrink attempts
   int cases_done = 0, judged = 0, set_aside = 0, not_judged = 0, target = 0;
+  // Sharding by case (RunOptions::shard_*): the property's cases in all
+  // shards, the index of the next fresh case among them, and this shard.
+  // `target` is the number this shard runs.
+  int all_cases = 0, case_index = 0, shard_index = 0, shard_count = 1;
   bool dominated = false;           // set-aside cases dominate: stop
   // ... once this many cases ran (kSetAsideMinCases; 1 at scale, where a
   // case is a whole mesh and the property runs only a few).
@@ -99,9 +105,69 @@ struct CaseContext {
   std::map<std::string, CommandKindCount>* kinds = nullptr;
   std::map<std::string, long>* rule_uses = nullptr;
   long* unreported = nullptr;
+  // Classes of input that cost a time-out (costly_class.h), run-wide: no
+  // command of one is sent again. And what the report says of each.
+  std::vector<CostlyClass>* avoided = nullptr;
+  std::vector<std::string>* avoided_notes = nullptr;
+  const std::string* property_id = nullptr;
 };
 
 thread_local CaseContext* g_context = nullptr;
+
+bool owns_case(const CaseContext& c, int index) {
+  return c.shard_count <= 1 || index % c.shard_count == c.shard_index;
+}
+
+// How many of `all` cases fall in shard `index` of `count`.
+int shard_cases(int all, int index, int count);
+
+// Shards by cost (RunOptions::shard_*): the shard each property of the
+// catalog runs in, or -1 for a property at scale, whose cases are split
+// over every shard (case k in shard k mod N; its cases cost about the same,
+// scale_mesh.h). The others go whole to one shard each, so a shard's
+// findings are the unsharded run's: the costliest first, each to the shard
+// with the least cost so far (the split property's share counted in every
+// shard), ties to the earlier property and the lower shard. Only the
+// properties that will run count (`runs`: selected, claimed, runnable on
+// the route), and on a route with limits (the Verse wire) a property costs
+// its cases, each a run of round trips; PropertySpec::cost otherwise. The
+// same in every shard of one implementation.
+std::vector<int> assign_shards(const std::vector<bool>& runs, int count, int cases, bool wire) {
+  const auto& props = property_catalog();
+  std::vector<int> shard(props.size(), 0);
+  if (count <= 1) return shard;
+  auto cost = [&](std::size_t i) {
+    return wire ? static_cast<double>(property_cases(props[i], cases)) : props[i].cost;
+  };
+  std::vector<double> load(static_cast<std::size_t>(count), 0.0);
+  std::vector<std::size_t> order;
+  for (std::size_t i = 0; i < props.size(); ++i) {
+    if (!props[i].at_scale) {
+      order.push_back(i);
+      continue;
+    }
+    shard[i] = -1;
+    if (!runs[i]) continue;
+    const int all = property_cases(props[i], cases);
+    for (int k = 0; k < count; ++k)
+      load[static_cast<std::size_t>(k)] += cost(i) * shard_cases(all, k, count) / all;
+  }
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return (runs[a] ? cost(a) : 0.0) > (runs[b] ? cost(b) : 0.0);
+  });
+  for (std::size_t i : order) {
+    const auto least = static_cast<std::size_t>(std::min_element(load.begin(), load.end()) - load.begin());
+    if (runs[i]) load[least] += cost(i);
+    shard[i] = static_cast<int>(least);
+  }
+  return shard;
+}
+
+// How many of `all` cases fall in shard `index` of `count`.
+int shard_cases(int all, int index, int count) {
+  if (count <= 1) return all;
+  return all / count + (index < all % count ? 1 : 0);
+}
 
 // The budget ran out, or the run was cancelled (cancel.h): either way no
 // further case runs and the case under way is not judged.
@@ -199,28 +265,77 @@ bool take_step_out(const StepResult& r) {
 // one being shrunk; returns false in that case (the case then passes).
 // `request` is the capability check that found it, if one did. A failure in
 // a tolerated clause sets the case aside instead (returns false).
+// Whether the case's program, from a fresh instance, fails as `f` did: a
+// call failure of the same kind on whatever command (a crash is a crash
+// wherever the shrunk program ends), a wrong answer in the same clause.
+bool case_fails_fresh(const Finding& f, const Program& program) {
+  HistoryRecorder& recorder = *g_context->recorder;
+  return is_call_failure(f) ? fails_fresh(recorder, f, program) : reproduces_fresh(recorder, f, program);
+}
+
+// A finding of any kind is confirmed on a fresh instance before it is
+// shrunk or blamed (confirm_finding.h). Returns false when the case is set
+// aside instead: it does not fail a fresh instance, and the run already
+// has a finding that depends on the history for that kind of failure.
+bool confirm_before_shrinking(const Finding& f, const std::optional<CapabilityRequest>& request) {
+  CaseContext& c = *g_context;
+  if (c.shrinking || !c.recorder || f.status == FindingStatus::NotJudged) return true;
+  const Program program{c.trace, request};
+  const std::vector<std::vector<Command>> history = c.recorder->history();
+  const bool reproduced = case_fails_fresh(f, program);
+  if (!reproduced && c.history_kinds.count(finding_kind(f))) {
+    c.set_aside_case = true;  // the history-dependent failure again: already reported
+    return false;
+  }
+  c.failure_history = history;
+  c.failure_program = program;
+  c.failure_reproduced = reproduced;
+  // A failure that a fresh instance does not repeat is not shrunk (every
+  // attempt would only add to the history).
+  if (!reproduced) c.stop = true;
+  return true;
+}
+
+// A time-out on a command names a class of input (costly_class.h) that the
+// rest of the run does not draw again. Returns true when the class's kind
+// of element already had a costly class: the time-out is then that class
+// again (one found at 2^27 first, then at 2^23: the node is slow from some
+// size on), its floor is lowered to this id's and the case is set aside,
+// not reported as a finding of whatever clause its command has.
+bool avoid_costly_class(const Finding& f) {
+  CaseContext& c = *g_context;
+  if (f.status != FindingStatus::Timeout || c.shrinking || c.trace.empty() || !c.avoided) return false;
+  const auto k = costly_class_of(c.trace.back());
+  if (!k) return false;
+  for (std::size_t i = 0; i < c.avoided->size(); ++i) {
+    CostlyClass& known = (*c.avoided)[i];
+    if (known.kind != k->kind) continue;
+    if (k->floor < known.floor) {
+      known.floor = k->floor;
+      (*c.avoided_notes)[i] = describe_costly_class(known) + ": time-outs on " + f.clause + " (" + *c.property_id +
+                              ") and others; no command naming one was sent for the rest of the run";
+    }
+    return true;
+  }
+  c.avoided->push_back(*k);
+  c.avoided_notes->push_back(describe_costly_class(*k) + ": a time-out on " + f.clause + " (" + *c.property_id +
+                             "); no command naming one was sent for the rest of the run");
+  return false;
+}
+
 bool fail_case(const Finding& f, std::optional<CapabilityRequest> request = std::nullopt) {
+  if (avoid_costly_class(f)) {
+    g_context->set_aside_case = true;  // the costly class again: found once already
+    return false;
+  }
   if (g_context->tolerated.count(f.clause)) {
     set_case_aside(f, request);
     return false;
   }
   auto& sig = g_context->signature;
   if (sig && (sig->first != f.clause || sig->second != f.status)) return false;
-  if (!g_context->shrinking && is_call_failure(f) && g_context->recorder &&
-      g_context->history_kinds.count(call_failure_kind(f)) &&
-      !fails_fresh(*g_context->recorder, f, Program{g_context->trace, std::nullopt})) {
-    g_context->set_aside_case = true;  // the history-dependent failure again: already reported
-    return false;
-  }
+  if (!confirm_before_shrinking(f, request)) return false;
   sig = std::make_pair(f.clause, f.status);
-  if (!g_context->shrinking && is_call_failure(f) && g_context->recorder) {
-    // Confirmed before shrinking: a failure that a fresh instance does not
-    // repeat is not shrunk (every attempt would only add to the history).
-    g_context->failure_history = g_context->recorder->history();
-    g_context->failure_program = Program{g_context->trace, std::nullopt};
-    g_context->failure_reproduced = fails_fresh(*g_context->recorder, f, g_context->failure_program);
-    if (!g_context->failure_reproduced) g_context->stop = true;
-  }
   g_context->shrinking = true;
   g_context->last_failure = f;
   g_context->last_program.commands = g_context->trace;
@@ -244,6 +359,7 @@ struct Step final : rc::state::Command<Node, Implementation> {
   void run(const Node& /*rapidcheck_model*/, Implementation& sut) const override {
     CaseContext& c = *g_context;
     if (c.stop || c.abandoned || c.set_aside_case || c.deadline_hit || past_deadline()) return;
+    if (in_costly_class(command, *c.avoided)) return;  // a class that costs a time-out: found once already
     c.trace.push_back(command);
     // The step starts from the case's own model, not RapidCheck's: where the
     // implementation made a choice the spec leaves open (which free id it
@@ -293,7 +409,8 @@ void run_scale_case() {
   CaseContext& c = *g_context;
   ScaleCase sc;
   sc.shape = static_cast<ScaleShape>(*rc::gen::inRange(0, kScaleShapes));
-  sc.elements = *rc::gen::inRange(kScaleMinElements, kScaleMaxElements + 1);
+  sc.elements = *rc::gen::shrink(rc::gen::inRange(kScaleDrawLow, kScaleDrawHigh + 1),
+                                 [](int v) { return rc::shrink::towards(v, kScaleMinElements); });
   sc.spread_ids = *rc::gen::arbitrary<bool>();
   sc.seed = *rc::gen::arbitrary<std::uint32_t>();
   const Node unused;  // Step::run judges against the case's own model
@@ -445,7 +562,7 @@ bool confirm_finding(PropertyFinding* pf, CaseContext& ctx, Clock::time_point de
                      const RunResult& run) {
   const auto limit = std::min(deadline, Clock::now() + std::chrono::seconds(60));
   if (confirm_call_failure(*ctx.recorder, pf, ctx.failure_history, limit)) return true;
-  ctx.history_kinds.insert(call_failure_kind(pf->finding));
+  ctx.history_kinds.insert(finding_kind(pf->finding));
   auto same = [pf](const PropertyFinding& f) {
     return f.finding.clause == pf->finding.clause && f.finding.status == pf->finding.status &&
            depends_on_history(f.finding);
@@ -471,11 +588,16 @@ PropertyOutcome run_property(const PropertySpec& spec, Implementation& sut, cons
   ctx.recorder = dynamic_cast<HistoryRecorder*>(&sut);
   for (const auto& p : run->properties)  // history-dependent failures earlier properties found
     for (const auto& f : p.findings)
-      if (depends_on_history(f.finding)) ctx.history_kinds.insert(call_failure_kind(f.finding));
+      if (depends_on_history(f.finding)) ctx.history_kinds.insert(finding_kind(f.finding));
   ctx.deadline = deadline;
   ctx.tolerated = o.tolerated;
   ctx.baseline = o.tolerated;
-  ctx.target = property_cases(spec, o.cases);
+  ctx.all_cases = property_cases(spec, o.cases);
+  // A property at scale is split by case over the shards (assign_shards);
+  // any other runs whole in its one shard.
+  if (spec.at_scale) ctx.shard_index = o.shard_index, ctx.shard_count = o.shard_count;
+  else ctx.shard_index = 0, ctx.shard_count = 1;
+  ctx.target = shard_cases(ctx.all_cases, ctx.shard_index, ctx.shard_count);
   if (spec.at_scale) ctx.set_aside_min_cases = 1, ctx.no_take_out = true;
   ctx.exercised = &out.exercised;
   ctx.declared = &spec.clauses;
@@ -483,6 +605,9 @@ PropertyOutcome run_property(const PropertySpec& spec, Implementation& sut, cons
   ctx.kinds = &run->command_kinds;
   ctx.rule_uses = &run->rule_uses;
   ctx.unreported = &run->unreported_verdicts;
+  ctx.avoided = &run->avoided;
+  ctx.avoided_notes = &run->avoided_classes;
+  ctx.property_id = &out.id;
   out.cases_target = ctx.target;
   g_context = &ctx;
 
@@ -498,6 +623,11 @@ PropertyOutcome run_property(const PropertySpec& spec, Implementation& sut, cons
     // Fresh cases count toward the property's cases; shrink attempts do not.
     const bool counted = !c.shrinking;
     if (counted && c.cases_done >= c.target) return;
+    // Case k of the property runs in shard k mod N (RunOptions): RapidCheck
+    // draws each case from its own split of the seed, so skipping another
+    // shard's case, before drawing anything, leaves every other case as the
+    // unsharded run draws it.
+    if (counted && !owns_case(c, c.case_index++)) return;
     c.trace.clear();
     c.checker = std::make_unique<ProgramChecker>(*c.sut, /*follow_choices=*/true);
     c.abandoned = false;
@@ -579,7 +709,7 @@ PropertyOutcome run_property(const PropertySpec& spec, Implementation& sut, cons
   };
 
   std::string stop_note;
-  for (int round = 0; ctx.cases_done < ctx.target; ++round) {
+  for (int round = 0; ctx.cases_done < ctx.target && ctx.case_index < ctx.all_cases; ++round) {
     ctx.shrinking = false;
     ctx.stop = false;
     ctx.signature.reset();
@@ -590,7 +720,7 @@ PropertyOutcome run_property(const PropertySpec& spec, Implementation& sut, cons
 
     rc::detail::TestParams params;
     params.seed = round_seed(out.seed, round);
-    params.maxSuccess = ctx.target - ctx.cases_done;
+    params.maxSuccess = ctx.all_cases - ctx.case_index;
     params.maxSize = o.max_size;
     params.maxDiscardRatio = 10;
     rc::detail::TestMetadata meta;
@@ -613,12 +743,12 @@ PropertyOutcome run_property(const PropertySpec& spec, Implementation& sut, cons
         pf.finding = Finding{"STABLE-1", FindingStatus::Fail, failure.description};
       }
       ++ctx.cases_done;  // the failing case
-      if (is_call_failure(pf.finding) && ctx.recorder) {
+      if (ctx.recorder && ctx.last_failure) {
         if (!ctx.failure_reproduced) {
           if (!confirm_finding(&pf, ctx, deadline, out, *run)) continue;  // reported once already
-        } else if (pf.program.commands.size() < ctx.failure_program.commands.size() &&
-                   !fails_fresh(*ctx.recorder, pf.finding, pf.program)) {
-          pf.program = ctx.failure_program;  // shrinking was misled by the instance's history
+        } else if (pf.program.commands.size() < ctx.failure_program.commands.size()) {
+          if (!case_fails_fresh(pf.finding, pf.program))
+            pf.program = ctx.failure_program;  // shrinking was misled by the instance's history
         }
       }
       ctx.tolerated.insert(pf.finding.clause);
@@ -635,7 +765,18 @@ PropertyOutcome run_property(const PropertySpec& spec, Implementation& sut, cons
   g_context = nullptr;
 
   out.seconds = std::chrono::duration<double>(Clock::now() - start).count();
-  for (auto& [clause, note] : ctx.notes) out.notes.push_back(note);
+  // SHOULD-level notes and followed choices are confirmed like findings:
+  // one a fresh instance does not repeat depends on the history (the
+  // history-dependent finding, if the run has one, says what) and is left
+  // out.
+  int unconfirmed = 0;
+  for (auto& [clause, note] : ctx.notes) {
+    if (ctx.recorder && !cancel_signal() && Clock::now() < deadline &&
+        !note_reproduces_fresh(*ctx.recorder, note.first, note.second))
+      ++unconfirmed;
+    else
+      out.notes.push_back(note);
+  }
   // Baseline (and other tolerated) divergences, in the order of the
   // catalog's ids: each once, with the shortest program it was seen on.
   for (auto& [clause, pf] : ctx.tolerated_seen) {
@@ -668,6 +809,9 @@ PropertyOutcome run_property(const PropertySpec& spec, Implementation& sut, cons
     out.note = stop_note;
   } else {
     out.status = out.findings.empty() ? "pass" : "fail";
+    if (unconfirmed)
+      out.note = std::to_string(unconfirmed) + " SHOULD-level or choice difference(s) did not repeat on a fresh "
+                 "instance: not reported (they depend on the implementation's history)";
   }
   return out;
 }
@@ -698,6 +842,56 @@ void load_rapidcheck_configuration_quietly() {
   (void)done;
 }
 
+// Per clause: the findings of every property that ran, whoever declared
+// it, and the evidence clause_status.h decides its status from.
+void decide_clauses(const RunOptions& o, const RouteLimits& limits, RunResult* run) {
+  for (const Clause& clause : clause_catalog()) {
+    ClauseOutcome co;
+    co.clause = &clause;
+    const std::string id(clause.id);
+    ClauseEvidence e;
+    e.selected = clause_selected(o.clause_glob, clause.id);
+    e.shard_part = o.shard_count > 1;
+    e.preflight = run->preflight;
+    e.route = limits.route;
+    e.route_limit = route_limit_of(clause.id, limits);
+    e.unreported_verdicts = run->unreported_verdicts;
+    int chosen_index = 0;
+    for (std::size_t i = 0; i < run->properties.size(); ++i) {
+      const PropertyOutcome& po = run->properties[i];
+      if (auto it = po.exercised.find(id); it != po.exercised.end()) e.exercised += it->second;
+      if (auto it = po.derived_only.find(id); it != po.derived_only.end()) e.derived_only += it->second;
+      auto take = [&](const Finding& f, const Program& p, bool known) {
+        if (!prefer_finding(p, static_cast<int>(i), co.finding, co.program, chosen_index)) return;
+        chosen_index = static_cast<int>(i);
+        co.finding = f;
+        co.program = p;
+        co.found_by = po.id;
+        co.seed = po.seed;
+        co.tolerated_from_start = known;
+      };
+      for (const auto& pf : po.findings)
+        if (pf.finding.clause == clause.id) take(pf.finding, pf.program, pf.tolerated_from_start);
+      for (const auto& [f, p] : po.notes)
+        if (f.clause == clause.id) take(f, p, false);
+    }
+    if (run->preflight && run->preflight->clause == clause.id) {
+      co.finding = run->preflight;
+      co.found_by = "fresh-node check";
+    }
+    e.finding = co.finding;
+    gather_clause_evidence(clause, run->properties, &e, &co.properties);
+    co.exercised = e.exercised;
+    co.derived_only = e.derived_only;
+    co.route_limit = e.route_limit;
+    const ClauseDecision d = decide_clause_status(clause, e);
+    if (d.status.empty()) continue;  // not asked for and nothing found
+    co.status = d.status;
+    co.note = d.note;
+    run->clauses.push_back(co);
+  }
+}
+
 }  // namespace
 
 bool clause_selected(const std::string& glob, std::string_view id) {
@@ -723,6 +917,90 @@ std::uint64_t property_seed(std::uint64_t run_seed, std::string_view property_id
   return z ^ (z >> 31);
 }
 
+namespace {
+
+// Preflight: an implementation that cannot show a fresh node at all (it
+// crashes, hangs or answers outside the contract) can be judged on
+// nothing; every case would only wait for it again.
+std::optional<Finding> preflight(Implementation& sut) {
+  const Answer a = sut.reset();
+  std::optional<Finding> f;
+  if (a.status != CallStatus::Ok) {
+    f = call_failure("STABLE-1", a.status, "resetting to a fresh node", a.detail);
+  } else {
+    const int documents = sut.limits().derived ? 2 : 1;  // a route may carry no derived document
+    for (int doc = 0; doc < documents && !f; ++doc) {
+      const Document d = doc == 0 ? sut.snapshot() : sut.derived();
+      if (d.status != CallStatus::Ok)
+        f = call_failure("STABLE-1", d.status,
+                         std::string("reading the ") + (doc == 0 ? "snapshot" : "derived document") + " of a fresh node",
+                         d.detail);
+    }
+  }
+  return cancel_signal() ? std::nullopt : f;  // a cancel cut it short: no finding
+}
+
+// Why property `spec` will not run in this run, whatever the shard: its
+// skipped (or, after a failed preflight, stopped) outcome; nullopt when it
+// runs. `claimed`: the capabilities the implementation claims.
+std::optional<PropertyOutcome> why_not_run(const PropertySpec& spec, const RunOptions& o, const RunResult& run,
+                                           const RouteLimits& limits, const std::vector<std::string>& claimed) {
+  PropertyOutcome skipped;
+  skipped.id = std::string(spec.id);
+  skipped.seed = property_seed(o.seed, spec.id);
+  skipped.status = "skipped";
+  auto as = [&skipped](PropertySkip why, std::string note) {
+    skipped.skip = why;
+    skipped.note = std::move(note);
+    return skipped;
+  };
+  bool selected = false;
+  for (auto c : spec.clauses) selected = selected || clause_selected(o.clause_glob, c);
+  if (!selected) return as(PropertySkip::NotSelected, "no selected clause");
+  if (run.preflight) {
+    skipped.status = "stopped";
+    skipped.cases_target = property_cases(spec, o.cases);
+    return as(PropertySkip::Preflight,
+              "not run: the implementation could not show a fresh node (" + run.preflight->clause + ")");
+  }
+  // A route with limits (the Verse wire) carries a command per packet
+  // exchange and no derived document: 10^4 to 10^5 commands a case are
+  // beyond a run's time there.
+  if (spec.at_scale && !limits.route.empty())
+    return as(PropertySkip::NotOnRoute, "not run on " + limits.route +
+                                            ": its cases send 10^4 to 10^5 commands; certify the node through "
+                                            "exec: or plugin: for it");
+  if (spec.capability.empty()) return std::nullopt;
+  if (std::find(claimed.begin(), claimed.end(), spec.capability) == claimed.end())
+    return as(PropertySkip::NotClaimed, "not claimed");
+  if (!find_capability_check(std::string(spec.capability))) return as(PropertySkip::NoOracle, "no oracle linked");
+  return std::nullopt;
+}
+
+// Runs one property with progress reports around it.
+void run_one_property(std::size_t i, Implementation& sut, const RunOptions& o, Clock::time_point deadline,
+                      Clock::time_point start, RunProgress* progress, RunResult* run) {
+  const PropertySpec& spec = property_catalog()[i];
+  progress->property = std::string(spec.id);
+  progress->property_index = static_cast<int>(i);
+  progress->cases_done = 0;
+  progress->set_aside = 0;
+  progress->failures = 0;
+  progress->cases_total = property_cases(spec, o.cases);
+  progress->shrinking = false;
+  if (o.progress) {  // the property starts (its first case may take long)
+    progress->elapsed_seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    o.progress(*progress);
+  }
+  run->properties.push_back(run_property(spec, sut, o, deadline, progress, start, run));
+  if (o.property_done) {
+    progress->elapsed_seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    o.property_done(run->properties.back(), *progress);
+  }
+}
+
+}  // namespace
+
 RunResult run_certification(Implementation& implementation, const RunOptions& o) {
   load_rapidcheck_configuration_quietly();
   // Every call goes through the recorder: a call failure's history since the
@@ -736,204 +1014,40 @@ RunResult run_certification(Implementation& implementation, const RunOptions& o)
   const auto start = Clock::now();
   const auto deadline = start + std::chrono::duration_cast<Clock::duration>(
                                     std::chrono::duration<double>(o.budget_seconds));
+  const RouteLimits limits = sut.limits();
+  run.preflight = preflight(sut);
 
-  // Preflight: an implementation that cannot show a fresh node at all
-  // (it crashes, hangs or answers outside the contract) can be judged on
-  // nothing; every case would only wait for it again.
-  {
-    const Answer a = sut.reset();
-    std::optional<Finding> f;
-    if (a.status != CallStatus::Ok) {
-      f = call_failure("STABLE-1", a.status, "resetting to a fresh node", a.detail);
-    } else {
-      const int documents = sut.limits().derived ? 2 : 1;  // a route may carry no derived document
-      for (int doc = 0; doc < documents && !f; ++doc) {
-        const Document d = doc == 0 ? sut.snapshot() : sut.derived();
-        if (d.status != CallStatus::Ok)
-          f = call_failure("STABLE-1", d.status,
-                           std::string("reading the ") + (doc == 0 ? "snapshot" : "derived document") +
-                               " of a fresh node",
-                           d.detail);
-      }
-    }
-    run.preflight = cancel_signal() ? std::nullopt : f;  // a cancel cut it short: no finding
-  }
-
+  // Which properties run at all, then which of them run in this shard.
   const auto& props = property_catalog();
-  std::vector<std::string> claimed;
-  bool asked = false;
+  const std::vector<std::string> claimed = run.preflight ? std::vector<std::string>{} : query_capabilities(sut);
+  std::vector<std::optional<PropertyOutcome>> not_run;
+  std::vector<bool> runs;
+  for (const PropertySpec& spec : props) {
+    not_run.push_back(why_not_run(spec, o, run, limits, claimed));
+    runs.push_back(!not_run.back());
+  }
+  const std::vector<int> shard = assign_shards(runs, o.shard_count, o.cases, !limits.route.empty());
+
   RunProgress progress;
   progress.property_count = static_cast<int>(props.size());
   for (std::size_t i = 0; i < props.size(); ++i) {
-    const PropertySpec& spec = props[i];
-    PropertyOutcome skipped;
-    skipped.id = std::string(spec.id);
-    skipped.seed = property_seed(o.seed, spec.id);
-    skipped.status = "skipped";
-    bool selected = false;
-    for (auto c : spec.clauses) selected = selected || clause_selected(o.clause_glob, c);
-    if (!selected) {
-      skipped.note = "no selected clause";
-      run.properties.push_back(skipped);
-      continue;
+    if (!not_run[i] && shard[i] >= 0 && shard[i] != o.shard_index) {
+      PropertyOutcome elsewhere;
+      elsewhere.id = std::string(props[i].id);
+      elsewhere.seed = property_seed(o.seed, props[i].id);
+      elsewhere.status = "skipped";
+      elsewhere.skip = PropertySkip::OtherShard;
+      elsewhere.note = "in shard " + std::to_string(shard[i] + 1) + "/" + std::to_string(o.shard_count);
+      not_run[i] = elsewhere;
     }
-    if (o.shard_count > 1 && static_cast<int>(i % static_cast<std::size_t>(o.shard_count)) != o.shard_index) {
-      skipped.note = "in shard " + std::to_string(i % static_cast<std::size_t>(o.shard_count) + 1) + "/" +
-                     std::to_string(o.shard_count);
-      run.properties.push_back(skipped);
-      continue;
-    }
-    if (run.preflight) {
-      skipped.status = "stopped";
-      skipped.cases_target = property_cases(spec, o.cases);
-      skipped.note = "not run: the implementation could not show a fresh node (" + run.preflight->clause + ")";
-      run.properties.push_back(skipped);
-      continue;
-    }
-    if (spec.at_scale && !sut.limits().route.empty()) {
-      // A route with limits (the Verse wire) carries a command per packet
-      // exchange and no derived document: 10^4 to 10^5 commands a case are
-      // beyond a run's time there.
-      skipped.note = "not run on " + sut.limits().route +
-                     ": its cases send 10^4 to 10^5 commands; certify the node through exec: or plugin: for it";
-      run.properties.push_back(skipped);
-      continue;
-    }
-    if (!spec.capability.empty()) {
-      if (!asked) claimed = query_capabilities(sut), asked = true;
-      if (std::find(claimed.begin(), claimed.end(), spec.capability) == claimed.end()) {
-        skipped.note = "not claimed";
-        run.properties.push_back(skipped);
-        continue;
-      }
-      if (!find_capability_check(std::string(spec.capability))) {
-        skipped.note = "no oracle linked";
-        run.properties.push_back(skipped);
-        continue;
-      }
-    }
-    progress.property = skipped.id;
-    progress.property_index = static_cast<int>(i);
-    progress.cases_done = 0;
-    progress.set_aside = 0;
-    progress.failures = 0;
-    progress.cases_total = property_cases(spec, o.cases);
-    progress.shrinking = false;
-    if (o.progress) {  // the property starts (its first case may take long)
-      progress.elapsed_seconds = std::chrono::duration<double>(Clock::now() - start).count();
-      o.progress(progress);
-    }
-    run.properties.push_back(run_property(spec, sut, o, deadline, &progress, start, &run));
-    if (o.property_done) {
-      progress.elapsed_seconds = std::chrono::duration<double>(Clock::now() - start).count();
-      o.property_done(run.properties.back(), progress);
-    }
+    if (not_run[i]) run.properties.push_back(*not_run[i]);
+    else run_one_property(i, sut, o, deadline, start, &progress, &run);
   }
 
-  // Per clause: the findings of every property that ran, whoever declared it.
-  const RouteLimits limits = sut.limits();
   run.route = limits.route;
-  for (const Clause& clause : clause_catalog()) {
-    ClauseOutcome co;
-    co.clause = &clause;
-    const std::string id(clause.id);
-    long derived_only = 0;  // steps only the derived document, which the route lacks, would have judged it on
-    for (const PropertyOutcome& po : run.properties) {
-      if (auto it = po.exercised.find(id); it != po.exercised.end()) co.exercised += it->second;
-      if (auto it = po.derived_only.find(id); it != po.derived_only.end()) derived_only += it->second;
-    }
-    bool declared_and_ran = false;
-    std::string stopped_note, skip_note;
-    for (std::size_t i = 0; i < props.size(); ++i) {
-      const PropertyOutcome& po = run.properties[i];
-      bool declares = false;
-      for (auto c : props[i].clauses) declares = declares || c == clause.id;
-      if (declares) {
-        if (po.status == "skipped") {
-          if (skip_note.empty() || skip_note.find("shard") != std::string::npos) skip_note = po.note;
-        } else {
-          if (po.status == "stopped" && stopped_note.empty())
-            stopped_note = "its property " + po.id + " stopped: " + po.note;
-          declared_and_ran = declared_and_ran || po.status != "stopped" || po.cases > 0;
-          co.properties.push_back(po.id);
-        }
-      }
-      auto take = [&](const Finding& f, const Program& p, bool known) {
-        if (co.finding && co.program.commands.size() <= p.commands.size()) return;
-        co.finding = f;
-        co.program = p;
-        co.found_by = po.id;
-        co.seed = po.seed;
-        co.tolerated_from_start = known;
-      };
-      for (const auto& pf : po.findings)
-        if (pf.finding.clause == clause.id) take(pf.finding, pf.program, pf.tolerated_from_start);
-      for (const auto& [f, p] : po.notes)
-        if (f.clause == clause.id) take(f, p, false);
-    }
-    if (run.preflight && run.preflight->clause == clause.id) {
-      co.finding = run.preflight;
-      co.found_by = "fresh-node check";
-    }
-    if (co.finding) {
-      co.status = finding_status_name(co.finding->status);
-    } else if (!clause_selected(o.clause_glob, clause.id)) {
-      continue;  // not asked for and nothing found
-    } else if (run.preflight) {
-      co.status = "unchecked";
-      co.note = "not judged: the implementation could not show a fresh node (" + run.preflight->clause + ": " +
-                run.preflight->message + ")";
-    } else if (auto why = limits.clauses.find(id); why != limits.clauses.end()) {
-      co.status = "not-applicable";  // the route cannot show it, whatever the implementation does
-      co.note = "not judgeable over " + limits.route + ": " + why->second;
-    } else if (!declared_and_ran && skip_note == "not claimed") {
-      co.status = "not-claimed";  // an optional capability the implementation does not offer
-      co.note = skip_note;
-    } else if (!declared_and_ran && skip_note.find("shard") != std::string::npos) {
-      co.status = "skipped";
-      co.note = skip_note;
-    } else if (!declared_and_ran && !skip_note.empty()) {
-      co.status = "unchecked";
-      co.note = "not judged: " + skip_note;
-    } else if (!stopped_note.empty()) {
-      co.status = "unchecked";
-      co.note = stopped_note;
-    } else if (clause.id == "REASON-1" && co.exercised == 0 && run.unreported_verdicts > 0) {
-      co.status = "not-applicable";
-      co.note = "the implementation reports no verdicts (it answered `done` to " +
-                std::to_string(run.unreported_verdicts) + " commands), so reason codes cannot be judged";
-    } else if (co.exercised == 0 && derived_only > 0) {
-      co.status = "not-applicable";
-      co.note = "not judgeable over " + limits.route + ": only the derived document (effective creases, bone world "
-                "poses) decides it, and " + limits.why_no_derived + " (" + std::to_string(derived_only) +
-                " commands reached it)";
-    } else if (co.exercised == 0) {
-      co.status = "unchecked";
-      co.note = declared_and_ran ? "0 judged commands exercised it"
-                                 : "no property declares it and no judged command exercised it";
-    } else {
-      co.status = "pass";
-      if (derived_only > 0)
-        co.note = "judged on the snapshot; its derived part (" + std::to_string(derived_only) +
-                  " commands) is not judgeable over " + limits.route;
-    }
-    run.clauses.push_back(co);
-  }
-
-  run.conformant = true;
-  run.complete = true;
-  for (const auto& co : run.clauses) {
-    if (co.finding && co.clause->level == ClauseLevel::Must) run.conformant = false;
-    if (co.finding && co.finding->status != FindingStatus::Fail && co.clause->level != ClauseLevel::Should)
-      run.conformant = false;  // a crash or a hang is never a reading of a silent point
-    if (co.status == "unchecked") run.complete = false;
-  }
-  for (const auto& po : run.properties)
-    if (po.status == "stopped") run.complete = false;
-  if (cancel_signal()) {
-    run.cancelled_by = cancel_signal_name();
-    run.complete = false;
-  }
+  decide_clauses(o, limits, &run);
+  if (cancel_signal()) run.cancelled_by = cancel_signal_name();
+  summarize_run(&run);
   run.seconds = std::chrono::duration<double>(Clock::now() - start).count();
   return run;
 }
@@ -965,7 +1079,7 @@ ReplayResult replay_program(const Program& program, Implementation& sut) {
     StepResult s = checker.step(program.commands[i]);
     for (auto& n : s.notes) r.notes.push_back(n);
     if (s.failure) {
-      r.failure = s.failure;
+      r.failure = blame_as_history(program, *s.failure, i).value_or(*s.failure);
       r.failed_at = static_cast<int>(i);
       return r;
     }
@@ -1000,6 +1114,30 @@ ReplayResult replay_program(const Program& program, Implementation& sut) {
     r.failed_at = static_cast<int>(program.commands.size());
   }
   return r;
+}
+
+}  // namespace vgc
+
+namespace vgc {
+
+const char* property_skip_name(PropertySkip s) {
+  switch (s) {
+    case PropertySkip::None: return "none";
+    case PropertySkip::NotSelected: return "not-selected";
+    case PropertySkip::OtherShard: return "other-shard";
+    case PropertySkip::NotOnRoute: return "not-on-route";
+    case PropertySkip::NotClaimed: return "not-claimed";
+    case PropertySkip::NoOracle: return "no-oracle";
+    case PropertySkip::Preflight: return "preflight";
+  }
+  return "none";
+}
+
+PropertySkip property_skip_named(const std::string& name) {
+  for (PropertySkip s : {PropertySkip::NotSelected, PropertySkip::OtherShard, PropertySkip::NotOnRoute,
+                         PropertySkip::NotClaimed, PropertySkip::NoOracle, PropertySkip::Preflight})
+    if (name == property_skip_name(s)) return s;
+  return PropertySkip::None;
 }
 
 }  // namespace vgc

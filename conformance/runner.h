@@ -27,10 +27,12 @@
 #include <optional>
 #include <set>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "check_step.h"
 #include "clause.h"
+#include "costly_class.h"
 #include "implementation.h"
 
 namespace vgc {
@@ -79,10 +81,20 @@ struct CapabilityRequest {
 };
 
 struct Program {
+  Program() = default;
+  Program(std::vector<Command> c, std::optional<CapabilityRequest> r = std::nullopt)
+      : commands(std::move(c)), request(std::move(r)) {}
+
   std::vector<Command> commands;  // from a fresh node
   // Set when the finding is a capability check's: it is shown by that check
   // on the state after the commands, not by a command.
   std::optional<CapabilityRequest> request;
+  // Set when the program reproduces a finding that depends on the
+  // implementation's history (confirm_finding.h): the kind of failure it
+  // brings about ("crash", "timeout", "protocol-error", "wrong-answer").
+  // `vgc replay` then blames what it shows as certify did: on STABLE-1
+  // (ACCEPT-1 for a protocol error), not on the command it came on.
+  std::string history_kind;
 };
 
 // One deviation a property showed: the finding and its counterexample.
@@ -96,8 +108,20 @@ struct PropertyFinding {
   int round = 0;                      // 0: the property's own seed; r: its r-th re-run past findings
 };
 
+// Why a property did not run (PropertyOutcome::status "skipped", or
+// "stopped" before any case for Preflight). What it means for the clauses
+// it declares is decided in clause_status.cpp: a property in another shard
+// says nothing about them here; one the route cannot run (at scale on the
+// Verse wire) makes them not judgeable on this route unless another
+// declaring property runs; not claimed is the implementation's choice;
+// anything else leaves them unchecked.
+enum class PropertySkip { None, NotSelected, OtherShard, NotOnRoute, NotClaimed, NoOracle, Preflight };
+const char* property_skip_name(PropertySkip s);  // "none", "not-selected", "other-shard", ... (report.json)
+PropertySkip property_skip_named(const std::string& name);  // the inverse; None for an unknown name
+
 struct PropertyOutcome {
   std::string id;
+  PropertySkip skip = PropertySkip::None;
   // "pass" (ran all its cases, no finding), "fail" (ran all its cases and
   // found deviations), "stopped" (did not run all its cases: the budget ran
   // out, set-aside cases dominated, or RapidCheck gave up; `note` says
@@ -143,6 +167,10 @@ struct ClauseOutcome {
   std::string note;
   std::vector<std::string> properties;  // that declare it and ran
   long exercised = 0;       // judged steps (or capability checks) that decided it
+  // The rest of the evidence its status was decided from (clause_status.h),
+  // kept so that `vgc merge` decides merged shards as one run would.
+  long derived_only = 0;    // steps only the derived document, which the route lacks, would have decided it on
+  std::string route_limit;  // non-empty: the route cannot judge it, why
   std::string found_by;     // property that found the failure
   std::uint64_t seed = 0;
   std::optional<Finding> finding;
@@ -175,6 +203,10 @@ struct RunResult {
   // unused. The measure of the generators' reach (issue 17 item 3).
   std::map<std::string, long> rule_uses;
   long unreported_verdicts = 0;  // steps the implementation answered `done` to
+  // Classes of input that cost a time-out and were not drawn again
+  // (costly_class.h): one line each, what and where it was found.
+  std::vector<std::string> avoided_classes;
+  std::vector<CostlyClass> avoided;
   std::string route;  // RouteLimits::route of the implementation: empty, or the route whose limits apply
   // Set when the implementation could not even show a fresh node (it
   // crashed, hung, or answered what the contract does not allow): no

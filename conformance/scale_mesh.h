@@ -11,7 +11,7 @@
 // node), which no small case shows except by a lucky id. A scale case draws
 // a shape (a grid of quads, a torus, a fan of triangles, a grid of
 // triangles), a size between 10^4 and 10^5 elements (vertices plus
-// polygons), whether the ids are dense from 0 or spread over the whole id
+// polygons; drawn between 4*10^4 and 6*10^4, shrunk towards 10^4), whether the ids are dense from 0 or spread over the whole id
 // range (a bijection of the indexes onto 0 .. 0xFFFFFFFE), and a seed for
 // the edits interleaved with the building: vertices moved and deleted,
 // polygons re-defined and deleted, a crease layer of each stack written and
@@ -31,6 +31,13 @@ enum class ScaleShape { Grid, Torus, Fan, Triangles };
 inline constexpr int kScaleShapes = 4;
 inline constexpr int kScaleMinElements = 10000;
 inline constexpr int kScaleMaxElements = 100000;
+// A case draws its size from this band, and shrinks towards
+// kScaleMinElements: every case then costs about the same (within 1.5x),
+// so that `--shard` can split the property's cases over the shards evenly
+// (runner.cpp assign_shards); a size drawn anywhere from 10^4 to 10^5 made
+// one shard's single case ten times another's.
+inline constexpr int kScaleDrawLow = 40000;
+inline constexpr int kScaleDrawHigh = 60000;
 
 struct ScaleCase {
   ScaleShape shape = ScaleShape::Grid;

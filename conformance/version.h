@@ -18,6 +18,6 @@ inline constexpr const char kVgcVersion[] = VGC_VERSION;
 inline constexpr int kClauseCatalogVersion = 2;
 
 // report.json's "vgc_report_version" (conformance/report/report_json.cpp).
-inline constexpr int kReportFormatVersion = 4;
+inline constexpr int kReportFormatVersion = 5;
 
 }  // namespace vgc

@@ -105,6 +105,11 @@ class Implementation {
   // What the implementation says it is: the free text of its ?hello answer
   // (exec), the table's name (plugin), or name(). For reports only.
   virtual std::string identity() const { return name(); }
+  // What makes two runs runs of the same implementation, for `vgc merge`:
+  // name() by default; for a host on the Verse wire its release and bone
+  // form, not the address it listens on (one host per CI job, each on its
+  // own port, is still one implementation).
+  virtual std::string merge_identity() const { return name(); }
   // Starts a new instance (a new process for exec:) with a fresh node, so
   // that nothing the previous instance went through can matter: how a
   // finding is confirmed (confirm_finding.h). Default: reset(), for an

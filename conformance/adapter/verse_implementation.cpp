@@ -188,6 +188,13 @@ std::string VerseImplementation::identity() const {
   return id;
 }
 
+std::string VerseImplementation::merge_identity() const {
+  std::string id = "verse: a Verse host of release " + std::to_string(release_);
+  if (bone_form_known_)
+    id += ", bone_create in the " + std::string(bone_form_ == verse::BoneForm::R6 ? "r6 form" : "spec 2.6.3 form");
+  return id;
+}
+
 Answer VerseImplementation::failed(CallStatus s, const std::string& detail) {
   broken_ = true;
   Answer a;
@@ -255,7 +262,8 @@ Answer VerseImplementation::connect() {
         verse::wire::NodeIndexSubscribe{(1u << verse::kNodeTypeObject) | (1u << verse::kNodeTypeGeometry)});
     if (!st.ok()) return failed(call_status_of(st), "subscribing to the node index: " + st.to_string());
   }
-  identity_ = "Verse host at " + where + " (release " + std::to_string(driver_->host_release()) + ")";
+  release_ = driver_->host_release();
+  identity_ = "Verse host at " + where + " (release " + std::to_string(release_) + ")";
   broken_ = false;
   ever_connected_ = true;
   return destroy_nodes(old_pool);

@@ -85,6 +85,7 @@ class VerseImplementation final : public Implementation {
 
   std::string name() const override { return spec_; }
   std::string identity() const override;
+  std::string merge_identity() const override;
   Answer reset() override;
   Answer apply(const Command& c) override;
   Document snapshot() override;
@@ -175,6 +176,7 @@ class VerseImplementation final : public Implementation {
   bool bone_form_known_ = false;  // given as an option, or probed
   std::string bone_form_why_;     // for identity(): how the form was chosen
   std::string identity_;
+  int release_ = 0;               // the host's release, once logged in (merge_identity)
 };
 
 }  // namespace vgc

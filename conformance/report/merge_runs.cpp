@@ -5,12 +5,14 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <optional>
 #include <nlohmann/json.hpp>
 #include <regex>
 #include <set>
 #include <sstream>
 
 #include "clause.h"
+#include "clause_status.h"
 #include "command_text.h"
 #include "property.h"
 
@@ -54,8 +56,12 @@ bool read_reports(const std::vector<std::string>& dirs, std::vector<json>* out, 
 
 // Same run but the shard; every shard 1..N exactly once.
 bool check_shards(const std::vector<json>& reports, const std::vector<std::string>& dirs, std::string* error) {
+  // The implementation is compared by its merge identity (report.json
+  // format 5): shards of one Verse host release on different ports merge.
+  const bool keyed = std::all_of(reports.begin(), reports.end(),
+                                 [](const json& r) { return r.contains("merge_identity"); });
   for (const char* key : {"seed", "cases_per_property", "max_size", "budget_seconds", "clauses_selected",
-                          "implementation", "strict", "environment_prefix"}) {
+                          keyed ? "merge_identity" : "implementation", "strict", "environment_prefix"}) {
     for (std::size_t i = 1; i < reports.size(); ++i)
       if (reports[i].value(key, json()) != reports[0].value(key, json())) {
         *error = "the runs differ in " + std::string(key) + ": " + dirs[0] + " has " + reports[0].value(key, json()).dump() +
@@ -97,6 +103,9 @@ PropertyOutcome property_from(const json& p) {
   o.id = p.value("id", std::string());
   o.status = p.value("status", std::string());
   o.note = p.value("note", std::string());
+  o.skip = property_skip_named(p.value("skip", std::string()));
+  if (o.status == "skipped" && o.skip == PropertySkip::None && o.note.rfind("in shard", 0) == 0)
+    o.skip = PropertySkip::OtherShard;  // a report.json of before format 5
   o.seed = p.value("seed", std::uint64_t{0});
   o.cases = p.value("cases", 0);
   o.cases_target = p.value("cases_target", 0);
@@ -114,24 +123,42 @@ PropertyOutcome property_from(const json& p) {
   return o;
 }
 
-// The shard that ran a property (others list it as skipped "in shard ...").
+// A property's cases are split over the shards (runner.cpp owns_case): its
+// merged outcome adds up every shard's part. A shard that had none of its
+// cases lists it as skipped (PropertySkip::OtherShard).
 void merge_properties(const std::vector<json>& reports, RunResult* run) {
   for (const PropertySpec& spec : property_catalog()) {
-    const json* chosen = nullptr;
+    std::vector<PropertyOutcome> parts;
+    std::optional<PropertyOutcome> skipped;
     for (const auto& r : reports)
       for (const auto& p : r["properties"])
         if (p.value("id", std::string()) == spec.id) {
-          const bool elsewhere = p.value("status", std::string()) == "skipped" &&
-                                 p.value("note", std::string()).rfind("in shard", 0) == 0;
-          if (!chosen || !elsewhere) chosen = &p;
-          if (!elsewhere) goto found;
+          PropertyOutcome o = property_from(p);
+          if (o.status != "skipped") parts.push_back(std::move(o));
+          else if (!skipped || skipped->skip == PropertySkip::OtherShard) skipped = std::move(o);
         }
-  found:
-    if (chosen) {
-      PropertyOutcome o = property_from(*chosen);
-      if (o.status == "skipped" && o.note.rfind("in shard", 0) == 0) o.note = "no selected clause";
-      run->properties.push_back(o);
+    if (parts.empty()) {
+      if (!skipped) continue;
+      if (skipped->skip == PropertySkip::OtherShard) skipped->note = "no selected clause", skipped->skip = PropertySkip::NotSelected;
+      run->properties.push_back(*skipped);
+      continue;
     }
+    PropertyOutcome m = parts[0];
+    for (std::size_t i = 1; i < parts.size(); ++i) {
+      const PropertyOutcome& o = parts[i];
+      m.cases += o.cases;
+      m.cases_target += o.cases_target;
+      m.judged += o.judged;
+      m.set_aside += o.set_aside;
+      m.not_judged += o.not_judged;
+      m.rounds += o.rounds;
+      m.steps_taken_out += o.steps_taken_out;
+      m.seconds += o.seconds;
+      m.findings.insert(m.findings.end(), o.findings.begin(), o.findings.end());
+      if (o.status == "stopped" && m.status != "stopped") m.status = "stopped", m.note = o.note;
+    }
+    if (m.status != "stopped") m.status = m.findings.empty() ? "pass" : "fail";
+    run->properties.push_back(std::move(m));
   }
 }
 
@@ -141,6 +168,8 @@ ClauseOutcome clause_from(const Clause& clause, const json& c) {
   co.status = c.value("status", std::string());
   co.note = c.value("note", std::string());
   co.exercised = c.value("exercised", 0L);
+  co.derived_only = c.value("derived_only", 0L);
+  co.route_limit = c.value("route_limit", std::string());
   for (const auto& p : c.value("properties", json::array())) co.properties.push_back(p.get<std::string>());
   if (c.contains("message")) {
     co.finding = Finding(std::string(clause.id), status_named(co.status), c["message"].get<std::string>());
@@ -157,6 +186,7 @@ ClauseOutcome clause_from(const Clause& clause, const json& c) {
     for (const auto& line : c.value("counterexample_commands", json::array())) text += line.get<std::string>() + "\n";
     TextError e;
     parse_commands(text, &co.program.commands, &e);
+    co.program.history_kind = c.value("history_kind", std::string());
     if (c.contains("capability_check")) {
       const auto& q = c["capability_check"];
       CapabilityRequest r{q.value("capability", std::string()), q.value("variant", 1), std::nullopt};
@@ -167,35 +197,45 @@ ClauseOutcome clause_from(const Clause& clause, const json& c) {
   return co;
 }
 
-// Per clause, as the runner combines properties.
+// Per clause, as the runner decides one run (clause_status.h): the
+// evidence of every shard added up, the merged properties, one ladder.
 void merge_clauses(const std::vector<json>& reports, RunResult* run) {
   for (const Clause& clause : clause_catalog()) {
     std::vector<ClauseOutcome> seen;
     for (const auto& r : reports)
       for (const auto& c : r["clauses"])
         if (c.value("id", std::string()) == clause.id) seen.push_back(clause_from(clause, c));
-    if (seen.empty()) continue;
-    ClauseOutcome out = seen[0];
-    const ClauseOutcome* found = nullptr;
-    const ClauseOutcome* unchecked = nullptr;
-    const ClauseOutcome* judged = nullptr;
-    std::set<std::string> props;
-    out.exercised = 0;
+    ClauseEvidence e;
+    e.selected = clause_selected(run->options.clause_glob, clause.id);
+    e.preflight = run->preflight;
+    e.route = run->route;
+    e.unreported_verdicts = run->unreported_verdicts;
+    ClauseOutcome out;
+    out.clause = &clause;
+    int chosen_index = 0;
     for (const auto& co : seen) {
-      out.exercised += co.exercised;
-      for (const auto& p : co.properties) props.insert(p);
-      if (co.finding && (!found || property_index(co.found_by) < property_index(found->found_by))) found = &co;
-      if (co.status == "unchecked" && !unchecked) unchecked = &co;
-      if (co.status != "skipped" && !judged) judged = &co;
+      e.exercised += co.exercised;
+      e.derived_only += co.derived_only;
+      if (!co.route_limit.empty()) e.route_limit = co.route_limit;
+      if (co.finding && prefer_finding(co.program, property_index(co.found_by), out.finding, out.program, chosen_index)) {
+        chosen_index = property_index(co.found_by);
+        out = co;
+      }
     }
-    const long exercised = out.exercised;
-    if (found) out = *found;
-    else if (unchecked) out = *unchecked;
-    else if (judged) out = *judged;
-    out.exercised = exercised;
+    if (run->preflight && run->preflight->clause == clause.id && !out.finding) {
+      out.finding = run->preflight;
+      out.found_by = "fresh-node check";
+    }
+    e.finding = out.finding;
     out.properties.clear();
-    for (const PropertySpec& spec : property_catalog())
-      if (props.count(std::string(spec.id))) out.properties.push_back(std::string(spec.id));
+    gather_clause_evidence(clause, run->properties, &e, &out.properties);
+    out.exercised = e.exercised;
+    out.derived_only = e.derived_only;
+    out.route_limit = e.route_limit;
+    const ClauseDecision d = decide_clause_status(clause, e);
+    if (d.status.empty()) continue;
+    out.status = d.status;
+    out.note = d.note;
     run->clauses.push_back(out);
   }
 }
@@ -223,6 +263,7 @@ bool merge_runs(const std::vector<std::string>& run_dirs, MergedRun* out, std::s
   for (const auto& r : reports) {
     run.seconds = std::max(run.seconds, r.value("seconds", 0.0));  // shards run side by side
     run.unreported_verdicts += r.value("unreported_verdicts", 0L);
+    for (const auto& note : r.value("avoided_classes", json::array())) run.avoided_classes.push_back(note.get<std::string>());
     started = std::min(started, r.value("started", started));
     if (r.contains("preflight") && !run.preflight) {
       const auto& p = r["preflight"];
@@ -250,16 +291,7 @@ bool merge_runs(const std::vector<std::string>& run_dirs, MergedRun* out, std::s
   }
   merge_properties(reports, &run);
   merge_clauses(reports, &run);
-  run.conformant = true;
-  run.complete = true;
-  for (const auto& co : run.clauses) {
-    if (co.finding && co.clause->level == ClauseLevel::Must) run.conformant = false;
-    if (co.finding && co.finding->status != FindingStatus::Fail && co.clause->level != ClauseLevel::Should)
-      run.conformant = false;
-    if (co.status == "unchecked") run.complete = false;
-  }
-  for (const auto& p : run.properties)
-    if (p.status == "stopped") run.complete = false;
+  summarize_run(&run);
 
   out->ctx.implementation_spec = first.value("implementation", std::string());
   // The shards' VGC_* variables (VGC_FAULT, ...), not merge's own, start the

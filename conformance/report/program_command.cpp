@@ -22,13 +22,25 @@ bool same_file(const fs::path& a, const fs::path& b) {
   std::error_code ec;
   return fs::equivalent(a, b, ec) && !ec;
 }
+
+std::string quoted_if_needed(const std::string& path) {
+  const bool plain = path.find_first_not_of(
+                         "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789/._+-") == std::string::npos;
+  return plain ? path : shell_quote(path);
+}
 }  // namespace
 
 std::string program_command_for(const std::string& exe_path, const std::string& path_env) {
   const fs::path exe(exe_path);
   std::error_code ec;
-  if (exe.parent_path().filename() == "cli" && fs::exists(exe.parent_path().parent_path() / "CMakeCache.txt", ec))
-    return "./vgc";
+  if (exe.parent_path().filename() == "cli" && fs::exists(exe.parent_path().parent_path() / "CMakeCache.txt", ec)) {
+    // The checkout's ./vgc script, by its absolute path, so that the line
+    // works from any directory (the default build tree is <checkout>/build).
+    const fs::path script = exe.parent_path().parent_path().parent_path() / "vgc";
+    if (fs::is_regular_file(script, ec) && ::access(script.c_str(), X_OK) == 0)
+      return quoted_if_needed(script.lexically_normal().string());
+    return quoted_if_needed(exe_path);
+  }
   // The first vgc a shell would find on PATH (empty entries, the current
   // directory, are skipped: a printed command must not depend on it).
   std::string::size_type start = 0;
@@ -43,9 +55,7 @@ std::string program_command_for(const std::string& exe_path, const std::string& 
     if (same_file(candidate, exe)) return "vgc";
     break;  // another vgc comes first: "vgc" would run that one
   }
-  const bool plain = exe_path.find_first_not_of(
-                         "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789/._+-") == std::string::npos;
-  return plain ? exe_path : shell_quote(exe_path);
+  return quoted_if_needed(exe_path);
 }
 
 const std::string& program_command() { return current(); }

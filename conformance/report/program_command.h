@@ -1,8 +1,9 @@
 // program_command.h — how a printed command names the vgc program: the
 // replay line of every counterexample (summary.md, report.json, junit.xml,
 // the .vgc file, the terminal) and certify's re-run line. A line must work
-// where it is read: from the repository ("./vgc", the script that builds
-// and runs the build tree's program), or from an installed vgc (docs/ci.md).
+// wherever it is read, from any directory: the repository's vgc script by
+// its absolute path (it builds and runs the build tree's program), or an
+// installed vgc (docs/ci.md).
 #pragma once
 
 #include <string>
@@ -11,8 +12,9 @@ namespace vgc {
 
 // The command that runs the program at exe_path (an absolute path), for a
 // shell whose PATH is path_env:
-//   "./vgc"  when the program is in a vgc build tree (<build>/cli/vgc, with
-//            <build>/CMakeCache.txt), run from the sources by ./vgc;
+//   "/path/to/checkout/vgc"  when the program is in a vgc build tree
+//            (<build>/cli/vgc, with <build>/CMakeCache.txt) whose parent
+//            holds the vgc script; the program itself when it does not;
 //   "vgc"    when the first vgc on path_env is this very file;
 //   otherwise exe_path itself, shell-quoted when it needs it.
 std::string program_command_for(const std::string& exe_path, const std::string& path_env);

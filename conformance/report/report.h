@@ -26,6 +26,9 @@ struct ReportContext {
   // What the implementation says it is (Implementation::identity()): for
   // verse: the host, its release and the bone_create form used. Empty: none.
   std::string implementation_identity;
+  // Implementation::merge_identity(): shards whose keys are equal merge.
+  // Empty: implementation_spec is the key.
+  std::string merge_identity;
   std::string command_line;         // the certify command that re-runs this run
   std::string started;              // UTC, ISO 8601
   std::string run_dir;              // where the run's files end up (final path)

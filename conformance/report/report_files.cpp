@@ -118,13 +118,21 @@ std::string vgc_environment_prefix() {
   return out;
 }
 
+// The file by its absolute path: a replay line works from any directory.
+std::string absolute_file(const std::string& file) {
+  std::error_code ec;
+  const fs::path p = fs::absolute(file, ec);
+  return ec ? file : p.lexically_normal().string();
+}
+
 std::string replay_command(const std::string& file, const std::string& implementation_spec) {
-  return vgc_environment_prefix() + program_command() + " replay " + shell_quote(file) + " --impl " + shell_quote(implementation_spec);
+  return vgc_environment_prefix() + program_command() + " replay " + shell_quote(absolute_file(file)) + " --impl " +
+         shell_quote(implementation_spec);
 }
 
 std::string replay_command(const std::string& file, const ReportContext& ctx) {
   return ctx.environment_prefix.value_or(vgc_environment_prefix()) + program_command() + " replay " +
-         shell_quote(file) + " --impl " + shell_quote(ctx.implementation_spec);
+         shell_quote(absolute_file(file)) + " --impl " + shell_quote(ctx.implementation_spec);
 }
 
 std::string render_counterexample(const ClauseOutcome& co, const ReportContext& ctx) {

@@ -19,6 +19,7 @@ std::string render_report_json(const RunResult& run, const Verdict& v, const Rep
   j["implementation"] = ctx.implementation_spec;
   if (!ctx.implementation_identity.empty()) j["implementation_identity"] = ctx.implementation_identity;
   j["implementation_name"] = run.implementation;
+  j["merge_identity"] = ctx.merge_identity.empty() ? ctx.implementation_spec : ctx.merge_identity;
   j["verdict"] = v.name;
   j["exit_code"] = v.exit_code;
   if (!run.cancelled_by.empty()) j["cancelled_by"] = run.cancelled_by;  // cancelled: what was found so far
@@ -39,6 +40,7 @@ std::string render_report_json(const RunResult& run, const Verdict& v, const Rep
   j["unchecked"] = v.unchecked;
   j["strict"] = v.strict;
   j["unreported_verdicts"] = run.unreported_verdicts;
+  if (!run.avoided_classes.empty()) j["avoided_classes"] = run.avoided_classes;
   // A route that cannot show every clause (RouteLimits): its clauses are
   // `not-applicable` with notes naming it.
   if (!run.route.empty()) j["route_limits"] = run.route;
@@ -67,6 +69,8 @@ std::string render_report_json(const RunResult& run, const Verdict& v, const Rep
     c["shown_status"] = shown_status(co, v);
     c["properties"] = co.properties;
     c["exercised"] = co.exercised;
+    if (co.derived_only > 0) c["derived_only"] = co.derived_only;
+    if (!co.route_limit.empty()) c["route_limit"] = co.route_limit;
     if (!co.note.empty()) c["note"] = co.note;
     if (ctx.baseline && ctx.baseline->reasons.count(std::string(co.clause->id)))
       c["baseline_reason"] = ctx.baseline->reasons.at(std::string(co.clause->id));
@@ -82,6 +86,7 @@ std::string render_report_json(const RunResult& run, const Verdict& v, const Rep
       for (const auto& cmd : co.program.commands) lines.push_back(print_command(cmd));
       c["counterexample_commands"] = lines;
       if (co.tolerated_from_start) c["tolerated_from_start"] = true;
+      if (!co.program.history_kind.empty()) c["history_kind"] = co.program.history_kind;
       if (!co.program_origin.empty()) c["program_origin"] = co.program_origin;
       // What the implementation showed (report.html's picture is drawn from
       // it; `vgc merge` reads it back): the document or capability request,
@@ -112,6 +117,7 @@ std::string render_report_json(const RunResult& run, const Verdict& v, const Rep
               {"cases", p.cases},   {"cases_target", p.cases_target}, {"judged", p.judged},
               {"set_aside", p.set_aside}, {"steps_taken_out", p.steps_taken_out}, {"not_judged", p.not_judged}, {"rounds", p.rounds},     {"seconds", p.seconds}};
     if (!p.note.empty()) o["note"] = p.note;
+    if (p.skip != PropertySkip::None) o["skip"] = property_skip_name(p.skip);
     json found = json::array();
     for (const auto& f : p.findings) found.push_back(f.finding.clause);
     o["findings"] = found;

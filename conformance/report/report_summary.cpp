@@ -37,6 +37,11 @@ std::string render_summary(const RunResult& run, const Verdict& v, const ReportC
       out += fmt::format("Not judgeable over {} (not-applicable; the clause table says why for each): {}.\n\n",
                          run.route, ids);
   }
+  if (!run.avoided_classes.empty()) {
+    out += "Classes of input that cost a time-out, found once and not drawn again:\n\n";
+    for (const auto& note : run.avoided_classes) out += "- " + note + "\n";
+    out += "\n";
+  }
   if (run.preflight)
     out += fmt::format("**The implementation could not show a fresh node** ({}: {}); nothing else was judged.\n\n",
                        run.preflight->clause, run.preflight->message);

@@ -15,6 +15,14 @@
 # (protocol error, ACCEPT-1) after 20 commands since it started: one
 # finding, on STABLE-1 or ACCEPT-1, "depends on the implementation's
 # history", whose counterexample shows the same failure on a fresh instance.
+#
+# history_findings_test.sh VGC FAULT_PLUGIN reject — a wrong answer is
+# confirmed like a crash (issue 31 item 2): after 100 commands since it
+# started the implementation answers `rejected` to every command. One
+# finding, STABLE-1 fail, "depends on the implementation's history"
+# (wrong-answer), whose counterexample gets a wrong answer from a fresh
+# instance; none on the clause of whatever command was running (it used to
+# be 9 MUST fails on unrelated clauses that replayed as agreeing).
 set -uo pipefail
 [ $# -ge 2 ] || { echo "usage: $0 VGC FAULT_PLUGIN [hang|garbage]" >&2; exit 2; }
 vgc=$1 plugin=$2 mode=${3:-crash}
@@ -28,10 +36,13 @@ if [ "$mode" != crash ]; then
   case "$mode" in
     hang) clause=STABLE-1 status=timeout shows=timeout timeout=(--timeout 1) ;;
     garbage) clause=ACCEPT-1 status=fail shows=protocol-error timeout=() ;;
-    *) echo "usage: $0 VGC FAULT_PLUGIN [hang|garbage]" >&2; exit 2 ;;
+    reject) clause=STABLE-1 status=fail shows="^fail " timeout=() ;;
+    *) echo "usage: $0 VGC FAULT_PLUGIN [hang|garbage|reject]" >&2; exit 2 ;;
   esac
-  impl="exec:$here/history_proxy.py $vgc $mode 20"
-  "$vgc" certify --quiet --cases 20 --clauses 'LAYER-*' "${timeout[@]}" --impl "$impl" --reports R >out 2>err
+  limit=20 cases=20
+  [ "$mode" = reject ] && limit=100 cases=40
+  impl="exec:$here/history_proxy.py $vgc $mode $limit"
+  "$vgc" certify --quiet --cases $cases --clauses 'LAYER-*' "${timeout[@]}" --impl "$impl" --reports R >out 2>err
   rc=$?
   [ $rc = 1 ] || { cat out err >&2; fail "exit $rc, expected 1 (a $clause $status)"; }
   python3 - R/latest/report.json "$clause" "$status" <<'PY' || { cat out >&2; fail "report.json is wrong (above)"; }
@@ -43,6 +54,8 @@ assert list(found) == [clause], "clauses with a finding: %s (expected only %s)" 
 f = found[clause]
 assert f["status"] == status, f["status"]
 assert f["message"].startswith("depends on the implementation's history"), f["message"]
+if status == "fail" and clause == "STABLE-1":
+    assert "wrong-answer" in f["message"], f["message"]
 PY
   cex=R/latest/counterexamples/$clause.vgc
   [ -s "$cex" ] || fail "no counterexample file for $clause"

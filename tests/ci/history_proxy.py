@@ -10,6 +10,9 @@ e.g. --impl plugin:PATH, go to `VGC serve`):
   crash    the proxy exits 1 (its child is left to the suite to stop)
   hang     no answer, ever (the proxy sleeps; the child stays alive)
   garbage  the answer "what?" (a protocol error)
+  reject   the answer "rejected AAA...": a wrong verdict on whatever
+           command (a store that refuses everything once it is full);
+           $HISTORY_PROXY_REASON_BYTES bytes of A (default 16)
 
 A fresh start counts from 0 again, so a short sequence from a fresh
 instance never shows it. It also writes its pid and its child's pid to
@@ -36,6 +39,10 @@ for line in sys.stdin:
                     time.sleep(60)
             if mode == "garbage":
                 print("what?", flush=True)
+                continue
+            if mode == "reject":
+                reason = "A" * int(os.environ.get("HISTORY_PROXY_REASON_BYTES", "16"))
+                print("rejected " + reason, flush=True)
                 continue
         count += 1
     child.stdin.write(line)

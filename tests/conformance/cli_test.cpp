@@ -272,7 +272,8 @@ TEST_F(Cli, AFaultIsRejectedReplaysAndCanBeBaselined) {
   ASSERT_EQ(r.exit_code, 1) << context(r);
   expect_report_files(dir_ / "rep", "not-conformant");
   EXPECT_NE(r.out.find("BONE-FOREST-1"), std::string::npos) << context(r);
-  EXPECT_NE(r.out.find("re-run: VGC_FAULT='bone-cycles-accepted' ./vgc certify --impl"), std::string::npos)
+  EXPECT_NE(r.out.find("re-run: VGC_FAULT='bone-cycles-accepted' " + (fs::path(VGC_SOURCE_DIR) / "vgc").string() + " certify --impl"),
+            std::string::npos)
       << "the re-run line lacks the environment the run needed: " << context(r);
   EXPECT_NE(r.out.find(" --strict"), std::string::npos) << context(r);
 
@@ -294,9 +295,10 @@ TEST_F(Cli, AFaultIsRejectedReplaysAndCanBeBaselined) {
   const Result again = vgc("replay " + shell_quote(file.string()) + " --impl " + shell_quote(impl), env);
   EXPECT_EQ(again.exit_code, 1) << context(again);
   EXPECT_NE(again.out.find("BONE-FOREST-1"), std::string::npos) << context(again);
-  // The replay line that summary.md prints, run as printed (from the source
-  // tree's ./vgc wrapper it would build first; here the binary itself).
-  const std::regex replay_line("Replay: `([^`]*)\\./vgc (replay [^`]*)`");
+  // The replay line that summary.md prints, run as printed (by the source
+  // tree's vgc script, named by its absolute path so that the line works
+  // from any directory; it would build first: here the binary itself).
+  const std::regex replay_line("Replay: `([^`]*)" + (fs::path(VGC_SOURCE_DIR) / "vgc").string() + " (replay [^`]*)`");
   std::smatch m;
   ASSERT_TRUE(std::regex_search(summary, m, replay_line)) << summary;
   EXPECT_EQ(m[1].str(), "VGC_FAULT='bone-cycles-accepted' ") << "the replay line carries the environment";
@@ -470,12 +472,14 @@ TEST_F(Cli, ACapabilityFaultReplaysItsCapabilityCheck) {
     for (const auto& c : j.at("clauses"))
       if (c.at("id") == clause) {
         const std::string line = c.at("replay");
-        // It carries the environment the run needed (VGC_FAULT), before ./vgc.
-        const auto at = line.find("./vgc ");
+        // It carries the environment the run needed (VGC_FAULT), before the
+        // source tree's vgc script (its absolute path).
+        const std::string program = (fs::path(VGC_SOURCE_DIR) / "vgc").string() + " ";
+        const auto at = line.find(program);
         ASSERT_NE(at, std::string::npos) << line;
         const std::string printed_env = line.substr(0, at);
         EXPECT_NE(printed_env.find("VGC_FAULT="), std::string::npos) << line;
-        const Result printed = vgc(line.substr(at + 6), printed_env);
+        const Result printed = vgc(line.substr(at + program.size()), printed_env);
         EXPECT_EQ(printed.exit_code, 1) << context(printed);
       }
     // Against the reference: exit 0, the check passes.

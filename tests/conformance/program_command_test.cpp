@@ -1,7 +1,8 @@
 // program_command_test.cpp — program_command_for (program_command.h): the
 // command a printed replay or re-run line starts with is one a shell runs
-// where vgc is: "./vgc" for the build tree's program (run from the sources
-// by the ./vgc script), "vgc" when PATH finds this very program, else its
+// where vgc is: the checkout's vgc script by its absolute path for the
+// build tree's program (so that the line works from any directory), "vgc"
+// when PATH finds this very program, else its
 // absolute path. The installed program's printed replay line is run as
 // printed in tests/install/install_consumer_test.sh.
 #include <gtest/gtest.h>
@@ -38,10 +39,14 @@ class ProgramCommand : public ::testing::Test {
   fs::path dir_;
 };
 
-TEST_F(ProgramCommand, TheBuildTreesProgramIsRunByTheVgcScript) {
+TEST_F(ProgramCommand, TheBuildTreesProgramIsRunByTheVgcScriptByItsAbsolutePath) {
   const std::string exe = program("build/cli/vgc");
   std::ofstream(dir_ / "build/CMakeCache.txt") << "\n";
-  EXPECT_EQ(program_command_for(exe, "/usr/bin:/bin"), "./vgc");
+  // No script beside the build tree (a build elsewhere): the program itself.
+  EXPECT_EQ(program_command_for(exe, "/usr/bin:/bin"), exe);
+  const std::string script = program("vgc");
+  // A line that works from any directory, not "./vgc" (issue 31 item 5).
+  EXPECT_EQ(program_command_for(exe, "/usr/bin:/bin"), script);
 }
 
 TEST_F(ProgramCommand, AProgramInstalledOnPathIsVgc) {

@@ -104,7 +104,9 @@ TEST(Runner, SameSeedSameResultAgainstAFault) {
 }
 
 // The union over shards 1/n..n/n is the unsharded run; every property runs in
-// exactly one shard, with the outcome it has unsharded.
+// exactly one shard, with the outcome it has unsharded, but a property at
+// scale, whose cases are split over the shards (case k in shard k mod n):
+// its cases and judged cases add up to the unsharded ones.
 void check_shards(const std::function<RunResult(const RunOptions&)>& run, int n, const std::string& what,
                   bool expect_findings) {
   const RunResult whole = run(small(3));
@@ -120,6 +122,18 @@ void check_shards(const std::function<RunResult(const RunOptions&)>& run, int n,
     const PropertyOutcome& w = whole.properties[p];
     ASSERT_NE(w.status, "skipped") << what << ": " << w.id;
     int ran_in = 0;
+    if (props[p].at_scale) {
+      int cases = 0, judged = 0;
+      for (int i = 0; i < n; ++i) {
+        const PropertyOutcome& s = shards[static_cast<std::size_t>(i)].properties[p];
+        EXPECT_EQ(s.seed, w.seed) << what << ": a shard changed the seed of " << w.id;
+        cases += s.cases;
+        judged += s.judged;
+      }
+      EXPECT_EQ(cases, w.cases) << what << ": " << w.id << " split over the shards";
+      if (!expect_findings) EXPECT_EQ(judged, w.judged) << what << ": " << w.id << " split over the shards";
+      continue;
+    }
     for (int i = 0; i < n; ++i) {
       const PropertyOutcome& s = shards[static_cast<std::size_t>(i)].properties[p];
       EXPECT_EQ(s.seed, w.seed) << what << ": a shard changed the seed of " << w.id;
