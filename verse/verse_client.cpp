@@ -157,7 +157,8 @@ Status ClientSession::connect(const std::string& host, std::uint16_t port, const
   Clock::time_point sent_at = Clock::now();
   bool send_now = true;  // a new stage packet, or the resend interval passed
   const auto nudge_every = std::chrono::milliseconds(10);
-  bool awaiting_accept = false;  // the login (stage 2) was sent
+  bool login_sent = false;       // the stage packet is the login (stage 2)
+  bool awaiting_accept = false;  // ... and it was sent
   Clock::time_point nudged_at{};
   for (;;) {
     Clock::time_point now = Clock::now();
@@ -166,7 +167,7 @@ Status ClientSession::connect(const std::string& host, std::uint16_t port, const
       st = s.socket.send_to(s.host, stage_packet);
       if (!st.ok()) return st;
       sent_at = now;
-      if (stage_name[0] == 'c' && !awaiting_accept) {  // the login was sent: nudge at once
+      if (login_sent && !awaiting_accept) {  // the login went out: nudge at once
         awaiting_accept = true;
         nudged_at = now - nudge_every;
       }
@@ -211,6 +212,7 @@ Status ClientSession::connect(const std::string& host, std::uint16_t port, const
       }
       stage_packet = build_login_packet(l);
       stage_name = "connect_accept (login stage 3)";
+      login_sent = true;
       send_now = true;
     } else if (const auto* a = std::get_if<login::Accept>(&m)) {
       if (stage_name[0] == 'i') continue;  // an accept before our login: not ours
