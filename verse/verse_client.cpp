@@ -157,6 +157,10 @@ Status ClientSession::connect(const std::string& host, std::uint16_t port, const
   const char* stage_name = "its key (login stage 1)";
   Clock::time_point sent_at = Clock::now();
   bool send_now = true;  // a new stage packet, or the resend interval passed
+  const auto nudge_every = std::chrono::milliseconds(10);
+  bool login_sent = false;       // the stage packet is the login (stage 2)
+  bool awaiting_accept = false;  // ... and it was sent
+  Clock::time_point nudged_at{};
   for (;;) {
     Clock::time_point now = Clock::now();
     if (send_now || now - sent_at >= resend) {
@@ -164,6 +168,14 @@ Status ClientSession::connect(const std::string& host, std::uint16_t port, const
       st = s.socket.send_to(s.host, stage_packet);
       if (!st.ok()) return st;
       sent_at = now;
+      if (login_sent && !awaiting_accept) {  // the login went out: nudge at once
+        awaiting_accept = true;
+        nudged_at = now - nudge_every;
+      }
+    }
+    if (options.while_awaiting_accept && awaiting_accept && now - nudged_at >= nudge_every) {
+      options.while_awaiting_accept();
+      nudged_at = now;
     }
     if (options.stop && options.stop()) {
       s.socket.close();
@@ -174,7 +186,9 @@ Status ClientSession::connect(const std::string& host, std::uint16_t port, const
       return Status::timeout("no Verse host answered at " + s.host.to_string() + ": it did not send " + stage_name +
                              " within " + std::to_string(options.login_timeout_s) + " s");
     }
-    const double wait = std::chrono::duration<double>(std::min(deadline, sent_at + resend) - now).count();
+    Clock::time_point wake = std::min(deadline, sent_at + resend);
+    if (options.while_awaiting_accept && awaiting_accept) wake = std::min(wake, nudged_at + nudge_every);
+    const double wait = std::chrono::duration<double>(wake - now).count();
     std::string bytes;
     PeerAddress from;
     st = s.socket.receive(&bytes, &from, std::max(0.0, wait));
@@ -203,6 +217,7 @@ Status ClientSession::connect(const std::string& host, std::uint16_t port, const
       }
       stage_packet = build_login_packet(l);
       stage_name = "connect_accept (login stage 3)";
+      login_sent = true;
       send_now = true;
     } else if (const auto* a = std::get_if<login::Accept>(&m)) {
       if (stage_name[0] == 'i') continue;  // an accept before our login: not ours
@@ -245,6 +260,14 @@ void ClientSession::set_bone_form(BoneForm form) {
 }
 
 Status ClientSession::create_geometry_node(std::uint32_t* node_id, double timeout_s) {
+  std::vector<std::uint32_t> ids;
+  Status st = create_geometry_nodes(1, &ids, timeout_s);
+  if (st.ok()) *node_id = ids.front();
+  return st;
+}
+
+Status ClientSession::create_geometry_nodes(std::size_t count, std::vector<std::uint32_t>* node_ids,
+                                            double timeout_s) {
   Impl& s = *impl_;
   const Clock::time_point deadline = deadline_after(timeout_s);
   // Every time, not once: a host may have lost the subscription (r6 runs
@@ -257,16 +280,20 @@ Status ClientSession::create_geometry_node(std::uint32_t* node_id, double timeou
     s.index_subscribed = true;
   }
   // What the index announced before this request is not its answer; the
-  // host answers in order, so the new node's node_create comes after.
+  // host answers in order, so the new nodes' node_creates come after.
   Status st = s.pump(Clock::now(), [] { return false; }, "nothing");  // reads what has already arrived
   if (st.code == Status::Code::Closed || st.code == Status::Code::NetworkError) return st;
   s.new_mine.clear();
-  st = s.send(wire::NodeCreate{kAnyNodeId, kNodeTypeGeometry, kOwnerMine});
+  for (std::size_t i = 0; i < count; ++i) {
+    std::string bytes;
+    st = encode_command(wire::NodeCreate{kAnyNodeId, kNodeTypeGeometry, kOwnerMine}, &bytes, s.options.bone_form);
+    if (st.ok()) st = s.channel->queue(std::move(bytes));
+    if (!st.ok()) return st;
+  }
+  st = s.pump(deadline, [&] { return s.new_mine.size() >= count; }, "node_create for the new geometry node");
   if (!st.ok()) return st;
-  st = s.pump(deadline, [&] { return !s.new_mine.empty(); }, "node_create for the new geometry node");
-  if (!st.ok()) return st;
-  *node_id = s.new_mine.front();
-  s.new_mine.pop_front();
+  node_ids->assign(s.new_mine.begin(), s.new_mine.begin() + static_cast<std::ptrdiff_t>(count));
+  s.new_mine.erase(s.new_mine.begin(), s.new_mine.begin() + static_cast<std::ptrdiff_t>(count));
   return {};
 }
 
@@ -285,6 +312,11 @@ Status ClientSession::send_raw(std::uint32_t id, const std::string& clear) {
   return s.socket.send_to(s.host, s.channel->raw_datagram(id, clear));
 }
 std::uint32_t ClientSession::take_packet_id() { return impl_->channel ? impl_->channel->take_raw_id() : 0; }
+Status ClientSession::nudge() {
+  Impl& s = *impl_;
+  if (!s.connected || !s.channel) return Status::closed("not connected");
+  return s.socket.send_to(s.host, s.channel->ack_only_datagram());
+}
 Status ClientSession::send_datagram(const std::string& bytes) {
   Impl& s = *impl_;
   if (!s.connected) return Status::closed("not connected");

@@ -49,6 +49,15 @@ struct ClientOptions {
   // unacknowledged this long (see unacknowledged_for()); 0: only its own
   // time-out ends a wait.
   double unacknowledged_limit_s = 0;
+  // Called right after the login packet (stage 2) is sent and then every
+  // 10 ms until the host accepts or the login times out. r6 runs its
+  // accept callback only when its loop's wait ends, which is after a whole
+  // second unless a data packet of another session arrives (r6
+  // v_connection.c verse_callback_update: the wait ends on a pending data
+  // packet; a login packet is not one): a caller holding another session
+  // with the host makes it send one (nudge()), so the login takes a round
+  // trip instead of up to a second. Null: nothing.
+  std::function<void()> while_awaiting_accept;
   // Called with every packet received from the host, clear (decrypted), the
   // login packets included: captures (the fuzz seeds of
   // corpora/fuzz/fuzz_verse_packet) and debugging. Null: nothing.
@@ -89,6 +98,10 @@ class ClientSession {
   // and an id announced again for a node that still exists is not.
   // Commands received meanwhile stay queued.
   Status create_geometry_node(std::uint32_t* node_id, double timeout_s);
+  // The same for `count` nodes at once: one node_index_subscribe, `count`
+  // node_creates in one packet, one wait for all their answers. *node_ids
+  // gets them in arrival order.
+  Status create_geometry_nodes(std::size_t count, std::vector<std::uint32_t>* node_ids, double timeout_s);
 
   // Queue and send at once (no waiting for anything to come back).
   Status subscribe_node(std::uint32_t node_id);
@@ -108,6 +121,11 @@ class ClientSession {
   // stays usable only if every id taken is sent once (in any order).
   Status send_raw(std::uint32_t id, const std::string& clear);
   std::uint32_t take_packet_id();
+  // One data packet holding only an ack (of the last packet received): the
+  // host stores it as a packet of this session and acknowledges nothing
+  // back; what it is for is waking a host that waits for data (see
+  // ClientOptions::while_awaiting_accept).
+  Status nudge();
   // A datagram exactly as given (no id, no encryption): packets of the
   // login's ids, or bytes that are no packet at all.
   Status send_datagram(const std::string& bytes);

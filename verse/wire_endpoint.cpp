@@ -126,6 +126,14 @@ std::string Channel::raw_datagram(std::uint32_t id, const std::string& clear) co
   return datagram;
 }
 
+std::string Channel::ack_only_datagram() {
+  const std::uint32_t last = expected_in_id_ == kFirstDataPacketId ? 1 : expected_in_id_ - 1;
+  std::string ack;
+  (void)encode_command(wire::PacketAck{last}, &ack);
+  ++counters_.sent;
+  return raw_datagram(take_id(), ack);
+}
+
 std::uint32_t Channel::take_id() {
   const std::uint32_t id = next_out_id_++;
   if (next_out_id_ == 0) next_out_id_ = kFirstDataPacketId;  // r6 skips 0 on wrap; 1 belongs to the login
@@ -170,6 +178,15 @@ std::vector<std::string> Channel::take_datagrams(Clock::time_point now) {
     while (!ack_nak_.empty() && used + 5 <= kMaxSendPacketBytes) {
       (void)encode_command(ack_nak_.front(), &acks);
       ack_nak_.pop_front();
+      used += 5;
+    }
+    // The peer's ack-only packets ride along in a packet sent anyway (never
+    // in one of their own: that would start an endless exchange), up to 64
+    // a packet, leaving room for commands.
+    const bool sending_anyway = !acks.empty() || (!queue_.empty() && history_bytes_ < kWindowBytes);
+    for (int n = 0; sending_anyway && n < 64 && !ack_only_seen_.empty() && used + 5 <= kMaxSendPacketBytes / 2; ++n) {
+      (void)encode_command(wire::PacketAck{ack_only_seen_.front()}, &acks);
+      ack_only_seen_.pop_front();
       used += 5;
     }
     while (!queue_.empty() && history_bytes_ + commands.size() < kWindowBytes &&
@@ -251,6 +268,7 @@ Status Channel::on_datagram(const std::uint8_t* data, std::size_t size, Clock::t
   expected_in_id_ = p.id + 1;
   if (expected_in_id_ == 0) expected_in_id_ = kFirstDataPacketId;
   if (has_commands) ack_nak_.push_back(wire::PacketAck{p.id});
+  else if (ack_only_seen_.size() < 4096) ack_only_seen_.push_back(p.id);  // beyond: the peer keeps it
   for (WireCommand& c : p.commands)
     if (!std::holds_alternative<wire::PacketAck>(c) && !std::holds_alternative<wire::PacketNak>(c))
       delivered->push_back(std::move(c));

@@ -109,6 +109,11 @@ class Channel {
   // channel sends stay contiguous however the caller orders its packets.
   std::string raw_datagram(std::uint32_t id, const std::string& clear) const;
   std::uint32_t take_raw_id() { return take_id(); }
+  // A data packet holding only an ack of the last packet received (of id 1,
+  // the login's, when none was): new id, not remembered, never resent; the
+  // peer acts on nothing in it (an ack of a packet it no longer holds is
+  // ignored, r6 callback_send_packet_ack). ClientSession::nudge.
+  std::string ack_only_datagram();
 
   // Called with every datagram's clear bytes before it is parsed.
   void set_tap(std::function<void(const std::uint8_t*, std::size_t)> tap) { tap_ = std::move(tap); }
@@ -147,6 +152,10 @@ class Channel {
   std::map<std::uint32_t, Sent> history_;
   std::size_t history_bytes_ = 0;
   std::deque<WireCommand> ack_nak_;  // to send, taken from the front
+  // Ack-only packets of the peer, acknowledged only in a packet sent anyway
+  // (take_datagrams): r6 keeps each packet it sent until it is acknowledged
+  // and walks all it keeps for every ack it receives.
+  std::deque<std::uint32_t> ack_only_seen_;
   Clock::time_point last_heard_;
   Counters counters_;
   std::function<void(const std::uint8_t*, std::size_t)> tap_;

@@ -3,6 +3,7 @@
 
 #include <chrono>
 #include <cstdlib>
+#include <optional>
 #include <set>
 #include <type_traits>
 #include <vector>
@@ -28,6 +29,12 @@ constexpr double kDeadSessionSeconds = 1.0;
 // does not answer (r6 after running a node_index_subscribe decoded from
 // garbage) gets a fresh login after this, not the whole --timeout.
 constexpr double kFirstCreateSeconds = 1.0;
+// Nodes made per batch for the pool (verse_node_pool.h): three round trips
+// per batch. 16 node_creates fit one packet, and the host's answers to the
+// observer's 16 subscriptions (five commands each) a few.
+constexpr std::size_t kPoolBatch = 16;
+// The cells a judged node's mirror keeps (VerseNodeMirror's default).
+constexpr std::size_t kMirrorCells = std::size_t{1} << 22;
 
 // "5 s (--timeout)": a limit as the message that reports it names it.
 std::string limit_text(double seconds, const char* option) {
@@ -36,6 +43,22 @@ std::string limit_text(double seconds, const char* option) {
 
 double seconds_left(Clock::time_point deadline) {
   return std::max(0.0, std::chrono::duration<double>(deadline - Clock::now()).count());
+}
+
+// Whether r6 may misread the packet that carries `c`: a string of 16 bytes
+// or more in one of its 16-byte fields (docs/verse_wire.md section 1),
+// after which r6 runs whatever the rest of the packet decodes to, which may
+// end the session (connect_terminate). r6 runs that packet to its end and
+// the barrier's packet after it before it forgets the session, so the
+// command itself is judged; the next call finds the session gone.
+bool may_desynchronise_r6(const Command& c) {
+  const auto long_name = [](const std::string& s) { return s.size() > kMaxNameBytes; };
+  if (const auto* l = std::get_if<cmd::LayerCreate>(&c)) return long_name(l->name);
+  if (const auto* v = std::get_if<cmd::CreaseSetVertex>(&c)) return long_name(v->layer);
+  if (const auto* e = std::get_if<cmd::CreaseSetEdge>(&c)) return long_name(e->layer);
+  if (const auto* b = std::get_if<cmd::BoneCreate>(&c))
+    return long_name(b->weight) || long_name(b->reference) || long_name(b->pos_label) || long_name(b->rot_label);
+  return false;
 }
 
 CallStatus call_status_of(const verse::Status& s) {
@@ -147,10 +170,10 @@ Answer VerseImplementation::probe_bone_form() {
 }
 
 VerseImplementation::~VerseImplementation() {
-  if (driver_ && have_node_ && !broken_) {
-    verse::wire::NodeDestroy destroy;
-    destroy.node_id = node_;
-    (void)driver_->send(destroy);
+  if (driver_ && !broken_) {
+    std::vector<std::uint32_t> ids = pool_.clear();
+    if (have_node_) ids.push_back(node_);
+    (void)destroy_nodes(ids);
   }
   if (observer_) observer_->disconnect();
   if (driver_) driver_->disconnect();
@@ -188,26 +211,7 @@ Answer VerseImplementation::failed(CallStatus s, const std::string& detail) {
   return a;
 }
 
-Answer VerseImplementation::connect() {
-  if (!silent_since_.empty())
-    return failed(CallStatus::Timeout, "the Verse host stopped answering (" + silent_since_ +
-                                           "); vgc does not wait for it again in this run");
-  // Only the driver's session was dropped (the host forgot it: section 7 of
-  // docs/adapters.md): the observer stays, after a round trip on the old
-  // node that takes in everything still under way for it; a login costs a
-  // second on r6.
-  const bool keep_observer = driver_lost_ && observer_ && observer_->connected() && [&] {
-    std::vector<verse::WireCommand> stale;
-    return observer_->barrier(node_, std::min(kDeadSessionSeconds, options_.timeout_seconds), &stale).ok();
-  }();
-  driver_lost_ = false;
-  if (observer_ && !keep_observer) observer_->disconnect();
-  if (driver_) driver_->disconnect();
-  driver_ = std::make_unique<verse::ClientSession>();
-  if (!keep_observer) {
-    observer_ = std::make_unique<verse::ClientSession>();
-    have_node_ = false;  // the old node is left to the host
-  }  // else make_node() destroys the old node, if it still has one, through the new driver
+verse::ClientOptions VerseImplementation::session_options(verse::ClientSession* nudger) const {
   verse::ClientOptions o;
   o.name = login_;
   if (const char* pw = std::getenv("VERSE_PASSWORD")) o.password = pw;
@@ -215,10 +219,40 @@ Answer VerseImplementation::connect() {
   o.stop = [] { return cancel_signal() != 0; };          // a cancelled run waits for nothing (cancel.h)
   o.bone_form = bone_form_;
   o.unacknowledged_limit_s = std::min(kDeadSessionSeconds, options_.timeout_seconds);
+  if (nudger && nudger->connected()) o.while_awaiting_accept = [nudger] { (void)nudger->nudge(); };
+  return o;
+}
+
+Answer VerseImplementation::connect() {
+  if (!silent_since_.empty())
+    return failed(CallStatus::Timeout, "the Verse host stopped answering (" + silent_since_ +
+                                           "); vgc does not wait for it again in this run");
+  // Only the driver's session was dropped (the host forgot it: section 7 of
+  // docs/adapters.md): the observer stays, after a round trip on the old
+  // node that takes in everything still under way for it.
+  const bool keep_observer = driver_lost_ && observer_ && observer_->connected() && [&] {
+    std::vector<verse::WireCommand> stale;
+    ++round_trips_;
+    return observer_->barrier(node_, std::min(kDeadSessionSeconds, options_.timeout_seconds), &stale).ok();
+  }();
+  driver_lost_ = false;
+  if (observer_ && !keep_observer) observer_->disconnect();
+  if (driver_) driver_->disconnect();
+  driver_ = std::make_unique<verse::ClientSession>();
+  // The pool's nodes are left behind with the sessions that knew them; the
+  // new driver destroys them below.
+  const std::vector<std::uint32_t> old_pool = pool_.clear();
+  if (!keep_observer) {
+    observer_ = std::make_unique<verse::ClientSession>();
+    have_node_ = false;  // the old node is left to the host
+  }  // else make_node() destroys the old node, if it still has one, through the new driver
   const std::string where = host_ + ":" + std::to_string(port_);
   for (auto* session : {driver_.get(), observer_.get()}) {
     if (session == observer_.get() && keep_observer) continue;
-    const verse::Status st = session->connect(host_, port_, o);
+    // The other session, when it is up, wakes the host for this login.
+    verse::ClientSession* other = session == driver_.get() ? (keep_observer ? observer_.get() : nullptr)
+                                                           : driver_.get();
+    const verse::Status st = session->connect(host_, port_, session_options(other));
     // A host that answered before and no longer answers a login has gone
     // silent: waiting for it again at every test case would only turn a
     // dead host into a run as long as cases x --timeout.
@@ -229,31 +263,78 @@ Answer VerseImplementation::connect() {
                                             "\": " + st.to_string() +
                                             (st.code == verse::Status::Code::Timeout ? " (--start-timeout)" : ""));
   }
+  driver_avatar_ = driver_->avatar();
+  driver_announced_ = driver_dropped_ = desync_risk_ = false;
+  // The observer follows the index of avatars (the driver's being destroyed
+  // is the host ending its session) and of geometry nodes (the pool's).
+  if (!keep_observer) {
+    const verse::Status st = observer_->send(
+        verse::wire::NodeIndexSubscribe{(1u << verse::kNodeTypeObject) | (1u << verse::kNodeTypeGeometry)});
+    if (!st.ok()) return failed(call_status_of(st), "subscribing to the node index: " + st.to_string());
+  }
   release_ = driver_->host_release();
   identity_ = "Verse host at " + where + " (release " + std::to_string(release_) + ")";
   broken_ = false;
   ever_connected_ = true;
+  return destroy_nodes(old_pool);
+}
+
+Answer VerseImplementation::destroy_nodes(const std::vector<std::uint32_t>& ids) {
+  for (std::uint32_t id : ids) {
+    verse::wire::NodeDestroy destroy;
+    destroy.node_id = id;
+    if (const verse::Status st = driver_->send(destroy); !st.ok())
+      return failed(call_status_of(st), "destroying geometry node " + std::to_string(id) + ": " + st.to_string());
+  }
   return {};
 }
 
 Answer VerseImplementation::make_node(double create_timeout_s) {
   if (have_node_) {
-    verse::wire::NodeDestroy destroy;
-    destroy.node_id = node_;
-    if (const verse::Status st = driver_->send(destroy); !st.ok())
-      return failed(call_status_of(st), "destroying geometry node " + std::to_string(node_) + ": " + st.to_string());
+    if (Answer a = destroy_nodes({node_}); a.status != CallStatus::Ok) return a;
     have_node_ = false;
   }
-  std::uint32_t id = 0;
-  const double wait = create_timeout_s > 0 ? std::min(create_timeout_s, options_.timeout_seconds) : options_.timeout_seconds;
-  if (const verse::Status st = driver_->create_geometry_node(&id, wait); !st.ok())
-    return failed(call_status_of(st), "creating a geometry node (node_create): " + st.to_string());
-  node_ = id;
-  have_node_ = true;
-  mirror_.clear();
-  if (const verse::Status st = observer_->subscribe_node(node_); !st.ok())
-    return failed(call_status_of(st), "subscribing to geometry node " + std::to_string(node_) + ": " + st.to_string());
-  return settle("creating geometry node " + std::to_string(node_) + " and subscribing to it");
+  for (int batch = 0; batch < 2; ++batch) {
+    if (pool_.empty())
+      if (Answer a = refill_pool(create_timeout_s); a.status != CallStatus::Ok) return a;
+    std::vector<std::uint32_t> spoilt;
+    std::optional<VerseNodePool::Taken> t = pool_.take(&spoilt);
+    if (Answer a = destroy_nodes(spoilt); a.status != CallStatus::Ok) return a;
+    if (!t) continue;  // the whole batch was spoilt: one more
+    node_ = t->node_id;
+    have_node_ = true;
+    mirror_ = std::move(t->mirror);
+    mirror_.set_max_cells(kMirrorCells);
+    return {};
+  }
+  return failed(CallStatus::ProtocolError,
+                "two batches of new geometry nodes were each changed or destroyed before any was used: the host "
+                "does not keep a node fresh while nothing is sent to it");
+}
+
+Answer VerseImplementation::refill_pool(double create_timeout_s) {
+  const double wait =
+      create_timeout_s > 0 ? std::min(create_timeout_s, options_.timeout_seconds) : options_.timeout_seconds;
+  std::vector<std::uint32_t> ids;
+  ++round_trips_;
+  if (const verse::Status st = driver_->create_geometry_nodes(kPoolBatch, &ids, wait); !st.ok())
+    return failed(call_status_of(st), "creating geometry nodes (node_create): " + st.to_string());
+  for (std::uint32_t id : ids) {
+    pool_.add(id);
+    if (const verse::Status st = observer_->subscribe_node(id); !st.ok())
+      return failed(call_status_of(st), "subscribing to geometry node " + std::to_string(id) + ": " + st.to_string());
+  }
+  const auto deadline = Clock::now() + std::chrono::duration_cast<Clock::duration>(
+                                           std::chrono::duration<double>(options_.timeout_seconds));
+  const std::string what = "creating geometry nodes " + std::to_string(ids.front()) + " to " +
+                           std::to_string(ids.back()) + " and subscribing to them";
+  new_layers_.clear();
+  Answer a = observer_round_trip(ids.back(), deadline, what);
+  if (a.status == CallStatus::Ok) a = subscribe_new_layers(ids.back(), deadline, what);
+  if (a.status != CallStatus::Ok) return a;
+  pool_.settle_all();
+  drain_driver();
+  return {};
 }
 
 Answer VerseImplementation::start() {
@@ -265,8 +346,18 @@ Answer VerseImplementation::start() {
 }
 
 Answer VerseImplementation::reset() {
+  if (driver_dropped_ && !broken_) {  // seen after the command that caused it was judged
+    broken_ = true;
+    driver_lost_ = true;
+  }
   if (broken_ || !driver_ || !driver_->connected() || !observer_->connected()) return start();
   Answer a = make_node(kFirstCreateSeconds);
+  // A reset takes a node made ahead, with no round trip through the
+  // driver's session: after a command that may have ended it, one round
+  // trip on the new node tells (a dropped session is the next command's
+  // crash otherwise, in a case it has nothing to do with).
+  if (a.status == CallStatus::Ok && desync_risk_) a = settle("checking the session after a misread command");
+  desync_risk_ = false;
   if (a.status == CallStatus::Crash && !driver_->connected() && observer_->connected()) driver_lost_ = true;
   // A host may end a session without a word (r6 runs a connect_terminate
   // it decoded from the rest of a desynchronised packet and forgets the
@@ -286,22 +377,87 @@ void VerseImplementation::drain_driver() {
   }
 }
 
+bool VerseImplementation::absorb(const verse::WireCommand& w, std::string* error) {
+  if (const auto* n = std::get_if<verse::wire::NodeCreate>(&w)) {
+    if (n->type == verse::kNodeTypeObject && n->node_id == driver_avatar_) driver_announced_ = true;
+    if (n->type == verse::kNodeTypeGeometry) pool_.on_index_create(n->node_id);
+    return true;
+  }
+  if (const auto* d = std::get_if<verse::wire::NodeDestroy>(&w)) {
+    if (d->node_id == driver_avatar_ && driver_announced_) driver_dropped_ = true;
+    pool_.on_index_destroy(d->node_id);
+    return true;
+  }
+  const auto* g = std::get_if<verse::wire::Geometry>(&w);
+  if (!g) return true;  // not geometry
+  // A pool node first: it may have the id of the current node, destroyed
+  // by reset() (r6 reuses ids).
+  const bool pooled = pool_.holds(g->node_id);
+  if (!pooled && !(have_node_ && g->node_id == node_)) return true;  // another node
+  VerseNodeMirror& m = pooled ? *pool_.mirror(g->node_id) : mirror_;
+  const bool follow_layers = !pooled || !pool_.settled(g->node_id);
+  if (const auto* lc = std::get_if<cmd::LayerCreate>(&g->command); lc && !lc->name.empty() && follow_layers) {
+    const auto it = m.layers().find(lc->layer_id);
+    if (it == m.layers().end() || static_cast<std::uint8_t>(it->second.type) != lc->type)
+      new_layers_.insert({g->node_id, lc->layer_id});  // new, or re-typed (an r6 host then drops its subscribers)
+  }
+  if (m.apply(g->command, error)) return true;
+  if (!pooled) return false;
+  pool_.spoil(g->node_id);  // more than a fresh node holds
+  return true;
+}
+
+Answer VerseImplementation::absorb_arrived(const std::string& what) {
+  verse::WireCommand w;
+  for (int i = 0; i < 100000 && observer_->receive(&w, 0).ok(); ++i) {
+    std::string error;
+    if (!absorb(w, &error)) return failed(CallStatus::ProtocolError, what + ": " + error);
+  }
+  return {};
+}
+
+Answer VerseImplementation::observer_round_trip(std::uint32_t node, Clock::time_point deadline,
+                                                const std::string& what) {
+  std::vector<verse::WireCommand> seen;
+  ++round_trips_;
+  const verse::Status st = observer_->barrier(node, seconds_left(deadline), &seen);
+  for (const auto& w : seen) {
+    std::string error;
+    if (!absorb(w, &error)) return failed(CallStatus::ProtocolError, what + ": " + error);
+  }
+  if (st.ok()) return absorb_arrived(what);
+  if (st.code == verse::Status::Code::Timeout)
+    return failed(CallStatus::Timeout, what + ": the host did not echo the observer's round-trip node_name_set "
+                                              "within " + limit_text(options_.timeout_seconds, "--timeout"));
+  return failed(call_status_of(st), what + ": " + st.to_string());
+}
+
+Answer VerseImplementation::subscribe_new_layers(std::uint32_t node, Clock::time_point deadline,
+                                                 const std::string& what) {
+  for (int round = 0; !new_layers_.empty(); ++round) {
+    if (round == 8)
+      return failed(CallStatus::ProtocolError, what + ": the host kept announcing new layers after 8 rounds");
+    for (const auto& [n, layer] : new_layers_)
+      if (const verse::Status st = observer_->subscribe_layer(n, layer, RealFormat::Real64); !st.ok())
+        return failed(call_status_of(st), what + ": subscribing to layer " + std::to_string(layer) + " of node " +
+                                              std::to_string(n) + ": " + st.to_string());
+    new_layers_.clear();
+    if (Answer a = observer_round_trip(node, deadline, what); a.status != CallStatus::Ok) return a;
+  }
+  return {};
+}
+
 Answer VerseImplementation::settle(const std::string& what) {
   const auto deadline = Clock::now() + std::chrono::duration_cast<Clock::duration>(
                                            std::chrono::duration<double>(options_.timeout_seconds));
-  std::set<std::uint16_t> to_subscribe;
-  // One command from the host: geometry for our node goes to the mirror.
-  auto take = [&](const verse::WireCommand& w, std::string* error) {
-    const auto* g = std::get_if<verse::wire::Geometry>(&w);
-    if (!g || g->node_id != node_) return true;  // another node, or not geometry
-    if (const auto* lc = std::get_if<cmd::LayerCreate>(&g->command); lc && !lc->name.empty()) {
-      const auto it = mirror_.layers().find(lc->layer_id);
-      if (it == mirror_.layers().end() || static_cast<std::uint8_t>(it->second.type) != lc->type)
-        to_subscribe.insert(lc->layer_id);  // new, or re-typed (an r6 host then drops its subscribers)
-    }
-    return mirror_.apply(g->command, error);
+  new_layers_.clear();
+  const auto lost = [&](const std::string& why) {
+    Answer a = failed(CallStatus::Crash, what + ": " + why +
+                                             ": it dropped the session (r6 does so silently when the rest of a "
+                                             "packet it could not decode reads as connect_terminate)");
+    driver_lost_ = true;
+    return a;
   };
-
   // The round trip: the driver's name change after its command(s).
   const std::string name = "vgc-barrier-" + std::to_string(++barrier_count_);
   verse::wire::NodeNameSet mark;
@@ -309,24 +465,41 @@ Answer VerseImplementation::settle(const std::string& what) {
   mark.name = name;
   if (const verse::Status st = driver_->send(mark); !st.ok())
     return failed(call_status_of(st), what + ": sending the round-trip node_name_set: " + st.to_string());
+  ++round_trips_;
+  const auto is_echo = [&](const verse::WireCommand& w) {
+    const auto* n = std::get_if<verse::wire::NodeNameSet>(&w);
+    return n && n->node_id == node_ && n->name == name;
+  };
   for (;;) {
     if (cancel_signal())  // a Timeout to the runner, which drops what a cancel cut short
       return failed(CallStatus::Timeout, what + ": not answered: the run was cancelled by " +
                                              std::string(cancel_signal_name()));
+    if (driver_dropped_) {
+      // r6 runs what it had received of a session before it forgets it, so
+      // the echo still comes when the barrier came in with the command that
+      // ended the session (the command is then judged, as before the
+      // drop could be seen). The observer's own round trip tells.
+      std::vector<verse::WireCommand> seen;
+      ++round_trips_;
+      const verse::Status st = observer_->barrier(node_, seconds_left(deadline), &seen);
+      bool echoed = false;
+      for (const auto& w : seen) {
+        std::string error;
+        if (is_echo(w)) echoed = true;
+        else if (!absorb(w, &error)) return failed(CallStatus::ProtocolError, what + ": " + error);
+      }
+      if (!st.ok() && !echoed) return failed(call_status_of(st), what + ": " + st.to_string());
+      if (!echoed) return lost("the host destroyed the driver's avatar node");
+      break;
+    }
     verse::WireCommand w;
     const double left = seconds_left(deadline);
     const verse::Status st = observer_->receive(&w, std::min(left, kSessionCheckSeconds));
     if (st.code == verse::Status::Code::Timeout && left > kSessionCheckSeconds) {
       drain_driver();  // reads the host's acks of the driver's packets
-      if (driver_->unacknowledged_for() > kDeadSessionSeconds) {
-        Answer lost = failed(CallStatus::Crash,
-                      what + ": the host has not acknowledged the driver's packets for " +
-                          limit_text(kDeadSessionSeconds, "vgc's limit for an unacknowledged packet") +
-                          ": it dropped the session (r6 does so silently when the rest of a packet it could not "
-                          "decode reads as connect_terminate)");
-        driver_lost_ = true;
-        return lost;
-      }
+      if (driver_->unacknowledged_for() > kDeadSessionSeconds)
+        return lost("the host has not acknowledged the driver's packets for " +
+                    limit_text(kDeadSessionSeconds, "vgc's limit for an unacknowledged packet"));
       continue;
     }
     if (!st.ok()) {
@@ -336,33 +509,13 @@ Answer VerseImplementation::settle(const std::string& what) {
                       "within " + limit_text(options_.timeout_seconds, "--timeout"));
       return failed(call_status_of(st), what + ": " + st.to_string());
     }
-    if (const auto* n = std::get_if<verse::wire::NodeNameSet>(&w); n && n->node_id == node_ && n->name == name) break;
+    if (is_echo(w)) break;
     std::string error;
-    if (!take(w, &error)) return failed(CallStatus::ProtocolError, what + ": " + error);
+    if (!absorb(w, &error)) return failed(CallStatus::ProtocolError, what + ": " + error);
   }
+  if (Answer a = absorb_arrived(what); a.status != CallStatus::Ok) return a;
   // Layers announced: the observer subscribes and waits for their contents.
-  for (int round = 0; !to_subscribe.empty(); ++round) {
-    if (round == 8)
-      return failed(CallStatus::ProtocolError, what + ": the host kept announcing new layers after 8 rounds");
-    for (std::uint16_t id : to_subscribe)
-      if (const verse::Status st = observer_->subscribe_layer(node_, id, RealFormat::Real64); !st.ok())
-        return failed(call_status_of(st), what + ": subscribing to layer " + std::to_string(id) + ": " +
-                                              st.to_string());
-    to_subscribe.clear();
-    std::vector<verse::WireCommand> seen;
-    const verse::Status st = observer_->barrier(node_, seconds_left(deadline), &seen);
-    for (const auto& w : seen) {
-      std::string error;
-      if (!take(w, &error)) return failed(CallStatus::ProtocolError, what + ": " + error);
-    }
-    if (!st.ok()) {
-      if (st.code == verse::Status::Code::Timeout)
-        return failed(CallStatus::Timeout, what + ": the host did not echo the observer's round-trip node_name_set "
-                                                  "after its layer subscriptions within " +
-                                               limit_text(options_.timeout_seconds, "--timeout"));
-      return failed(call_status_of(st), what + ": " + st.to_string());
-    }
-  }
+  if (Answer a = subscribe_new_layers(node_, deadline, what); a.status != CallStatus::Ok) return a;
   drain_driver();
   return {};
 }
@@ -388,6 +541,7 @@ Answer VerseImplementation::apply(const Command& c) {
   }
   if (const verse::Status st = driver_->send_geometry(node_, c); !st.ok())
     return failed(call_status_of(st), "sending `" + print_command(c) + "`: " + st.to_string());
+  if (may_desynchronise_r6(c)) desync_risk_ = true;
   Answer a = settle(what);
   if (a.status != CallStatus::Ok) return a;
   a.verdict_reported = false;  // `done`: a host acknowledges nothing

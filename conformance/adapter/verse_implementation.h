@@ -28,23 +28,40 @@
 // answering is a Timeout, bytes that do not parse a ProtocolError, a host
 // that ends the session a Crash, and the next reset() logs in again.
 //
-// reset(): the driver destroys the current geometry node and creates a new
-// one (node_create), the observer subscribes to it; the fresh node is
-// whatever the host then sends.
+// reset(): the driver destroys the current geometry node and the next one
+// is taken from a pool of fresh nodes made ahead, in batches
+// (verse_node_pool.h: the driver's node_creates, the observer's
+// subscriptions, three round trips for a batch instead of three per node);
+// a fresh node is whatever the host sent for it.
+//
+// Load: every round trip waits for the host to be scheduled (r6 polls its
+// socket in a loop), so on a loaded machine the run's time is its number of
+// round trips (docs/verse_wire.md "Where the time of a wire run goes"):
+// besides the pool, the observer follows the node index so that a driver
+// session the host ended (its avatar node destroyed) is seen at once
+// rather than after a second without acknowledgements, and a login while
+// the other session is up makes that one wake the host (r6 otherwise
+// answers a login only on its next one-second tick).
 #pragma once
 
+#include <chrono>
 #include <cstdint>
 #include <memory>
+#include <set>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "implementation.h"
 #include "verse_node_mirror.h"
+#include "verse_node_pool.h"
 #include "wire_commands.h"
 
 namespace vgc {
 
 namespace verse {
 class ClientSession;
+struct ClientOptions;
 }
 
 // Parses "HOST", "HOST:PORT", "NAME@HOST[:PORT]" (the part after "verse:").
@@ -80,14 +97,48 @@ class VerseImplementation final : public Implementation {
   // which sends its own traffic to the same node from a session of its own.
   std::uint32_t node_id() const { return node_; }
   verse::BoneForm bone_form() const { return bone_form_; }
+  // How many times the adapter waited for the host to answer (a round trip
+  // through it: a node_create, a barrier): what a wire run's time is made
+  // of on a loaded machine (docs/verse_wire.md "Where the time of a wire
+  // run goes"). For tests and profiles.
+  std::uint64_t round_trips() const { return round_trips_; }
 
  private:
   Answer connect();
+  // The sessions' options; `nudger` (may be null) is the other session,
+  // made to wake the host while this one awaits its login's accept.
+  verse::ClientOptions session_options(verse::ClientSession* nudger) const;
+  // Destroys the current node (if any) and takes a fresh one from the pool,
+  // refilling it first when it is empty.
   Answer make_node(double create_timeout_s = 0);  // 0: the call time-out
-  // Sends node_name_set(node, "vgc-barrier-<n>") on the driver and applies
-  // what the observer receives until that echo; then, while the host
-  // announced new layers, subscribes the observer to them and waits for the
-  // observer's own barrier (their contents come before its echo).
+  // A batch of nodes: the driver's node_creates, the observer's
+  // subscriptions to them and to their layers (verse_node_pool.h).
+  Answer refill_pool(double create_timeout_s);
+  // Destroys these nodes (given back by the pool), without waiting.
+  Answer destroy_nodes(const std::vector<std::uint32_t>& ids);
+  // One command the observer received: geometry for the current node goes
+  // to mirror_, for a pool node to its mirror; the node index to the pool
+  // and to the watch on the driver's avatar. New layers of the current node
+  // and of unsettled pool nodes go to new_layers_. false with *error when
+  // the current node's mirror refuses it (a protocol error).
+  bool absorb(const verse::WireCommand& w, std::string* error);
+  // Absorbs what the observer has already received: the rest of the
+  // datagram that held a round trip's echo, and any datagram read with it.
+  // r6 sends a subscriber the commands of one pass of its loop in the
+  // order of their addresses' hash slots, not in the order it ran them
+  // (docs/verse_wire.md section 6), so the echo of a round trip can come
+  // before, in the same datagram, what the commands before it changed.
+  Answer absorb_arrived(const std::string& what);
+  // The observer's own round trip on `node` (subscribed): what came before
+  // its echo is absorbed.
+  Answer observer_round_trip(std::uint32_t node, std::chrono::steady_clock::time_point deadline,
+                             const std::string& what);
+  // While new_layers_ is not empty: the observer subscribes to them and
+  // makes a round trip on `node` (their contents come before its echo).
+  Answer subscribe_new_layers(std::uint32_t node, std::chrono::steady_clock::time_point deadline,
+                              const std::string& what);
+  // Sends node_name_set(node, "vgc-barrier-<n>") on the driver and absorbs
+  // what the observer receives until that echo; then subscribe_new_layers.
   Answer settle(const std::string& what);
   Answer failed(CallStatus s, const std::string& detail);
   // --verse-bone-form auto: on the fresh node, a bone_create in the spec's
@@ -107,9 +158,20 @@ class VerseImplementation final : public Implementation {
   bool broken_ = true;  // reset() must log in again
   bool driver_lost_ = false;  // only the driver's session is gone: connect() keeps the observer
   std::uint64_t barrier_count_ = 0;
+  std::uint64_t round_trips_ = 0;
   bool ever_connected_ = false;
   std::string silent_since_;  // set when a host that answered before no longer answers a login
   VerseNodeMirror mirror_;
+  VerseNodePool pool_;
+  std::set<std::pair<std::uint32_t, std::uint16_t>> new_layers_;  // (node, layer) to subscribe to
+  // The driver's avatar node, as the observer reads the object index: a
+  // node_destroy of it read after its node_create means the host ended the
+  // driver's session.
+  std::uint32_t driver_avatar_ = 0;
+  bool driver_announced_ = false, driver_dropped_ = false;
+  // A command sent since the last reset may have made r6 end the driver's
+  // session (may_desynchronise_r6): the next reset checks the session.
+  bool desync_risk_ = false;
   verse::BoneForm bone_form_ = verse::BoneForm::Spec;
   bool bone_form_known_ = false;  // given as an option, or probed
   std::string bone_form_why_;     // for identity(): how the form was chosen

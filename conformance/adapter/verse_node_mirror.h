@@ -37,6 +37,9 @@ class VerseNodeMirror {
  public:
   explicit VerseNodeMirror(std::size_t max_cells = std::size_t{1} << 22) : max_cells_(max_cells) {}
 
+  // The bound on what it keeps (a node handed out by VerseNodePool, whose
+  // mirrors keep little, gets the full bound).
+  void set_max_cells(std::size_t max_cells) { max_cells_ = max_cells; }
   // Forgets everything: no layers (not even the base layers: a host
   // announces them like any other), smooth creases, no bones.
   void clear();

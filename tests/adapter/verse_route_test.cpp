@@ -30,6 +30,7 @@
 
 #include "adapter_test_util.h"
 #include "command_gen.h"
+#include "document_diff.h"
 #include "snapshot.h"
 #include "wire_commands.h"
 #include "implementation.h"
@@ -217,6 +218,37 @@ TEST(VerseRoute, AHostLikeR6IsCertifiedToTheEndInItsBoneForm) {
     if (co.clause->id == "BONE-CREATE-1" || co.clause->id == "BONE-DESTROY-1" || co.clause->id == "BONE-NAME-1")
       EXPECT_EQ(co.status, "pass") << co.clause->id << ": " << (co.finding ? co.finding->message : co.note);
   }
+}
+
+// A certification resets the node before every case (thousands of times
+// per run), and on a loaded machine every round trip through the host costs
+// milliseconds (docs/verse_wire.md "Where the time of a wire run goes"): a
+// reset takes a node made ahead, in a batch, instead of making one and
+// waiting three times for the host. Each reset still gives a fresh node.
+TEST(VerseRoute, AResetCostsLessThanOneRoundTripOnAverage) {
+  ServedHost host({"--like-r6"}, {});
+  ASSERT_NE(host.port(), 0) << "no port in \"" << host.line() << "\"";
+  auto sut = open_verse(host);
+  ASSERT_NE(sut, nullptr);
+  auto* verse = dynamic_cast<VerseImplementation*>(sut.get());
+  ASSERT_NE(verse, nullptr);
+  const std::string fresh = print_snapshot(Node{});
+  const Command layer = cmd::LayerCreate{2, "w", static_cast<std::uint8_t>(LayerType::VertexUint32), 0, 0};
+  const Command vertex = cmd::VertexSetXyzReal64{0, 3, 1, 2, 3};
+  const std::uint64_t before = verse->round_trips();
+  constexpr int kResets = 64;
+  for (int i = 0; i < kResets; ++i) {
+    ASSERT_EQ(sut->reset().status, CallStatus::Ok) << "reset " << i;
+    const Document d = sut->snapshot();
+    ASSERT_EQ(d.status, CallStatus::Ok);
+    EXPECT_EQ(without_subscriptions(d.text), without_subscriptions(fresh)) << "reset " << i << " is not a fresh node";
+    ASSERT_EQ(sut->apply(i % 2 ? layer : vertex).status, CallStatus::Ok);  // each node is used before the next reset
+  }
+  const std::uint64_t per_reset_and_command = verse->round_trips() - before;
+  // One round trip per command (its barrier; the layer_create two: the
+  // observer subscribes to the new layer), less than one per reset.
+  EXPECT_LT(per_reset_and_command, static_cast<std::uint64_t>(kResets + kResets / 2 + kResets))
+      << per_reset_and_command << " round trips for " << kResets << " resets and commands";
 }
 
 TEST(VerseRoute, ASeededFaultInTheServedNodeIsNamedWithItsClause) {

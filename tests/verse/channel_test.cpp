@@ -3,7 +3,10 @@
 // back with no network, so every loss is chosen.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "wire_endpoint.h"
+#include "wire_packet.h"
 #include "wire_login.h"
 
 namespace vgc::verse {
@@ -23,6 +26,51 @@ std::vector<WireCommand> deliver(Channel& to, const std::vector<std::string>& da
 }
 
 std::uint32_t node_of(const WireCommand& c) { return std::get<wire::NodeSubscribe>(c).node_id; }
+
+// The acks a datagram carries, read as its receiver reads them.
+std::vector<std::uint32_t> acks_in(std::string datagram, const DataKey& key) {
+  xor_packet(&datagram, key);
+  Packet p;
+  EXPECT_TRUE(parse_packet(reinterpret_cast<const std::uint8_t*>(datagram.data()), datagram.size(), &p).ok());
+  std::vector<std::uint32_t> acks;
+  for (const WireCommand& c : p.commands)
+    if (const auto* a = std::get_if<wire::PacketAck>(&c)) acks.push_back(a->packet_id);
+  return acks;
+}
+
+// r6 keeps every packet it sent, ack-only ones included, until it is
+// acknowledged, and walks all it keeps for every ack it receives
+// (v_network_out_que.c callback_send_packet_ack): with its ack-only packets
+// never acknowledged, r6 spent 82% of its CPU there in a wire certify and
+// slowed down as the run went on (docs/verse_wire.md section 5). An
+// ack-only packet is acknowledged in the next packet sent anyway, never in
+// one of its own (that would start an endless exchange of acks).
+TEST(VerseChannel, AnAckOnlyPacketIsAcknowledgedInTheNextPacketSentAnyway) {
+  const DataKey key = make_data_key();
+  Channel a(key, 10.0), b(key, 10.0);
+  const auto t0 = Clock::now();
+  ASSERT_TRUE(a.queue(cmd_bytes(1)).ok());
+  deliver(b, a.take_datagrams(t0), t0);
+  const std::vector<std::string> ack_only = b.take_datagrams(t0);  // b's ack of a's packet: ack-only
+  ASSERT_EQ(ack_only.size(), 1u);
+  const std::uint32_t ack_only_id = kFirstDataPacketId;  // b's first packet
+  deliver(a, ack_only, t0);
+  EXPECT_TRUE(a.take_datagrams(t0).empty()) << "an ack-only packet is not acknowledged in a packet of its own";
+  ASSERT_TRUE(a.queue(cmd_bytes(2)).ok());
+  const std::vector<std::string> next = a.take_datagrams(t0);
+  ASSERT_EQ(next.size(), 1u);
+  const std::vector<std::uint32_t> acks = acks_in(next[0], key);
+  EXPECT_NE(std::find(acks.begin(), acks.end(), ack_only_id), acks.end())
+      << "the next packet a sends does not acknowledge b's ack-only packet " << ack_only_id;
+  // Once acknowledged, it is not acknowledged again.
+  deliver(b, next, t0);
+  deliver(a, b.take_datagrams(t0), t0);
+  ASSERT_TRUE(a.queue(cmd_bytes(3)).ok());
+  const std::vector<std::string> later = a.take_datagrams(t0);
+  ASSERT_EQ(later.size(), 1u);
+  const std::vector<std::uint32_t> later_acks = acks_in(later[0], key);
+  EXPECT_EQ(std::find(later_acks.begin(), later_acks.end(), ack_only_id), later_acks.end());
+}
 
 TEST(VerseChannel, AckedPacketsAreForgotten) {
   const DataKey key = make_data_key();

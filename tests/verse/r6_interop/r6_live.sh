@@ -10,6 +10,10 @@
 #       the same certify through the exec route: vgc_r6_exec in front of
 #       R6_DIR/verse (r6's own codec); passes when the run ends
 #       not-conformant with the MUST deviations of r6's geometry code named.
+#   r6_live.sh session R6_DIR VGC ADAPTER_TESTS
+#       starts R6_DIR/verse and runs the adapter tests that need it
+#       (VerseR6Session.*, tests/adapter/verse_r6_session_test.cpp) with
+#       VGC_R6_PORT naming its port.
 #   r6_live.sh client R6_DIR VGC VGC_R6_CLIENT
 #       starts `vgc serve --verse` and runs our client on r6's library
 #       (vgc_r6_client check): every geometry command, read back as the spec says.
@@ -58,6 +62,13 @@ for b in bad:
 sys.exit(1 if bad else 0)
 PY
   ;;
+session)
+  port=$(free_port)
+  (cd "$r6" && exec ./verse -port="$port") > "$work/verse.log" 2>&1 &
+  server=$!
+  sleep 0.5
+  VGC_R6_PORT=$port timeout 120 "$client" --gtest_filter='VerseR6Session.*'
+  ;;
 client)
   "$vgc" serve --verse 127.0.0.1:0 > "$work/serve.out" 2> "$work/serve.log" &
   server=$!
@@ -70,7 +81,7 @@ client)
   exit $rc
   ;;
 *)
-  echo "usage: r6_live.sh certify|exec|client R6_DIR VGC VGC_R6_CLIENT|VGC_R6_EXEC" >&2
+  echo "usage: r6_live.sh certify|exec|session|client R6_DIR VGC VGC_R6_CLIENT|VGC_R6_EXEC|ADAPTER_TESTS" >&2
   exit 2
   ;;
 esac
