@@ -277,6 +277,12 @@ int run_mesh(const Options& o) {
     say("  {:<11} {:<18} {:<20} {:>6.2f} s  {}\n", c.status, c.clause, what, c.seconds,
         detail.size() > 300 ? detail.substr(0, 300) + "..." : detail);
   }
+  // Each finding's replay line, as certify prints it for the catalog (the
+  // file by its absolute path: it works from any directory).
+  for (const auto& co : run.clauses)
+    if (co.finding)
+      say("           replay {}: {}\n", co.clause->id,
+          replay_command((std::filesystem::path(ctx.run_dir) / counterexample_path(co)).string(), ctx));
   const bool checks_judged = tally.count("pass") || tally.count("fail");
   std::string counts;
   for (const auto& [status, n] : tally) counts += fmt::format("{}{} {}", counts.empty() ? "" : ", ", n, status);

@@ -66,6 +66,12 @@ grep -q '"id": "mesh.subdivision.level1"' "$run/report.json" || fail "skew: repo
 grep -q "^The mesh's program, as vgc import writes it (a user's mesh is judged whole, not shrunk) (25 commands, from a fresh node; found by \`mesh.subdivision.level1\`):" \
   "$run/summary.md" || fail "skew: summary.md does not say the program is the mesh's own"
 grep -q 'Shrunk counterexample' "$run/summary.md" "$run/report.html" && fail "skew: the mesh's program is called shrunk"
+# The console prints the finding's replay line (issue 31 item 5), runnable
+# as printed from any directory: it shows the finding again (exit 1).
+line=$(sed -n 's/^ *replay SUBD-CATMARK-1: //p' skew.out)
+[ -n "$line" ] || { cat skew.out >&2; fail "skew: no replay line on the console"; }
+(cd / && eval "$line" >"$OLDPWD/skew.replay" 2>&1); rc=$?
+[ $rc = 1 ] && grep -q SUBD-CATMARK-1 skew.replay || { cat skew.replay >&2; fail "skew: the printed replay line did not show the finding from / (exit $rc)"; }
 
 # A right answer later than vgc's --timeout (3 s: a loaded machine starts the
 # proxy in over 1 s): a timeout naming what to raise,
