@@ -10,12 +10,13 @@ vertex_set_xyz_real32/64 LAYER ID ..., vertex_set_uint32/real32/real64
 LAYER ID ..., vertex_delete ID, and the four corners of
 polygon_set_corner_uint32 1 POLYGON V0 V1 V2 V3. 4294967295 (0xFFFFFFFF) is
 no id: "pick one" for a vertex, "unused" for a corner."""
-import subprocess
 import sys
 import time
 
+from reference_child import ReferenceChild
+
 vgc, floor = sys.argv[1], int(sys.argv[2])
-child = subprocess.Popen([vgc, "serve"] + sys.argv[3:], stdin=subprocess.PIPE, stdout=subprocess.PIPE, text=True, bufsize=1)
+child = ReferenceChild(vgc, sys.argv[3:])
 
 
 def vertex_ids(words):
@@ -40,18 +41,6 @@ for line in sys.stdin:
     if not line.startswith("?") and any(v >= floor for v in vertex_ids(line.split())):
         while True:
             time.sleep(60)
-    child.stdin.write(line)
-    child.stdin.flush()
-    answer = child.stdout.readline()
-    if not answer:
-        sys.exit(3)
-    sys.stdout.write(answer)
-    single = line.strip() in ("?hello", "?reset", "?quit", "?digest") or not line.startswith("?")
-    while not single and not answer.startswith("error") and answer.strip() != "end":
-        answer = child.stdout.readline()
-        if not answer:
-            sys.exit(3)
-        sys.stdout.write(answer)
-    sys.stdout.flush()
+    child.relay(line)
     if line.strip() == "?quit":
         break

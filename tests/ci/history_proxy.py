@@ -21,15 +21,16 @@ start), so a test can see whether they outlive the suite. In hang mode it
 creates the file $HISTORY_PROXY_HANGING, when that is set, as it starts to
 hang."""
 import os
-import subprocess
 import sys
 import time
 
+from reference_child import ReferenceChild
+
 vgc, mode, limit = sys.argv[1], sys.argv[2], int(sys.argv[3])
-child = subprocess.Popen([vgc, "serve"] + sys.argv[4:], stdin=subprocess.PIPE, stdout=subprocess.PIPE, text=True, bufsize=1)
+child = ReferenceChild(vgc, sys.argv[4:])
 if os.environ.get("HISTORY_PROXY_PIDS"):
     with open(os.environ["HISTORY_PROXY_PIDS"], "a") as f:
-        f.write(f"proxy {os.getpid()} child {child.pid}\n")
+        f.write(f"proxy {os.getpid()} child {child.process.pid}\n")
 count = 0
 for line in sys.stdin:
     if not line.startswith("?"):
@@ -49,20 +50,6 @@ for line in sys.stdin:
                 print("rejected " + reason, flush=True)
                 continue
         count += 1
-    child.stdin.write(line)
-    child.stdin.flush()
-    answer = child.stdout.readline()
-    if not answer:
-        sys.exit(3)
-    sys.stdout.write(answer)
-    # A document (?snapshot, ?derived, a capability request) runs to "end";
-    # ?digest is one line (docs/adapters.md).
-    single = line.strip() in ("?hello", "?reset", "?quit", "?digest") or not line.startswith("?")
-    while not single and not answer.startswith("error") and answer.strip() != "end":
-        answer = child.stdout.readline()
-        if not answer:
-            sys.exit(3)
-        sys.stdout.write(answer)
-    sys.stdout.flush()
+    child.relay(line)
     if line.strip() == "?quit":
         break

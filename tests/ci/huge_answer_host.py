@@ -10,11 +10,12 @@ line, whatever the command. A fresh start counts from 0 again.
 vgc must keep what it copies of such an answer bounded (bounded_text.h):
 tests/ci/bounded_copies_test.sh checks the run directory's size and vgc's
 memory."""
-import subprocess
 import sys
 
+from reference_child import ReferenceChild
+
 vgc, limit, size = sys.argv[1], int(sys.argv[2]), int(sys.argv[3])
-child = subprocess.Popen([vgc, "serve"], stdin=subprocess.PIPE, stdout=subprocess.PIPE, text=True, bufsize=1)
+child = ReferenceChild(vgc)
 huge = "rejected " + "A" * size + "\n"
 count = 0
 out = sys.stdout
@@ -25,20 +26,6 @@ for line in sys.stdin:
             out.flush()
             continue
         count += 1
-    child.stdin.write(line)
-    child.stdin.flush()
-    answer = child.stdout.readline()
-    if not answer:
-        sys.exit(3)
-    out.write(answer)
-    # A document (?snapshot, ?derived, a capability request) runs to "end";
-    # ?digest is one line (docs/adapters.md).
-    single = line.strip() in ("?hello", "?reset", "?quit", "?digest") or not line.startswith("?")
-    while not single and not answer.startswith("error") and answer.strip() != "end":
-        answer = child.stdout.readline()
-        if not answer:
-            sys.exit(3)
-        out.write(answer)
-    out.flush()
+    child.relay(line, out)
     if line.strip() == "?quit":
         break
