@@ -515,6 +515,9 @@ struct Session {
 OpenOptions open_options(const WireFuzzOptions& o) {
   OpenOptions op;
   op.timeout_seconds = o.timeout_s;
+  // A login is one of the calls --timeout bounds here (wire_fuzz.h): a host
+  // that died is found within it, not after certify's start limit.
+  op.start_timeout_seconds = o.timeout_s;
   if (!o.verse_bone_form.empty()) op.verse_bone_form = o.verse_bone_form;
   return op;
 }
