@@ -35,9 +35,11 @@ struct PropertySpec {
   // the property runs a fiftieth of the cases (at least 2).
   bool at_scale = false;
   // What a default run of it costs, in seconds of the reference behind
-  // exec: on this project's 2-core machine (docs/ci.md "Shards"; measured,
-  // median of 3): how `--shard` balances the shards (runner.cpp
-  // property_shard). Only the ratios matter.
+  // exec: on this project's 2-core machine (one default run at seed 1, at
+  // load 10-17, rounded): how `--shard` balances the shards (runner.cpp
+  // assign_shards; docs/ci.md "Shards"). Only the ratios matter; the
+  // balance itself is checked by judged commands per shard
+  // (tests/ci/verse_shards_test.sh).
   double cost = 1.0;
 };
 
