@@ -95,6 +95,11 @@ struct Program {
   // `vgc replay` then blames what it shows as certify did: on STABLE-1
   // (ACCEPT-1 for a protocol error), not on the command it came on.
   std::string history_kind;
+  // Set when the program is a user's mesh as `vgc certify --mesh` judged it
+  // ("#! mesh"): `vgc replay` then judges it as certify did (mesh_certification.h,
+  // replay_mesh_program): a verdict per command and the snapshot once at the
+  // end, no ?digest, the answer limits scaled with the mesh.
+  bool mesh = false;
 };
 
 // One deviation a property showed: the finding and its counterexample.

@@ -458,7 +458,7 @@ struct Host::Impl {
       flush(s, now);
       const bool stuck = !s.connected || (s.channel && !s.channel->all_acknowledged());
       if (stuck && now - s.last_heard > limit) {
-        log("session " + s.peer.to_string() + " dropped: silent for " + std::to_string(options.session_timeout_s) + " s");
+        log("session " + s.peer.to_string() + " dropped: silent for " + seconds_text(options.session_timeout_s));
         it = sessions.erase(it);
       } else {
         ++it;
