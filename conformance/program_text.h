@@ -30,7 +30,7 @@
 #include <vector>
 
 #include "command_text.h"
-#include "runner.h"
+#include "program.h"
 
 namespace vgc {
 
