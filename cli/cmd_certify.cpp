@@ -271,10 +271,10 @@ int run_mesh(const Options& o) {
   }
   std::map<std::string, int> tally;
   for (const MeshCheckOutcome& c : r.checks) {
-    ++tally[c.status];
+    ++tally[mesh_check_status_name(c.status)];
     const std::string what = c.capability + (c.level ? fmt::format(" level {}", c.level) : "");
     const std::string detail = c.finding ? c.finding->message : c.note;
-    say("  {:<11} {:<18} {:<20} {:>6.2f} s  {}\n", c.status, c.clause, what, c.seconds,
+    say("  {:<11} {:<18} {:<20} {:>6.2f} s  {}\n", mesh_check_status_name(c.status), c.clause, what, c.seconds,
         detail.size() > 300 ? detail.substr(0, 300) + "..." : detail);
   }
   // Each finding's replay line, as certify prints it for the catalog (the
@@ -287,22 +287,20 @@ int run_mesh(const Options& o) {
   std::string counts;
   for (const auto& [status, n] : tally) counts += fmt::format("{}{} {}", counts.empty() ? "" : ", ", n, status);
   if (!r.build_failure) counts += std::string(counts.empty() ? "" : "; ") + "stored as the reference stores it";
-  const char* verdict_name = r.any_failed()                            ? "not conformant"
-                             : r.any_incomplete() || !r.any_judged() ? "incomplete"
-                                                                     : "conformant";
+  // The verdict is the report's (verdict.h, from the clauses' statuses).
+  const char* verdict_name = verdict.name == "not-conformant" ? "not conformant"
+                             : verdict.name == "incomplete"  ? "incomplete"
+                                                             : "conformant";
   say("{}: {} on {} ({})\n", o.impl, verdict_name, one_line_text(o.mesh), counts.empty() ? "no check run" : counts);
-  if (!r.any_failed() && !checks_judged)
+  if (verdict.new_failures.empty() && !checks_judged)
     say("  only the storage of the mesh was judged: the implementation claims none of manifold, subdivision, "
         "normals, loop (docs/adapters.md section 5)\n");
   say("report: {}/summary.md\n", ctx.run_dir);
   if (!r.stopped_why.empty()) say("  stopped: {}; the verdict is incomplete\n", r.stopped_why);
-  else if (r.any_incomplete())
+  else if (verdict.name == "incomplete")
     say("  a check stopped at a limit of vgc's (time or answer size), not at anything the implementation did: "
         "give --timeout more seconds (it scales with the mesh already) and run again\n");
-  const int code = cancel_signal()                         ? 128 + cancel_signal()
-                   : r.any_failed()                        ? 1
-                   : r.any_incomplete() || !r.any_judged() ? 2
-                                                           : 0;
+  const int code = cancel_signal() ? 128 + cancel_signal() : verdict.exit_code;
   if (r.abandoned) {  // a check is still running on another thread: leave without unwinding through it
     std::fflush(nullptr);
     _exit(code);
@@ -319,7 +317,7 @@ void print_findings(const RunResult& result, const ReportContext& ctx, const Opt
     const char* tag = co.clause->level == ClauseLevel::Should ? "should"
                       : known                                  ? "known"
                       : !finding_gates(co, o.strict)           ? "profile"
-                                                               : co.status.c_str();
+                                                               : clause_status_name(co.status);
     say("  {:<8} {:<24} {}\n", tag, co.clause->id, co.finding->message);
     say("           replay: {}\n",
         replay_command((std::filesystem::path(ctx.run_dir) / counterexample_path(co)).string(), o.impl));
@@ -393,10 +391,10 @@ int run(const Options& o) {
     std::string found;
     for (const auto& f : p.findings) found += (found.empty() ? "" : ", ") + f.finding.clause;
     say(stderr, "[{}/{}] {:<20} {:<8} {}/{} cases ({} judged, {} set aside{}){}  {:.1f} s\n",
-               at.property_index + 1, at.property_count, p.id, p.status, p.cases, p.cases_target, p.judged,
+               at.property_index + 1, at.property_count, p.id, property_status_name(p.status), p.cases, p.cases_target, p.judged,
                p.set_aside, p.not_judged ? fmt::format(", {} not judged", p.not_judged) : "",
                found.empty() ? "" : "; found " + found, at.elapsed_seconds);
-    if (!p.note.empty() && p.status != "pass") say(stderr, "      {}\n", p.note);
+    if (!p.note.empty() && p.status != PropertyStatus::Pass) say(stderr, "      {}\n", p.note);
   };
   register_oracle_checks();  // the oracles judge the optional capabilities
   line.update("asking the implementation for a fresh node", true);
@@ -427,9 +425,9 @@ int run(const Options& o) {
   for (const auto& id : verdict.stale_baseline)
     say("  stale    {:<24} in the baseline but no case diverged on it: remove it\n", id);
   for (const auto& p : result.properties)
-    if (p.status == "stopped") say("  stopped  {}: {}\n", p.id, p.note);
+    if (p.status == PropertyStatus::Stopped) say("  stopped  {}: {}\n", p.id, p.note);
   for (const auto& co : result.clauses)
-    if (co.status == "unchecked") say("  unchecked {:<23} {}\n", co.clause->id, co.note);
+    if (co.status == ClauseStatus::Unchecked) say("  unchecked {:<23} {}\n", co.clause->id, co.note);
   if (!verdict.profile_differences.empty() && !o.strict)
     say("  ({} profile difference(s) from the suite's reading of silent points: reported, not gating; "
                "--strict gates on them)\n",

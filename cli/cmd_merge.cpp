@@ -42,7 +42,7 @@ int run_merge(const MergeOptions& o) {
   for (const auto& co : m.run.clauses)  // the finding lines certify prints (CI annotations read them)
     if (co.finding && std::find(verdict.new_failures.begin(), verdict.new_failures.end(), co.clause->id) !=
                           verdict.new_failures.end())
-      say("  {:<8} {:<24} {}\n", co.status, co.clause->id, co.finding->message);
+      say("  {:<8} {:<24} {}\n", clause_status_name(co.status), co.clause->id, co.finding->message);
   for (const auto& id : verdict.unchecked) say("  unchecked {}\n", id);
   say("report: {}/summary.md\n", m.ctx.run_dir);
   return verdict.exit_code;

@@ -131,7 +131,7 @@ int run(const Options& o) {
   }
   ClauseOutcome co;
   co.clause = clause;
-  co.status = status;
+  co.status = clause_status_of(r.failure->status);
   co.finding = *r.failure;
   const bool gates = finding_gates(co, o.strict);
   const std::string shown = clause->level == ClauseLevel::Should ? status + " (SHOULD)"

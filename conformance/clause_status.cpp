@@ -31,41 +31,41 @@ bool declares(const PropertySpec& spec, std::string_view clause_id) {
 // The ladder's steps, each a named rule; the first that applies decides.
 std::optional<ClauseDecision> decided_by_finding(const ClauseEvidence& e) {
   if (!e.finding) return std::nullopt;
-  return ClauseDecision{finding_status_name(e.finding->status), ""};
+  return ClauseDecision{clause_status_of(e.finding->status), ""};
 }
 
 std::optional<ClauseDecision> decided_by_preflight(const ClauseEvidence& e) {
   if (!e.preflight) return std::nullopt;
-  return ClauseDecision{"unchecked", "not judged: the implementation could not show a fresh node (" +
+  return ClauseDecision{ClauseStatus::Unchecked, "not judged: the implementation could not show a fresh node (" +
                                          e.preflight->clause + ": " + e.preflight->message + ")"};
 }
 
 // The route alone decides: whatever the cases drew, on any shard.
 std::optional<ClauseDecision> decided_by_route(const ClauseEvidence& e) {
-  if (!e.route_limit.empty()) return ClauseDecision{"not-applicable", e.route_limit};
+  if (!e.route_limit.empty()) return ClauseDecision{ClauseStatus::NotApplicable, e.route_limit};
   if (e.declared_and_ran || e.skip != PropertySkip::NotOnRoute) return std::nullopt;
-  return ClauseDecision{"not-applicable", "not judgeable over " + e.route + ": every property that declares it "
+  return ClauseDecision{ClauseStatus::NotApplicable, "not judgeable over " + e.route + ": every property that declares it "
                                           "is one the route cannot run (" + e.skip_note + ")"};
 }
 
 std::optional<ClauseDecision> decided_by_skip(const ClauseEvidence& e) {
   if (e.declared_and_ran || e.skip == PropertySkip::None) return std::nullopt;
   switch (e.skip) {
-    case PropertySkip::NotClaimed: return ClauseDecision{"not-claimed", e.skip_note};
-    case PropertySkip::OtherShard: return ClauseDecision{"skipped", e.skip_note};
-    default: return ClauseDecision{"unchecked", "not judged: " + e.skip_note};
+    case PropertySkip::NotClaimed: return ClauseDecision{ClauseStatus::NotClaimed, e.skip_note};
+    case PropertySkip::OtherShard: return ClauseDecision{ClauseStatus::Skipped, e.skip_note};
+    default: return ClauseDecision{ClauseStatus::Unchecked, "not judged: " + e.skip_note};
   }
 }
 
 std::optional<ClauseDecision> decided_by_stop(const ClauseEvidence& e) {
   if (e.stopped_note.empty()) return std::nullopt;
-  return ClauseDecision{"unchecked", e.stopped_note};
+  return ClauseDecision{ClauseStatus::Unchecked, e.stopped_note};
 }
 
 // REASON-1 from an implementation that reports no verdicts.
 std::optional<ClauseDecision> decided_by_unreported_verdicts(const Clause& clause, const ClauseEvidence& e) {
   if (clause.id != "REASON-1" || e.exercised > 0 || e.unreported_verdicts == 0) return std::nullopt;
-  return ClauseDecision{"not-applicable", "the implementation reports no verdicts (it answered `done` to " +
+  return ClauseDecision{ClauseStatus::NotApplicable, "the implementation reports no verdicts (it answered `done` to " +
                                               std::to_string(e.unreported_verdicts) +
                                               " commands), so reason codes cannot be judged"};
 }
@@ -75,9 +75,9 @@ std::optional<ClauseDecision> decided_by_reach(const ClauseEvidence& e) {
   // A shard runs a share of every property's cases: that none of its share
   // reached a clause says nothing yet; the merged run decides.
   if (e.shard_part && e.declared_and_ran)
-    return ClauseDecision{"skipped", "no judged command of this shard's cases exercised it; `vgc merge` of the "
+    return ClauseDecision{ClauseStatus::Skipped, "no judged command of this shard's cases exercised it; `vgc merge` of the "
                                      "shards decides it from all of them"};
-  return ClauseDecision{"unchecked", e.declared_and_ran ? "0 judged commands exercised it"
+  return ClauseDecision{ClauseStatus::Unchecked, e.declared_and_ran ? "0 judged commands exercised it"
                                                         : "no property declares it and no judged command exercised it"};
 }
 
@@ -99,13 +99,13 @@ void gather_clause_evidence(const Clause& clause, const std::vector<PropertyOutc
   for (std::size_t i = 0; i < props.size() && i < outcomes.size(); ++i) {
     if (!declares(props[i], clause.id)) continue;
     const PropertyOutcome& po = outcomes[i];
-    if (po.status == "skipped") {
+    if (po.status == PropertyStatus::Skipped) {
       if (skip_strength(po.skip) > skip_strength(e->skip)) e->skip = po.skip, e->skip_note = po.note;
       continue;
     }
-    if (po.status == "stopped" && e->stopped_note.empty())
+    if (po.status == PropertyStatus::Stopped && e->stopped_note.empty())
       e->stopped_note = "its property " + po.id + " stopped: " + po.note;
-    e->declared_and_ran = e->declared_and_ran || po.status != "stopped" || po.cases > 0;
+    e->declared_and_ran = e->declared_and_ran || po.status != PropertyStatus::Stopped || po.cases > 0;
     properties->push_back(po.id);
   }
   // A property in another shard runs there: the clause is judged there, so
@@ -138,9 +138,9 @@ ClauseDecision decide_clause_status(const Clause& clause, const ClauseEvidence& 
   if (auto d = decided_by_unreported_verdicts(clause, e)) return *d;
   if (auto d = decided_by_reach(e)) return *d;
   if (e.derived_only > 0)
-    return {"pass", "judged on the snapshot; its derived part (" + std::to_string(e.derived_only) +
+    return {ClauseStatus::Pass, "judged on the snapshot; its derived part (" + std::to_string(e.derived_only) +
                         " commands) is not judgeable over " + e.route};
-  return {"pass", ""};
+  return {ClauseStatus::Pass, ""};
 }
 
 void summarize_run(RunResult* run) {
@@ -150,10 +150,10 @@ void summarize_run(RunResult* run) {
     if (co.finding && co.clause->level == ClauseLevel::Must) run->conformant = false;
     if (co.finding && co.finding->status != FindingStatus::Fail && co.clause->level != ClauseLevel::Should)
       run->conformant = false;  // a crash or a hang is never a reading of a silent point
-    if (co.status == "unchecked") run->complete = false;
+    if (co.status == ClauseStatus::Unchecked) run->complete = false;
   }
   for (const auto& po : run->properties)
-    if (po.status == "stopped") run->complete = false;
+    if (po.status == PropertyStatus::Stopped) run->complete = false;
   if (!run->cancelled_by.empty()) run->complete = false;
 }
 

@@ -17,9 +17,7 @@
 //   - decide_clause_status is a ladder of named steps, first match wins;
 //   - what the route cannot judge is decided from the route alone
 //     (route_limit_of), never from the cases.
-// Statuses (ClauseOutcome::status):
-//   pass, fail, crash, timeout, unchecked, not-claimed, not-applicable,
-//   skipped.
+// Statuses: ClauseStatus (run_result.h).
 #pragma once
 
 #include <optional>
@@ -51,7 +49,7 @@ struct ClauseEvidence {
 };
 
 struct ClauseDecision {
-  std::string status;  // empty: not selected and nothing found (the clause is left out)
+  std::optional<ClauseStatus> status;  // empty: not selected and nothing found (the clause is left out)
   std::string note;
 };
 

@@ -13,6 +13,7 @@
 #include "cancel.h"
 #include "capability.h"
 #include "clause.h"
+#include "clause_status.h"
 #include "command_text.h"
 #include "document_diff.h"
 #include "node.h"
@@ -123,10 +124,23 @@ std::size_t expected_answer_bytes(const std::string& capability, int level, cons
 
 }  // namespace
 
+const char* mesh_check_status_name(MeshCheckStatus s) {
+  switch (s) {
+    case MeshCheckStatus::Pass: return "pass";
+    case MeshCheckStatus::Fail: return "fail";
+    case MeshCheckStatus::NotJudged: return "not-judged";
+    case MeshCheckStatus::NotClaimed: return "not-claimed";
+    case MeshCheckStatus::NoOracle: return "no-oracle";
+    case MeshCheckStatus::Timeout: return "timeout";
+    case MeshCheckStatus::Stopped: return "stopped";
+  }
+  return "stopped";
+}
+
 bool MeshCertification::any_judged() const {
   if (!build_failure && built) return true;  // the storage of the mesh was judged
   for (const auto& c : checks)
-    if (c.status == "pass" || c.status == "fail") return true;
+    if (c.status == MeshCheckStatus::Pass || c.status == MeshCheckStatus::Fail) return true;
   return false;
 }
 
@@ -134,7 +148,7 @@ bool MeshCertification::any_incomplete() const {
   if (!stopped_why.empty()) return true;
   if (build_failure && build_failure->status == FindingStatus::Timeout) return true;
   for (const auto& c : checks)
-    if (c.status == "timeout") return true;
+    if (c.status == MeshCheckStatus::Timeout) return true;
   return false;
 }
 
@@ -142,7 +156,7 @@ bool MeshCertification::any_failed() const {
   if (build_failure && build_failure->status == FindingStatus::Timeout) return false;
   if (build_failure) return true;
   for (const auto& c : checks)
-    if (c.status == "fail") return true;
+    if (c.status == MeshCheckStatus::Fail) return true;
   return false;
 }
 
@@ -198,7 +212,7 @@ void run_one_check(const Planned& p, const CapabilityCheck& check, const std::sh
   while (done.wait_for(std::chrono::milliseconds(50)) != std::future_status::ready) {
     const std::string why = stop_reason(options, t0);
     if (why.empty()) continue;
-    o->status = "stopped";
+    o->status = MeshCheckStatus::Stopped;
     o->note = why + " during this check";
     o->seconds = since(t);
     out->abandoned = true;
@@ -208,16 +222,16 @@ void run_one_check(const Planned& p, const CapabilityCheck& check, const std::sh
   std::optional<Finding> f = done.get();
   o->seconds = since(t);
   if (!f) {
-    o->status = "pass";
+    o->status = MeshCheckStatus::Pass;
   } else if (f->status == FindingStatus::NotJudged) {
-    o->status = "not-judged";
+    o->status = MeshCheckStatus::NotJudged;
     o->note = f->message;
   } else if (f->status == FindingStatus::Timeout) {
     // No answer within vgc's limits: no verdict (the run is incomplete).
-    o->status = "timeout";
+    o->status = MeshCheckStatus::Timeout;
     o->note = f->message;
   } else {
-    o->status = "fail";
+    o->status = MeshCheckStatus::Fail;
     o->finding = std::move(f);
   }
 }
@@ -242,13 +256,13 @@ MeshCertification certify_mesh(const MeshProgram& mesh, Implementation& sut, con
     const bool is_claimed = std::find(claimed.begin(), claimed.end(), p.capability) != claimed.end();
     const CapabilityCheck* check = find_capability_check(p.capability);
     if (!is_claimed) {
-      o.status = "not-claimed";
+      o.status = MeshCheckStatus::NotClaimed;
       o.note = sut.name() + " does not claim \"" + p.capability + "\"";
     } else if (!check || (!check->check && !check->check_drawn)) {
-      o.status = "no-oracle";
+      o.status = MeshCheckStatus::NoOracle;
       o.note = "this vgc has no oracle linked for \"" + std::string(p.capability) + "\"";
     } else if (!out.stopped_why.empty() || !(o.note = stop_reason(options, t0)).empty()) {
-      o.status = "stopped";
+      o.status = MeshCheckStatus::Stopped;
       if (out.stopped_why.empty()) out.stopped_why = o.note;
       o.note = out.stopped_why + " before this check";
     } else {
@@ -259,6 +273,126 @@ MeshCertification certify_mesh(const MeshProgram& mesh, Implementation& sut, con
   return out;
 }
 
+namespace {
+
+const char* const kMeshOrigin =
+    "The mesh's program, as vgc import writes it (a user's mesh is judged whole, not shrunk)";
+
+std::string check_property_id(const MeshCheckOutcome& c) {
+  return "mesh." + c.capability + (c.level ? ".level" + std::to_string(c.level) : "");
+}
+
+// A check as a "property" of the run (one case).
+PropertyOutcome property_of_check(const MeshCheckOutcome& c) {
+  PropertyOutcome p;
+  p.id = check_property_id(c);
+  p.cases_target = 1;
+  p.cases = 1;
+  p.seconds = c.seconds;
+  switch (c.status) {
+    case MeshCheckStatus::Pass: p.status = PropertyStatus::Pass, p.judged = 1; break;
+    case MeshCheckStatus::Fail: p.status = PropertyStatus::Fail, p.judged = 1; break;
+    case MeshCheckStatus::Stopped: p.status = PropertyStatus::Stopped; break;
+    case MeshCheckStatus::NotJudged: p.status = PropertyStatus::Skipped, p.not_judged = 1; break;
+    case MeshCheckStatus::Timeout: p.status = PropertyStatus::Skipped; break;
+    case MeshCheckStatus::NotClaimed: p.status = PropertyStatus::Skipped, p.skip = PropertySkip::NotClaimed, p.cases = 0; break;
+    case MeshCheckStatus::NoOracle: p.status = PropertyStatus::Skipped, p.skip = PropertySkip::NoOracle, p.cases = 0; break;
+  }
+  if (p.status == PropertyStatus::Skipped || p.status == PropertyStatus::Stopped) p.note = c.note;
+  if (c.finding) {
+    PropertyFinding pf;
+    pf.finding = *c.finding;
+    p.findings.push_back(pf);
+  }
+  return p;
+}
+
+// A clause's outcome, its status decided as for any run (clause_status.h).
+ClauseOutcome decided(const Clause& clause, const ClauseEvidence& e, ClauseOutcome co) {
+  co.clause = &clause;
+  co.exercised = e.exercised;
+  const ClauseDecision d = decide_clause_status(clause, e);
+  co.status = d.status.value_or(ClauseStatus::Unchecked);
+  if (co.note.empty()) co.note = d.note;
+  return co;
+}
+
+// The mesh's storage: the build's finding on its clause, or the clauses a
+// difference would have been blamed on, judged once by the snapshot.
+void add_build_clauses(const MeshCertification& m, const MeshProgram& mesh, const std::string& built_id,
+                       RunResult* run) {
+  if (m.build_failure) {
+    const Clause* clause = find_clause(m.build_failure->clause);
+    if (!clause) return;
+    ClauseEvidence e;
+    e.declared_and_ran = true;
+    ClauseOutcome co;
+    co.properties = {built_id};
+    if (m.build_failure->status == FindingStatus::Timeout) {  // vgc's limit: no verdict
+      e.stopped_note = m.build_failure->message;
+    } else {
+      e.finding = m.build_failure;
+      e.exercised = 1;
+      co.finding = m.build_failure;
+      co.found_by = built_id;
+      co.program = mesh.program;
+      co.program.mesh = true;  // replayed as certify --mesh judged it
+      co.program_origin = kMeshOrigin;
+    }
+    run->clauses.push_back(decided(*clause, e, std::move(co)));
+    return;
+  }
+  for (const char* id : {"VERTEX-SET-1", "POLY-CORNERS-1"}) {
+    const Clause* clause = find_clause(id);
+    if (!clause) continue;
+    ClauseEvidence e;
+    e.declared_and_ran = true;
+    e.exercised = 1;
+    ClauseOutcome co;
+    co.properties = {built_id};
+    run->clauses.push_back(decided(*clause, e, std::move(co)));
+  }
+}
+
+// One capability clause from its checks (all levels): the first failure's
+// finding, with the mesh and the check as its program; not-claimed when the
+// implementation claims none; unchecked when no level could be judged, or a
+// level stopped or timed out.
+ClauseOutcome check_clause(const Clause& clause, const MeshCertification& m, const MeshProgram& mesh) {
+  ClauseEvidence e;
+  ClauseOutcome co;
+  bool any_pass = false, timed_out = false;
+  std::string unjudged;
+  for (const auto& c : m.checks) {
+    if (c.clause != clause.id) continue;
+    const std::string prop = check_property_id(c);
+    if (c.status != MeshCheckStatus::NotClaimed) e.declared_and_ran = true;
+    if (c.status == MeshCheckStatus::Pass || c.status == MeshCheckStatus::Fail) {
+      co.properties.push_back(prop);
+      ++e.exercised;
+    }
+    if (c.status == MeshCheckStatus::Pass) any_pass = true;
+    const bool no_verdict = c.status == MeshCheckStatus::Timeout || c.status == MeshCheckStatus::Stopped;
+    const bool not_judged = c.status == MeshCheckStatus::NotJudged || c.status == MeshCheckStatus::NoOracle;
+    if ((not_judged || no_verdict) && unjudged.empty()) unjudged = prop + ": " + c.note;
+    if (no_verdict) timed_out = true;
+    if (c.status == MeshCheckStatus::Fail && !e.finding) {
+      e.finding = c.finding;
+      co.finding = c.finding;
+      co.found_by = prop;
+      co.program.commands = mesh.program.commands;
+      co.program.mesh = true;  // replayed as certify --mesh judged it
+      co.program_origin = kMeshOrigin;
+      co.program.request = CapabilityRequest{c.capability, c.level == 0 ? 1 : c.level, std::nullopt};
+    }
+  }
+  if (!e.declared_and_ran) e.skip = PropertySkip::NotClaimed, e.skip_note = "the implementation does not claim it";
+  if (!unjudged.empty() && (!any_pass || timed_out)) e.stopped_note = unjudged;
+  return decided(clause, e, std::move(co));
+}
+
+}  // namespace
+
 RunResult mesh_run_result(const MeshCertification& m, const MeshProgram& mesh, const std::string& implementation,
                           double seconds) {
   RunResult run;
@@ -266,117 +400,37 @@ RunResult mesh_run_result(const MeshCertification& m, const MeshProgram& mesh, c
   run.options.cases = 1;
   run.options.seed = 0;
   run.seconds = seconds;
-  run.conformant = !m.any_failed();
-  run.complete = !m.any_incomplete();
   if (cancel_signal()) run.cancelled_by = cancel_signal_name();
-  const std::string found_by = "mesh";
-  const std::string origin = "The mesh's program, as vgc import writes it (a user's mesh is judged whole, not shrunk)";
   // The build judges the node's storage of the whole mesh: its snapshot is
   // the reference's, or its finding is the build's.
   PropertyOutcome built;
-  built.id = found_by + ".build";
-  built.status = m.build_failure ? "fail" : "pass";
+  built.id = "mesh.build";
   built.cases = built.cases_target = built.judged = 1;
   built.seconds = m.build_seconds;
-  if (!m.build_failure && !m.built) {  // stopped (cancelled, the budget) before the mesh was built
-    built.status = "stopped";
+  if (m.build_failure && m.build_failure->status == FindingStatus::Timeout) {
+    built.status = PropertyStatus::Stopped;
+    built.note = m.build_failure->message;
+  } else if (m.build_failure) {
+    built.status = PropertyStatus::Fail;
+  } else if (!m.built) {  // stopped (cancelled, the budget) before the mesh was built
+    built.status = PropertyStatus::Stopped;
     built.note = m.stopped_why;
     built.judged = 0;
-    run.properties.push_back(built);
-    run.complete = false;
-    return run;
+  } else {
+    built.status = PropertyStatus::Pass;
   }
   run.properties.push_back(built);
-  if (m.build_failure) {
-    ClauseOutcome co;
-    co.clause = find_clause(m.build_failure->clause);
-    if (m.build_failure->status == FindingStatus::Timeout) {  // vgc's limit: no verdict
-      run.properties.back().status = "stopped";
-      run.properties.back().note = m.build_failure->message;
-      co.status = "unchecked";
-      co.note = m.build_failure->message;
-      co.properties = {built.id};
-      run.complete = false;
-      if (co.clause) run.clauses.push_back(std::move(co));
-      return run;
-    }
-    co.status = "fail";
-    co.finding = m.build_failure;
-    co.found_by = built.id;
-    co.program = mesh.program;
-    co.program.mesh = true;  // replayed as certify --mesh judged it
-    co.program_origin = origin;
-    co.exercised = 1;
-    co.properties = {co.found_by};
-    if (co.clause) run.clauses.push_back(std::move(co));
-    return run;
+  if (m.build_failure || m.built) add_build_clauses(m, mesh, built.id, &run);
+  if (!m.build_failure && m.built) {
+    for (const auto& c : m.checks) run.properties.push_back(property_of_check(c));
+    // Clauses in the order of the checks (catalog order for these four).
+    std::vector<std::string> order;
+    for (const auto& c : m.checks)
+      if (std::find(order.begin(), order.end(), c.clause) == order.end()) order.push_back(c.clause);
+    for (const std::string& id : order)
+      if (const Clause* clause = find_clause(id)) run.clauses.push_back(check_clause(*clause, m, mesh));
   }
-  // Passed: the clauses a difference would have been blamed on.
-  for (const char* id : {"VERTEX-SET-1", "POLY-CORNERS-1"}) {
-    ClauseOutcome co;
-    co.clause = find_clause(id);
-    if (!co.clause) continue;
-    co.status = "pass";
-    co.exercised = 1;
-    co.properties = {built.id};
-    run.clauses.push_back(std::move(co));
-  }
-  // Clauses in the order of the checks (catalog order for these four).
-  std::vector<std::string> order;
-  for (const auto& c : m.checks)
-    if (std::find(order.begin(), order.end(), c.clause) == order.end()) order.push_back(c.clause);
-  for (const auto& c : m.checks) {
-    PropertyOutcome p;
-    p.id = found_by + "." + c.capability + (c.level ? ".level" + std::to_string(c.level) : "");
-    p.status = c.status == "pass" || c.status == "fail" || c.status == "stopped" ? c.status : "skipped";
-    if (p.status == "skipped" || p.status == "stopped") p.note = c.note;
-    p.cases_target = 1;
-    p.cases = c.status == "not-claimed" || c.status == "no-oracle" ? 0 : 1;
-    p.judged = c.status == "pass" || c.status == "fail" ? 1 : 0;
-    p.not_judged = c.status == "not-judged" ? 1 : 0;
-    p.seconds = c.seconds;
-    if (c.finding) {
-      PropertyFinding pf;
-      pf.finding = *c.finding;
-      p.findings.push_back(pf);
-    }
-    run.properties.push_back(p);
-  }
-  for (const std::string& id : order) {
-    ClauseOutcome co;
-    co.clause = find_clause(id);
-    if (!co.clause) continue;
-    bool any_pass = false, claimed = false, timed_out = false;
-    std::string unjudged;
-    for (const auto& c : m.checks) {
-      if (c.clause != id) continue;
-      const std::string prop = found_by + "." + c.capability + (c.level ? ".level" + std::to_string(c.level) : "");
-      if (c.status != "not-claimed") claimed = true;
-      if (c.status == "pass" || c.status == "fail") {
-        co.properties.push_back(prop);
-        ++co.exercised;
-      }
-      if (c.status == "pass") any_pass = true;
-      const bool no_verdict = c.status == "timeout" || c.status == "stopped";
-      if ((c.status == "not-judged" || c.status == "no-oracle" || no_verdict) && unjudged.empty())
-        unjudged = prop + ": " + c.note;
-      if (no_verdict) timed_out = true;
-      if (c.status == "fail" && !co.finding) {
-        co.finding = c.finding;
-        co.found_by = prop;
-        co.program.commands = mesh.program.commands;
-        co.program.mesh = true;  // replayed as certify --mesh judged it
-        co.program_origin = origin;
-        co.program.request = CapabilityRequest{c.capability, c.level == 0 ? 1 : c.level, std::nullopt};
-      }
-    }
-    if (co.finding) co.status = "fail";
-    else if (!claimed) co.status = "not-claimed", co.note = "the implementation does not claim it";
-    else if (!unjudged.empty() && (!any_pass || timed_out)) co.status = "unchecked", co.note = unjudged;
-    else co.status = "pass";
-    if (co.status == "unchecked") run.complete = false;
-    run.clauses.push_back(std::move(co));
-  }
+  summarize_run(&run);  // the one place a run's completeness and conformance are decided
   return run;
 }
 

@@ -31,11 +31,18 @@
 
 namespace vgc {
 
+// One check's outcome: Pass, Fail (with the finding), NotJudged (the
+// oracle refuses the mesh, `note` says why), NotClaimed, NoOracle (this vgc
+// has none linked for it), Timeout (a limit of vgc's: no verdict), Stopped
+// (cancelled, or the budget ran out).
+enum class MeshCheckStatus { Pass, Fail, NotJudged, NotClaimed, NoOracle, Timeout, Stopped };
+const char* mesh_check_status_name(MeshCheckStatus s);  // "pass", "fail", "not-judged", "not-claimed", ...
+
 struct MeshCheckOutcome {
   std::string capability;  // "manifold", "subdivision", "normals", "loop"
   std::string clause;      // MESH-CLASSIFY-1, ...
   int level = 0;           // the subdivision level (0 for manifold and normals)
-  std::string status;      // "pass", "fail", "not-judged", "not-claimed", "no-oracle", "timeout", "stopped"
+  MeshCheckStatus status = MeshCheckStatus::Stopped;
   std::optional<Finding> finding;  // for "fail"
   std::string note;        // for "not-judged", "not-claimed", "no-oracle"
   double seconds = 0;

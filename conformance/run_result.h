@@ -13,10 +13,12 @@
 #pragma once
 
 #include <cstdint>
+#include <iosfwd>
 #include <map>
 #include <optional>
 #include <set>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -55,6 +57,28 @@ struct RunSettings {
   std::set<std::string> tolerated;
 };
 
+// A clause's status (docs/certify.md "Statuses"): decided in one place
+// (clause_status.h, decide_clause_status), written by every report as its
+// name, read back by `vgc merge` and `vgc result`. A switch over it is
+// checked by the compiler for a forgotten status.
+enum class ClauseStatus { Pass, Fail, Crash, Timeout, Unchecked, NotClaimed, NotApplicable, Skipped };
+const char* clause_status_name(ClauseStatus s);  // "pass", "fail", "crash", "timeout", "unchecked", ...
+std::optional<ClauseStatus> clause_status_named(std::string_view name);  // the inverse
+ClauseStatus clause_status_of(FindingStatus s);  // a finding's kind as the clause's status (fail, crash, timeout)
+bool is_deviation(ClauseStatus s);               // fail, crash or timeout: a finding stands
+
+// A property's status: it ran all its cases and found nothing (Pass) or
+// found deviations (Fail); it did not run all of them (Stopped: the
+// budget, set-aside cases dominated, RapidCheck gave up, a cancel); it did
+// not run at all (Skipped, PropertySkip says why).
+enum class PropertyStatus { Pass, Fail, Stopped, Skipped };
+const char* property_status_name(PropertyStatus s);  // "pass", "fail", "stopped", "skipped"
+std::optional<PropertyStatus> property_status_named(std::string_view name);
+
+// The names, for a log line or a test's message (GoogleTest prints them so).
+std::ostream& operator<<(std::ostream& out, ClauseStatus s);
+std::ostream& operator<<(std::ostream& out, PropertyStatus s);
+
 // Why a property did not run (PropertyOutcome::status "skipped", or
 // "stopped" before any case for Preflight). What it means for the clauses
 // it declares is decided in clause_status.cpp: a property in another shard
@@ -69,12 +93,10 @@ PropertySkip property_skip_named(const std::string& name);  // the inverse; None
 struct PropertyOutcome {
   std::string id;
   PropertySkip skip = PropertySkip::None;
-  // "pass" (ran all its cases, no finding), "fail" (ran all its cases and
-  // found deviations), "stopped" (did not run all its cases: the budget ran
-  // out, set-aside cases dominated, or RapidCheck gave up; `note` says
-  // which), "skipped" (not run: not selected, another shard, capability not
-  // claimed, no oracle, or the implementation could not be read at all).
-  std::string status;
+  // Pass, Fail, Stopped (`note` says why), Skipped (`skip` and `note` say
+  // why: not selected, another shard, capability not claimed, no oracle, or
+  // the implementation could not be read at all).
+  PropertyStatus status = PropertyStatus::Skipped;
   std::string note;         // why skipped / stopped
   std::uint64_t seed = 0;
   int cases = 0;            // cases run to the end: judged + set aside + not judged
@@ -110,7 +132,7 @@ struct ClauseOutcome {
   //                  document decides on a route that carries none); the
   //                  note names the route and says why;
   // "skipped"        in another shard.
-  std::string status;
+  ClauseStatus status = ClauseStatus::Unchecked;
   std::string note;
   std::vector<std::string> properties;  // that declare it and ran
   long exercised = 0;       // judged steps (or capability checks) that decided it

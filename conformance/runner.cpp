@@ -880,11 +880,11 @@ void finish_outcome(const CaseContext& ctx, const std::string& stop_note, int un
   out->steps_taken_out = ctx.steps_taken_out;
   out->not_judged = ctx.not_judged;
   if (!stop_note.empty()) {
-    out->status = "stopped";
+    out->status = PropertyStatus::Stopped;
     out->note = stop_note;
     return;
   }
-  out->status = out->findings.empty() ? "pass" : "fail";
+  out->status = out->findings.empty() ? PropertyStatus::Pass : PropertyStatus::Fail;
   if (unconfirmed_notes)
     out->note = std::to_string(unconfirmed_notes) + " SHOULD-level or choice difference(s) did not repeat on a fresh "
                 "instance: not reported (they depend on the implementation's history)";
@@ -991,8 +991,8 @@ void decide_clauses(const RunOptions& o, const RouteLimits& limits, RunResult* r
     co.derived_only = e.derived_only;
     co.route_limit = e.route_limit;
     const ClauseDecision d = decide_clause_status(clause, e);
-    if (d.status.empty()) continue;  // not asked for and nothing found
-    co.status = d.status;
+    if (!d.status) continue;  // not asked for and nothing found
+    co.status = *d.status;
     co.note = d.note;
     if (!also.empty()) {
       co.note = "the worst kind of finding in this clause is shown; also found:";
@@ -1049,7 +1049,7 @@ std::optional<PropertyOutcome> why_not_run(const PropertySpec& spec, const RunOp
   PropertyOutcome skipped;
   skipped.id = std::string(spec.id);
   skipped.seed = property_seed(o.seed, spec.id);
-  skipped.status = "skipped";
+  skipped.status = PropertyStatus::Skipped;
   auto as = [&skipped](PropertySkip why, std::string note) {
     skipped.skip = why;
     skipped.note = std::move(note);
@@ -1059,7 +1059,7 @@ std::optional<PropertyOutcome> why_not_run(const PropertySpec& spec, const RunOp
   for (auto c : spec.clauses) selected = selected || clause_selected(o.clause_glob, c);
   if (!selected) return as(PropertySkip::NotSelected, "no selected clause");
   if (run.preflight) {
-    skipped.status = "stopped";
+    skipped.status = PropertyStatus::Stopped;
     skipped.cases_target = property_cases(spec, o.cases);
     return as(PropertySkip::Preflight,
               "not run: the implementation could not show a fresh node (" + run.preflight->clause + ")");
@@ -1105,7 +1105,7 @@ void run_one_property(std::size_t i, Implementation& sut, const RunOptions& o, C
 // answered): stopped, so its clauses are unchecked, not not-claimed
 // (issue 31, item 6).
 PropertyOutcome stopped_before_claims(PropertyOutcome p, const PropertySpec& spec, const RunOptions& o) {
-  p.status = "stopped";
+  p.status = PropertyStatus::Stopped;
   p.skip = PropertySkip::None;
   p.cases_target = property_cases(spec, o.cases);
   p.note = std::string("cancelled by ") + cancel_signal_name() +
@@ -1155,7 +1155,7 @@ RunResult run_certification(Implementation& implementation, const RunOptions& o)
       PropertyOutcome elsewhere;
       elsewhere.id = std::string(props[i].id);
       elsewhere.seed = property_seed(o.seed, props[i].id);
-      elsewhere.status = "skipped";
+      elsewhere.status = PropertyStatus::Skipped;
       elsewhere.skip = PropertySkip::OtherShard;
       elsewhere.note = "in shard " + std::to_string(shard[i] + 1) + "/" + std::to_string(o.shard_count);
       not_run[i] = elsewhere;

@@ -2,10 +2,13 @@
 #include "clause_result.h"
 
 #include <algorithm>
+#include <optional>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
+
+#include "run_result.h"
 
 namespace vgc {
 
@@ -36,9 +39,11 @@ ClauseResult clause_result(const std::string& run_dir, const std::string& clause
     r.text += head;
     const auto gating = j.value("new_failures", std::vector<std::string>{});
     if (std::find(gating.begin(), gating.end(), clause_id) != gating.end()) r.exit_code = 1;
-    else if (status == "unchecked") r.exit_code = 2;
-    else if (status == "skipped") r.exit_code = 77;
-    else r.exit_code = 0;
+    else {
+      // A status this vgc does not know (a damaged report) is not judged: exit 2.
+      const std::optional<ClauseStatus> s = clause_status_named(status);
+      r.exit_code = !s || *s == ClauseStatus::Unchecked ? 2 : *s == ClauseStatus::Skipped ? 77 : 0;
+    }
     return r;
   }
   r.exit_code = 77;

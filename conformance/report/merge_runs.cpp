@@ -102,10 +102,11 @@ bool check_shards(const std::vector<json>& reports, const std::vector<std::strin
 PropertyOutcome property_from(const json& p) {
   PropertyOutcome o;
   o.id = p.value("id", std::string());
-  o.status = p.value("status", std::string());
+  // An unknown status (a damaged report) counts as stopped: never a pass.
+  o.status = property_status_named(p.value("status", std::string())).value_or(PropertyStatus::Stopped);
   o.note = p.value("note", std::string());
   o.skip = property_skip_named(p.value("skip", std::string()));
-  if (o.status == "skipped" && o.skip == PropertySkip::None && o.note.rfind("in shard", 0) == 0)
+  if (o.status == PropertyStatus::Skipped && o.skip == PropertySkip::None && o.note.rfind("in shard", 0) == 0)
     o.skip = PropertySkip::OtherShard;  // a report.json of before format 5
   o.seed = p.value("seed", std::uint64_t{0});
   o.cases = p.value("cases", 0);
@@ -135,7 +136,7 @@ void merge_properties(const std::vector<json>& reports, RunResult* run) {
       for (const auto& p : r["properties"])
         if (p.value("id", std::string()) == spec.id) {
           PropertyOutcome o = property_from(p);
-          if (o.status != "skipped") parts.push_back(std::move(o));
+          if (o.status != PropertyStatus::Skipped) parts.push_back(std::move(o));
           else if (!skipped || skipped->skip == PropertySkip::OtherShard) skipped = std::move(o);
         }
     if (parts.empty()) {
@@ -156,9 +157,10 @@ void merge_properties(const std::vector<json>& reports, RunResult* run) {
       m.steps_taken_out += o.steps_taken_out;
       m.seconds += o.seconds;
       m.findings.insert(m.findings.end(), o.findings.begin(), o.findings.end());
-      if (o.status == "stopped" && m.status != "stopped") m.status = "stopped", m.note = o.note;
+      if (o.status == PropertyStatus::Stopped && m.status != PropertyStatus::Stopped)
+        m.status = PropertyStatus::Stopped, m.note = o.note;
     }
-    if (m.status != "stopped") m.status = m.findings.empty() ? "pass" : "fail";
+    if (m.status != PropertyStatus::Stopped) m.status = m.findings.empty() ? PropertyStatus::Pass : PropertyStatus::Fail;
     run->properties.push_back(std::move(m));
   }
 }
@@ -166,14 +168,15 @@ void merge_properties(const std::vector<json>& reports, RunResult* run) {
 ClauseOutcome clause_from(const Clause& clause, const json& c) {
   ClauseOutcome co;
   co.clause = &clause;
-  co.status = c.value("status", std::string());
+  // An unknown status (a damaged report) counts as unchecked: never a pass.
+  co.status = clause_status_named(c.value("status", std::string())).value_or(ClauseStatus::Unchecked);
   co.note = c.value("note", std::string());
   co.exercised = c.value("exercised", 0L);
   co.derived_only = c.value("derived_only", 0L);
   co.route_limit = c.value("route_limit", std::string());
   for (const auto& p : c.value("properties", json::array())) co.properties.push_back(p.get<std::string>());
   if (c.contains("message")) {
-    co.finding = Finding(std::string(clause.id), status_named(co.status), c["message"].get<std::string>());
+    co.finding = Finding(std::string(clause.id), status_named(clause_status_name(co.status)), c["message"].get<std::string>());
     co.found_by = c.value("found_by", std::string());
     co.seed = c.value("seed", std::uint64_t{0});
     co.tolerated_from_start = c.value("tolerated_from_start", false);
@@ -235,8 +238,8 @@ void merge_clauses(const std::vector<json>& reports, RunResult* run) {
     out.derived_only = e.derived_only;
     out.route_limit = e.route_limit;
     const ClauseDecision d = decide_clause_status(clause, e);
-    if (d.status.empty()) continue;
-    out.status = d.status;
+    if (!d.status) continue;
+    out.status = *d.status;
     out.note = d.note;
     run->clauses.push_back(out);
   }

@@ -139,7 +139,7 @@ std::string render_counterexample(const ClauseOutcome& co, const ReportContext& 
   const std::string file = (fs::path(ctx.run_dir) / counterexample_path(co)).string();
   std::string out;
   out += "# vgc counterexample for " + std::string(co.clause->id) + " (" +
-         std::string(clause_level_name(co.clause->level)) + "): " + co.status + "\n";
+         std::string(clause_level_name(co.clause->level)) + "): " + clause_status_name(co.status) + "\n";
   out += "# implementation: " + ctx.implementation_spec + "\n";
   out += "# found by property " + co.found_by + " with seed " + std::to_string(co.seed) + "\n";
   std::string msg = co.finding ? co.finding->message : "";

@@ -206,9 +206,9 @@ std::string render_report_html(const RunResult& run, const Verdict& v, const Rep
                                : "Not everything could be judged:");
     auto ul = add(body, "ul");
     for (const auto& p : run.properties)
-      if (p.status == "stopped") add(ul, "li", "property " + p.id + " stopped: " + p.note);
+      if (p.status == PropertyStatus::Stopped) add(ul, "li", "property " + p.id + " stopped: " + p.note);
     for (const auto& co : run.clauses)
-      if (co.status == "unchecked") add(ul, "li", "clause " + std::string(co.clause->id) + " is unchecked: " + co.note);
+      if (co.status == ClauseStatus::Unchecked) add(ul, "li", "clause " + std::string(co.clause->id) + " is unchecked: " + co.note);
   }
 
   auto section = [&](const std::vector<std::string>& ids, const std::string& heading, const std::string& intro) {
@@ -260,7 +260,7 @@ std::string render_report_html(const RunResult& run, const Verdict& v, const Rep
     auto tr = add(props, "tr");
     add(tr, "td", p.id);
     auto st = add(tr, "td");
-    status_badge(st, {p.status, "st-" + p.status});
+    status_badge(st, {property_status_name(p.status), std::string("st-") + property_status_name(p.status)});
     if (!p.note.empty()) add_text(st, " " + p.note);
     add(tr, "td", std::to_string(p.cases) + "/" + std::to_string(p.cases_target));
     add(tr, "td", std::to_string(p.judged));

@@ -65,7 +65,7 @@ std::string render_report_json(const RunResult& run, const Verdict& v, const Rep
     c["id"] = co.clause->id;
     c["group"] = co.clause->group;
     c["level"] = clause_level_name(co.clause->level);
-    c["status"] = co.status;
+    c["status"] = clause_status_name(co.status);
     c["shown_status"] = shown_status(co, v);
     c["properties"] = co.properties;
     c["exercised"] = co.exercised;
@@ -113,7 +113,7 @@ std::string render_report_json(const RunResult& run, const Verdict& v, const Rep
 
   json props = json::array();
   for (const PropertyOutcome& p : run.properties) {
-    json o = {{"id", p.id},         {"status", p.status},           {"seed", p.seed},
+    json o = {{"id", p.id},         {"status", property_status_name(p.status)},           {"seed", p.seed},
               {"cases", p.cases},   {"cases_target", p.cases_target}, {"judged", p.judged},
               {"set_aside", p.set_aside}, {"steps_taken_out", p.steps_taken_out}, {"not_judged", p.not_judged}, {"rounds", p.rounds},     {"seconds", p.seconds}};
     if (!p.note.empty()) o["note"] = p.note;

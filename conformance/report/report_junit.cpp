@@ -63,11 +63,11 @@ std::string render_junit(const RunResult& run, const Verdict& v, const ReportCon
     exercised.append_attribute("value") = static_cast<long long>(co.exercised);
     auto status = props.append_child("property");
     status.append_attribute("name") = "status";
-    status.append_attribute("value") = co.status.c_str();
+    status.append_attribute("value") = clause_status_name(co.status);
     if (co.finding && !known && finding_gates(co, v.strict)) {
-      const bool is_error = co.status != "fail";  // crash / timeout
+      const bool is_error = co.status != ClauseStatus::Fail;  // crash / timeout
       auto f = tc.append_child(is_error ? "error" : "failure");
-      f.append_attribute("type") = co.status.c_str();
+      f.append_attribute("type") = clause_status_name(co.status);
       f.append_attribute("message") = co.finding->message.c_str();
       std::ostringstream body;
       body << co.clause->text << "\n\nFound by " << co.found_by << " (seed " << co.seed << ").\nReplay: "
@@ -76,12 +76,14 @@ std::string render_junit(const RunResult& run, const Verdict& v, const ReportCon
       f.text().set(body.str().c_str());
       ++(is_error ? errors : failures);
       ++counts[group][is_error ? "errors" : "failures"];
-    } else if (co.status == "skipped" || co.status == "not-claimed" || co.status == "unchecked" ||
-               co.status == "not-applicable" || (co.finding && known)) {
+    } else if (co.status == ClauseStatus::Skipped || co.status == ClauseStatus::NotClaimed ||
+               co.status == ClauseStatus::Unchecked || co.status == ClauseStatus::NotApplicable ||
+               (co.finding && known)) {
       auto s = tc.append_child("skipped");
       s.append_attribute("message") =
           (co.finding ? "known deviation (baseline): " + ctx.baseline->reasons.at(std::string(co.clause->id))
-                      : co.status == "unchecked" || co.status == "not-applicable" ? co.status + ": " + co.note
+                      : co.status == ClauseStatus::Unchecked || co.status == ClauseStatus::NotApplicable
+                          ? std::string(clause_status_name(co.status)) + ": " + co.note
                                                                                    : co.note)
               .c_str();
       ++skipped;

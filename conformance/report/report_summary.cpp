@@ -32,7 +32,7 @@ std::string render_summary(const RunResult& run, const Verdict& v, const ReportC
   if (!run.route.empty()) {
     std::string ids;
     for (const auto& co : run.clauses)
-      if (co.status == "not-applicable") ids += (ids.empty() ? "" : ", ") + std::string(co.clause->id);
+      if (co.status == ClauseStatus::NotApplicable) ids += (ids.empty() ? "" : ", ") + std::string(co.clause->id);
     if (!ids.empty())
       out += fmt::format("Not judgeable over {} (not-applicable; the clause table says why for each): {}.\n\n",
                          run.route, ids);
@@ -49,9 +49,9 @@ std::string render_summary(const RunResult& run, const Verdict& v, const ReportC
     out += v.name == "incomplete" ? "The run is incomplete: the verdict is neither a pass nor a failure.\n\n"
                                   : "Not everything could be judged:\n\n";
     for (const auto& p : run.properties)
-      if (p.status == "stopped") out += fmt::format("- property `{}` stopped: {}\n", p.id, p.note);
+      if (p.status == PropertyStatus::Stopped) out += fmt::format("- property `{}` stopped: {}\n", p.id, p.note);
     for (const auto& co : run.clauses)
-      if (co.status == "unchecked") out += fmt::format("- clause {} is unchecked: {}\n", co.clause->id, co.note);
+      if (co.status == ClauseStatus::Unchecked) out += fmt::format("- clause {} is unchecked: {}\n", co.clause->id, co.note);
     out += "\n";
   }
 
@@ -97,7 +97,7 @@ std::string render_summary(const RunResult& run, const Verdict& v, const ReportC
   for (const auto& p : run.properties) {
     std::string found;
     for (const auto& f : p.findings) found += (found.empty() ? "" : ", ") + f.finding.clause;
-    out += fmt::format("| {} | {}{} | {}/{} | {} | {} | {} | {} | {} | {:.2f} |\n", p.id, p.status,
+    out += fmt::format("| {} | {}{} | {}/{} | {} | {} | {} | {} | {} | {:.2f} |\n", p.id, property_status_name(p.status),
                        p.note.empty() ? "" : " (" + p.note + ")", p.cases, p.cases_target, p.judged, p.set_aside,
                        p.not_judged, found.empty() ? "-" : found, p.seed, p.seconds);
   }

@@ -35,11 +35,11 @@ Verdict judge(const RunResult& run, const Baseline* baseline, bool strict) {
       else if (baselined) v.known_failures.push_back(id);
       else if (finding_gates(co, strict)) v.new_failures.push_back(id);
       else v.profile_differences.push_back(id);
-    } else if (baselined && co.status != "skipped" && co.status != "not-claimed") {
+    } else if (baselined && co.status != ClauseStatus::Skipped && co.status != ClauseStatus::NotClaimed) {
       // Tolerated from the first case, yet no case diverged on it.
-      if (co.status == "pass") v.stale_baseline.push_back(id);
+      if (co.status == ClauseStatus::Pass) v.stale_baseline.push_back(id);
     }
-    if (co.status == "unchecked") v.unchecked.push_back(id);
+    if (co.status == ClauseStatus::Unchecked) v.unchecked.push_back(id);
   }
   if (!run.cancelled_by.empty()) {  // what it found is listed, but the run is no verdict
     v.name = "incomplete";
@@ -59,10 +59,10 @@ Verdict judge(const RunResult& run, const Baseline* baseline, bool strict) {
 
 std::string shown_status(const ClauseOutcome& co, const Verdict& v) {
   const std::string id(co.clause->id);
-  if (in(v.should_failures, id)) return co.status + " (SHOULD)";
-  if (in(v.known_failures, id)) return co.status + " (baseline)";
+  if (in(v.should_failures, id)) return std::string(clause_status_name(co.status)) + " (SHOULD)";
+  if (in(v.known_failures, id)) return std::string(clause_status_name(co.status)) + " (baseline)";
   if (in(v.profile_differences, id)) return "profile difference";
-  return co.status;
+  return clause_status_name(co.status);
 }
 
 std::vector<std::pair<std::string, int>> shown_status_counts(const RunResult& run, const Verdict& v) {

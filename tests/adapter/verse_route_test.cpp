@@ -185,9 +185,9 @@ TEST(VerseRoute, TheServedReferenceIsConformantOverTheWire) {
   const RunResult run = run_certification(*sut, options(60));
   int not_applicable = 0;
   for (const ClauseOutcome& co : run.clauses) {
-    EXPECT_TRUE(co.status == "pass" || co.status == "not-applicable")
+    EXPECT_TRUE(co.status == ClauseStatus::Pass || co.status == ClauseStatus::NotApplicable)
         << co.clause->id << " " << co.status << ": " << co.note << (co.finding ? " " + co.finding->message : "");
-    if (co.status == "not-applicable") {
+    if (co.status == ClauseStatus::NotApplicable) {
       ++not_applicable;
       EXPECT_EQ(co.note.rfind("not judgeable over the Verse wire: ", 0), 0u) << co.clause->id << ": " << co.note;
     }
@@ -212,11 +212,11 @@ TEST(VerseRoute, AHostLikeR6IsCertifiedToTheEndInItsBoneForm) {
   EXPECT_NE(sut->identity().find("bone_create in the r6 form"), std::string::npos) << sut->identity();
   const RunResult run = run_certification(*sut, options(30));
   for (const ClauseOutcome& co : run.clauses) {
-    EXPECT_NE(co.status, "unchecked") << co.clause->id << ": " << co.note;
-    EXPECT_NE(co.status, "timeout") << co.clause->id << ": " << (co.finding ? co.finding->message : co.note);
-    EXPECT_NE(co.status, "crash") << co.clause->id << ": " << (co.finding ? co.finding->message : co.note);
+    EXPECT_NE(co.status, ClauseStatus::Unchecked) << co.clause->id << ": " << co.note;
+    EXPECT_NE(co.status, ClauseStatus::Timeout) << co.clause->id << ": " << (co.finding ? co.finding->message : co.note);
+    EXPECT_NE(co.status, ClauseStatus::Crash) << co.clause->id << ": " << (co.finding ? co.finding->message : co.note);
     if (co.clause->id == "BONE-CREATE-1" || co.clause->id == "BONE-DESTROY-1" || co.clause->id == "BONE-NAME-1")
-      EXPECT_EQ(co.status, "pass") << co.clause->id << ": " << (co.finding ? co.finding->message : co.note);
+      EXPECT_EQ(co.status, ClauseStatus::Pass) << co.clause->id << ": " << (co.finding ? co.finding->message : co.note);
   }
 }
 
@@ -262,7 +262,7 @@ TEST(VerseRoute, ASeededFaultInTheServedNodeIsNamedWithItsClause) {
   bool named = false;
   for (const ClauseOutcome& co : run.clauses)
     if (co.clause->id == "POLY-DELETE-1") {
-      named = co.status == "fail" && co.finding;
+      named = co.status == ClauseStatus::Fail && co.finding;
       EXPECT_TRUE(named) << co.status << ": " << co.note;
       if (co.finding) {
         EXPECT_NE(co.finding->message.find("observed done, and the state is unchanged"), std::string::npos)
@@ -290,7 +290,7 @@ TEST(VerseRoute, AHostThatGoesSilentGivesTimeoutsAndAFinishedReport) {
   host.signal(SIGCONT);
   ASSERT_TRUE(silenced);
   bool timeout = false;
-  for (const ClauseOutcome& co : run.clauses) timeout = timeout || co.status == "timeout";
+  for (const ClauseOutcome& co : run.clauses) timeout = timeout || co.status == ClauseStatus::Timeout;
   EXPECT_TRUE(timeout) << "no clause timed out";
   EXPECT_FALSE(run.conformant);
   const std::string root = ::testing::TempDir() + "vgc-verse-silent";

@@ -9,7 +9,11 @@ The vertex ids of a command, in the text language (docs/commands.md):
 vertex_set_xyz_real32/64 LAYER ID ..., vertex_set_uint32/real32/real64
 LAYER ID ..., vertex_delete ID, and the four corners of
 polygon_set_corner_uint32 1 POLYGON V0 V1 V2 V3. 4294967295 (0xFFFFFFFF) is
-no id: "pick one" for a vertex, "unused" for a corner."""
+no id: "pick one" for a vertex, "unused" for a corner.
+
+With VGC_PROXY_HANG_LOG=FILE, each command it hangs on is appended to FILE
+first: how many time-outs a run paid, whatever the machine's load."""
+import os
 import sys
 import time
 
@@ -39,6 +43,9 @@ def vertex_ids(words):
 
 for line in sys.stdin:
     if not line.startswith("?") and any(v >= floor for v in vertex_ids(line.split())):
+        if os.environ.get("VGC_PROXY_HANG_LOG"):
+            with open(os.environ["VGC_PROXY_HANG_LOG"], "a") as log:
+                log.write(line)
         while True:
             time.sleep(60)
     child.relay(line)

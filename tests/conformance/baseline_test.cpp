@@ -97,14 +97,14 @@ RunResult run_with(const std::vector<std::string>& failing, const std::vector<st
     ClauseOutcome co;
     co.clause = find_clause(id);
     EXPECT_NE(co.clause, nullptr) << id;
-    co.status = "pass";
+    co.status = ClauseStatus::Pass;
     run.clauses.push_back(co);
   }
   for (const auto& id : failing) {
     ClauseOutcome co;
     co.clause = find_clause(id);
     EXPECT_NE(co.clause, nullptr) << id;
-    co.status = "fail";
+    co.status = ClauseStatus::Fail;
     co.finding = Finding{id, FindingStatus::Fail, "observed something else"};
     if (co.clause->level != ClauseLevel::Should) run.conformant = false;
     run.clauses.push_back(co);
@@ -139,7 +139,7 @@ TEST(Judge, ABaselinedFailureIsKnownAndDoesNotFail) {
   EXPECT_TRUE(v.stale_baseline.empty());
   // A crash of a baselined clause is known too.
   RunResult crashed = run_with({"BONE-FOREST-1"}, {});
-  crashed.clauses[0].status = "crash";
+  crashed.clauses[0].status = ClauseStatus::Crash;
   crashed.clauses[0].finding->status = FindingStatus::Crash;
   EXPECT_EQ(judge(crashed, &b).exit_code, 0);
 }
@@ -162,7 +162,7 @@ TEST(Judge, ABaselinedPassingClauseIsStale) {
   EXPECT_EQ(v.exit_code, 0);
   // Skipped is not passing.
   RunResult skipped = run_with({}, {"BONE-FOREST-1"});
-  skipped.clauses[0].status = "skipped";
+  skipped.clauses[0].status = ClauseStatus::Skipped;
   EXPECT_TRUE(judge(skipped, &b).stale_baseline.empty());
 }
 
@@ -195,14 +195,14 @@ TEST(Judge, ImplementationDefinedDifferencesGateOnlyWhenStrict) {
   EXPECT_TRUE(strict.profile_differences.empty());
   // A crash is never a reading of a silent point: it gates without --strict.
   RunResult crashed = run;
-  crashed.clauses.back().status = "crash";
+  crashed.clauses.back().status = ClauseStatus::Crash;
   crashed.clauses.back().finding->status = FindingStatus::Crash;
   EXPECT_EQ(judge(crashed, nullptr).new_failures, std::vector<std::string>{"BONE-FOREST-1"});
 }
 
 TEST(Judge, UncheckedClausesMakeTheRunIncompleteNeverConformant) {
   RunResult run = run_with({}, {"LAYER-BASE-1", "POLY-DELETE-1"});
-  run.clauses[1].status = "unchecked";
+  run.clauses[1].status = ClauseStatus::Unchecked;
   run.clauses[1].note = "0 judged commands exercised it";
   run.complete = false;
   const Verdict v = judge(run, nullptr);

@@ -68,7 +68,7 @@ TEST(Capability, TheReferenceClaimsAllAndPassesAll) {
   for (const char* id : kClauses) {
     const ClauseOutcome* co = clause(run, id);
     ASSERT_NE(co, nullptr) << id;
-    EXPECT_EQ(co->status, "pass") << id << ": " << (co->finding ? co->finding->message : co->note);
+    EXPECT_EQ(co->status, ClauseStatus::Pass) << id << ": " << (co->finding ? co->finding->message : co->note);
   }
   EXPECT_TRUE(run.conformant);
   EXPECT_TRUE(run.complete);
@@ -81,12 +81,12 @@ TEST(Capability, NotClaimedIsNeitherAFailureNorAGap) {
   for (const char* id : kClauses) {
     const ClauseOutcome* co = clause(run, id);
     ASSERT_NE(co, nullptr) << id;
-    EXPECT_EQ(co->status, "not-claimed") << id;
+    EXPECT_EQ(co->status, ClauseStatus::NotClaimed) << id;
     EXPECT_FALSE(co->finding.has_value()) << id;
   }
   for (const auto& po : run.properties)
     if (po.id == "derived.manifold" || po.id == "derived.subdivision") {
-      EXPECT_EQ(po.status, "skipped");
+      EXPECT_EQ(po.status, PropertyStatus::Skipped);
       EXPECT_EQ(po.note, "not claimed");
     }
   EXPECT_TRUE(run.conformant);
@@ -106,7 +106,7 @@ TEST(Capability, SeededCapabilityFaultsAreCaughtNamingTheirClause) {
     const std::string expected(faults::fault_catalog()[static_cast<std::size_t>(fault)].expected_clause);
     const ClauseOutcome* co = clause(run, expected);
     ASSERT_NE(co, nullptr) << name;
-    EXPECT_EQ(co->status, "fail") << name;
+    EXPECT_EQ(co->status, ClauseStatus::Fail) << name;
     EXPECT_FALSE(run.conformant) << name;
     if (co->finding) std::printf("%s: %s\n", name, co->finding->message.c_str());
   }
@@ -141,7 +141,7 @@ void expect_caught(const CapabilityDocumentFaults& f, const char* clause_id, con
   const RunResult run = run_certification(impl, o);
   const ClauseOutcome* co = clause(run, clause_id);
   ASSERT_NE(co, nullptr) << clause_id;
-  EXPECT_EQ(co->status, "fail") << words;
+  EXPECT_EQ(co->status, ClauseStatus::Fail) << words;
   ASSERT_TRUE(co->finding.has_value()) << words;
   EXPECT_NE(co->finding->message.find(words), std::string::npos) << co->finding->message;
   std::printf("%s (%s): %s\n", clause_id, words, co->finding->message.c_str());
@@ -295,8 +295,8 @@ TEST(Capability, ANotJudgedCheckIsNeverAPass) {
   const RunResult run = run_certification(reference, o);
   const ClauseOutcome* co = clause(run, "LOOP-TRIANGLE-1");
   ASSERT_NE(co, nullptr);
-  EXPECT_NE(co->status, "pass");
-  EXPECT_NE(co->status, "fail");
+  EXPECT_NE(co->status, ClauseStatus::Pass);
+  EXPECT_NE(co->status, ClauseStatus::Fail);
   EXPECT_EQ(co->exercised, 0);
   // The property ran its cases, and counts them as not judged, not judged.
   const PropertyOutcome* loop = nullptr;
@@ -411,7 +411,7 @@ TEST(Capability, ExecAndIsolatedPluginRoutesCertifyTheReferenceWithAll) {
     for (const char* id : kClauses) {
       const ClauseOutcome* co = clause(run, id);
       ASSERT_NE(co, nullptr) << spec << " " << id;
-      EXPECT_EQ(co->status, "pass") << spec << " " << id << ": " << (co->finding ? co->finding->message : co->note);
+      EXPECT_EQ(co->status, ClauseStatus::Pass) << spec << " " << id << ": " << (co->finding ? co->finding->message : co->note);
     }
     EXPECT_TRUE(run.conformant) << spec;
     EXPECT_TRUE(run.complete) << spec;

@@ -40,7 +40,7 @@ TEST(ClauseStatus, WhatTheRouteCannotJudgeIsNotApplicableWhateverTheCasesDrew) {
     e.declared_and_ran = true;
     e.derived_only = reached;
     const ClauseDecision d = decide_clause_status(clause("BONE-DOWNSTREAM-1"), e);
-    EXPECT_EQ(d.status, "not-applicable") << reached;
+    EXPECT_EQ(d.status, ClauseStatus::NotApplicable) << reached;
     EXPECT_NE(d.note.find("derived document"), std::string::npos) << d.note;
   }
   EXPECT_EQ(route_limit_of("BONE-DOWNSTREAM-1", RouteLimits{}), "");  // in process: judged
@@ -53,13 +53,13 @@ TEST(ClauseStatus, APropertyTheRouteCannotRunDoesNotMakeItsClausesUnchecked) {
   e.route = "the Verse wire";
   e.skip = PropertySkip::NotOnRoute;
   e.skip_note = "not run on the Verse wire";
-  EXPECT_EQ(decide_clause_status(clause("CREASE-EDGE-LAYER-1"), e).status, "not-applicable");
+  EXPECT_EQ(decide_clause_status(clause("CREASE-EDGE-LAYER-1"), e).status, ClauseStatus::NotApplicable);
   // Another declaring property runs in another shard: judged there.
   std::vector<PropertyOutcome> outcomes;
   for (const PropertySpec& spec : property_catalog()) {
     PropertyOutcome o;
     o.id = std::string(spec.id);
-    o.status = "skipped";
+    o.status = PropertyStatus::Skipped;
     if (spec.at_scale) o.skip = PropertySkip::NotOnRoute, o.note = "not run on the Verse wire";
     else o.skip = PropertySkip::OtherShard, o.note = "in shard 1/2";
     outcomes.push_back(o);
@@ -68,18 +68,18 @@ TEST(ClauseStatus, APropertyTheRouteCannotRunDoesNotMakeItsClausesUnchecked) {
   std::vector<std::string> ran;
   gather_clause_evidence(clause("CREASE-EDGE-LAYER-1"), outcomes, &g, &ran);
   EXPECT_EQ(g.skip, PropertySkip::OtherShard);
-  EXPECT_EQ(decide_clause_status(clause("CREASE-EDGE-LAYER-1"), g).status, "skipped");
+  EXPECT_EQ(decide_clause_status(clause("CREASE-EDGE-LAYER-1"), g).status, ClauseStatus::Skipped);
   EXPECT_TRUE(ran.empty());
 }
 
 TEST(ClauseStatus, NoReachIsUncheckedInARunAndLeftToTheMergeInAShard) {
   ClauseEvidence e;
   e.declared_and_ran = true;
-  EXPECT_EQ(decide_clause_status(clause("LAYER-NAME-2"), e).status, "unchecked");
+  EXPECT_EQ(decide_clause_status(clause("LAYER-NAME-2"), e).status, ClauseStatus::Unchecked);
   e.shard_part = true;
-  EXPECT_EQ(decide_clause_status(clause("LAYER-NAME-2"), e).status, "skipped");
+  EXPECT_EQ(decide_clause_status(clause("LAYER-NAME-2"), e).status, ClauseStatus::Skipped);
   e.exercised = 3;
-  EXPECT_EQ(decide_clause_status(clause("LAYER-NAME-2"), e).status, "pass");
+  EXPECT_EQ(decide_clause_status(clause("LAYER-NAME-2"), e).status, ClauseStatus::Pass);
 }
 
 TEST(ClauseStatus, AFindingDecidesAndAStoppedPropertyLeavesItUnchecked) {
@@ -87,12 +87,12 @@ TEST(ClauseStatus, AFindingDecidesAndAStoppedPropertyLeavesItUnchecked) {
   e.declared_and_ran = true;
   e.exercised = 10;
   e.stopped_note = "its property layers.stateful stopped: the budget ran out";
-  EXPECT_EQ(decide_clause_status(clause("LAYER-NAME-1"), e).status, "unchecked");
+  EXPECT_EQ(decide_clause_status(clause("LAYER-NAME-1"), e).status, ClauseStatus::Unchecked);
   e.finding = Finding("LAYER-NAME-1", FindingStatus::Crash, "crash");
-  EXPECT_EQ(decide_clause_status(clause("LAYER-NAME-1"), e).status, "crash");
+  EXPECT_EQ(decide_clause_status(clause("LAYER-NAME-1"), e).status, ClauseStatus::Crash);
   ClauseEvidence off;
   off.selected = false;
-  EXPECT_EQ(decide_clause_status(clause("LAYER-NAME-1"), off).status, "");  // left out
+  EXPECT_FALSE(decide_clause_status(clause("LAYER-NAME-1"), off).status.has_value());  // left out
 }
 
 TEST(ClauseStatus, TheWorstKindThenTheShortestProgramWinsTiesToTheEarlierProperty) {

@@ -148,7 +148,7 @@ TEST(DoneAnswers, TheReferenceBehindDoneAnswersCertifiesWithNoClauseFailed) {
   DoneAnswers sut;
   const RunResult run = run_certification(sut, options());
   for (const ClauseOutcome& co : run.clauses)
-    EXPECT_TRUE(co.status != "fail" && co.status != "crash" && co.status != "timeout")
+    EXPECT_TRUE(co.status != ClauseStatus::Fail && co.status != ClauseStatus::Crash && co.status != ClauseStatus::Timeout)
         << co.clause->id << " " << co.status << ": " << (co.finding ? co.finding->message : "");
   EXPECT_TRUE(run.conformant);
   EXPECT_TRUE(run.complete);
@@ -157,10 +157,10 @@ TEST(DoneAnswers, TheReferenceBehindDoneAnswersCertifiesWithNoClauseFailed) {
   EXPECT_GT(run.unreported_verdicts, 0);
   for (const ClauseOutcome& co : run.clauses) {
     if (co.clause->id == "REASON-1") {
-      EXPECT_EQ(co.status, "not-applicable") << co.note;
+      EXPECT_EQ(co.status, ClauseStatus::NotApplicable) << co.note;
       EXPECT_EQ(co.exercised, 0);
-    } else if (co.status != "not-claimed") {
-      EXPECT_EQ(co.status, "pass") << co.clause->id << ": " << co.note;
+    } else if (co.status != ClauseStatus::NotClaimed) {
+      EXPECT_EQ(co.status, ClauseStatus::Pass) << co.clause->id << ": " << co.note;
     }
   }
   EXPECT_EQ(judge(run, nullptr).name, "conformant");
@@ -173,7 +173,7 @@ TEST(DoneAnswers, ADoneImplementationThatDropsPolygonDeletesIsCaught) {
   const RunResult run = run_certification(sut, o);
   bool found = false;
   for (const ClauseOutcome& co : run.clauses)
-    if (co.clause->id == "POLY-DELETE-1" && co.status == "fail" && co.finding) found = true;
+    if (co.clause->id == "POLY-DELETE-1" && co.status == ClauseStatus::Fail && co.finding) found = true;
   EXPECT_TRUE(found) << "the dropped polygon deletes were not found";
   EXPECT_FALSE(run.conformant);
 }
@@ -196,7 +196,7 @@ TEST(DoneAnswers, VgcServeDoneCertifiesThroughTheExecRoute) {
   o.clause_glob = "POLY-*,VERTEX-*,ATOMIC-1";
   const RunResult run = run_certification(*sut, o);
   for (const ClauseOutcome& co : run.clauses)
-    EXPECT_TRUE(co.status != "fail" && co.status != "crash" && co.status != "timeout")
+    EXPECT_TRUE(co.status != ClauseStatus::Fail && co.status != ClauseStatus::Crash && co.status != ClauseStatus::Timeout)
         << co.clause->id << " " << co.status << ": " << (co.finding ? co.finding->message : "");
   EXPECT_TRUE(run.conformant);
 }

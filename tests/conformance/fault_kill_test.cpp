@@ -56,9 +56,9 @@ Outcome certify_fault(int fault) {
   const Verdict v = judge(run, nullptr);
   Outcome out;
   for (const auto& co : run.clauses)
-    if (co.finding) out.detail += std::string(co.clause->id) + "(" + co.status + ") ";
+    if (co.finding) out.detail += std::string(co.clause->id) + "(" + clause_status_name(co.status) + ") ";
   for (const auto& co : run.clauses)
-    if (co.finding && co.clause->id == info.expected_clause && co.status == info.expected_status) out.killed = true;
+    if (co.finding && co.clause->id == info.expected_clause && clause_status_named(info.expected_status) == co.status) out.killed = true;
   // A SHOULD fault is caught without changing the verdict; every other
   // fault must make the implementation non-conformant.
   const Clause* clause = find_clause(info.expected_clause);
@@ -119,8 +119,8 @@ TEST(FaultKill, FaultsPastTheOldGeneratorsReachFailAtSeedsOneToThree) {
       bool hit = false;
       for (const auto& co : run.clauses) {
         if (!co.finding) continue;
-        found += std::string(co.clause->id) + "(" + co.status + ") ";
-        for (const auto& c : clauses) hit = hit || (co.clause->id == c && co.status == "fail");
+        found += std::string(co.clause->id) + "(" + clause_status_name(co.status) + ") ";
+        for (const auto& c : clauses) hit = hit || (co.clause->id == c && co.status == ClauseStatus::Fail);
       }
       std::printf("%-34s seed %llu: %s\n", name.c_str(), static_cast<unsigned long long>(seed), found.c_str());
       EXPECT_TRUE(hit) << name << " at seed " << seed << ": found " << found;

@@ -48,11 +48,11 @@ SeedOutcome certify_once(int fault, const std::string& clause, std::uint64_t see
   SeedOutcome out;
   for (const auto& co : run.clauses) {
     if (!co.finding) continue;
-    if (co.clause->id == clause && co.status == "fail") {
+    if (co.clause->id == clause && co.status == ClauseStatus::Fail) {
       out.blamed = true;
       out.first_message = co.finding->message;
     } else {
-      out.others += std::string(co.clause->id) + "(" + co.status + ") ";
+      out.others += std::string(co.clause->id) + "(" + clause_status_name(co.status) + ") ";
       if (out.first_message.empty()) out.first_message = co.finding->message;
     }
   }

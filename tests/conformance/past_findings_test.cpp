@@ -68,7 +68,7 @@ const ClauseOutcome* clause_in(const RunResult& run, std::string_view id) {
 std::string findings_of(const RunResult& run) {
   std::string out;
   for (const auto& co : run.clauses)
-    if (co.finding) out += std::string(co.clause->id) + "(" + co.status + ") ";
+    if (co.finding) out += std::string(co.clause->id) + "(" + clause_status_name(co.status) + ") ";
   return out;
 }
 
@@ -92,7 +92,7 @@ TEST(PastFindings, FiveFaultsAreAllNamedEachWithItsOwnCounterexample) {
     const ClauseOutcome* co = clause_in(run, clause);
     ASSERT_NE(co, nullptr) << clause;
     ASSERT_TRUE(co->finding) << fault << " (" << clause << ") was not named; found: " << findings_of(run);
-    EXPECT_EQ(co->status, "fail") << clause;
+    EXPECT_EQ(co->status, ClauseStatus::Fail) << clause;
     EXPECT_FALSE(co->tolerated_from_start);
     // Its counterexample shows this clause and no other: replayed against
     // the same five-fault implementation, the first divergence is it.
@@ -209,12 +209,12 @@ TEST(PastFindings, APropertyWhoseCasesAreMostlySetAsideStopsAndItsClausesAreUnch
   ASSERT_TRUE(base && base->finding) << findings_of(run);
   int stopped = 0;
   for (const auto& p : run.properties) {
-    if (p.status == "skipped") continue;
+    if (p.status == PropertyStatus::Skipped) continue;
     if (p.cases_target <= 2) {  // storage.scale at 60 cases: its first case fails, the second is set aside
       EXPECT_EQ(p.judged, 0) << p.id;
       continue;
     }
-    EXPECT_EQ(p.status, "stopped") << p.id;
+    EXPECT_EQ(p.status, PropertyStatus::Stopped) << p.id;
     EXPECT_NE(p.note.find("set aside"), std::string::npos) << p.id << ": " << p.note;
     EXPECT_EQ(p.judged, 0) << p.id;
     EXPECT_LT(p.cases, p.cases_target) << p.id;
@@ -222,9 +222,9 @@ TEST(PastFindings, APropertyWhoseCasesAreMostlySetAsideStopsAndItsClausesAreUnch
   }
   EXPECT_GE(stopped, 7);
   for (const auto& co : run.clauses) {
-    EXPECT_NE(co.status, "pass") << co.clause->id;
-    if (!co.finding && co.status != "not-claimed") {
-      EXPECT_EQ(co.status, "unchecked") << co.clause->id;
+    EXPECT_NE(co.status, ClauseStatus::Pass) << co.clause->id;
+    if (!co.finding && co.status != ClauseStatus::NotClaimed) {
+      EXPECT_EQ(co.status, ClauseStatus::Unchecked) << co.clause->id;
     }
   }
   EXPECT_FALSE(run.complete);
@@ -260,9 +260,9 @@ TEST(PastFindings, AnImplementationThatCannotAnswerGetsNoPass) {
   const RunResult run = run_certification(*impl, o);
   ASSERT_TRUE(run.preflight) << "the fresh node could not be read, yet no preflight finding";
   for (const auto& co : run.clauses) {
-    EXPECT_NE(co.status, "pass") << co.clause->id;
-    if (!co.finding && co.status != "not-claimed") {
-      EXPECT_EQ(co.status, "unchecked") << co.clause->id;
+    EXPECT_NE(co.status, ClauseStatus::Pass) << co.clause->id;
+    if (!co.finding && co.status != ClauseStatus::NotClaimed) {
+      EXPECT_EQ(co.status, ClauseStatus::Unchecked) << co.clause->id;
       EXPECT_FALSE(co.note.empty()) << co.clause->id << " is unchecked without saying why";
     }
   }
@@ -286,7 +286,7 @@ TEST(PastFindings, TheReferencePassesEveryClauseWithANonzeroExercisedCount) {
   ReferenceImplementation reference;
   const RunResult run = run_certification(reference, defaults());
   for (const auto& co : run.clauses) {
-    EXPECT_EQ(co.status, "pass") << co.clause->id << ": " << co.note;
+    EXPECT_EQ(co.status, ClauseStatus::Pass) << co.clause->id << ": " << co.note;
     EXPECT_GT(co.exercised, 0) << co.clause->id;
   }
   EXPECT_TRUE(run.complete);
@@ -301,7 +301,7 @@ TEST(PastFindings, TheReferencePassesEveryClauseWithANonzeroExercisedCount) {
       EXPECT_TRUE(it != p.exercised.end() && it->second > 0)
           << p.id << " declares " << clause << " but no judged step of it exercised it";
     }
-    EXPECT_EQ(p.status, "pass") << p.id << ": " << p.note;
+    EXPECT_EQ(p.status, PropertyStatus::Pass) << p.id << ": " << p.note;
     EXPECT_EQ(p.cases, p.cases_target) << p.id;
     EXPECT_EQ(p.judged, p.cases) << p.id;
   }
@@ -352,7 +352,7 @@ TEST(PastFindings, ClausesDownstreamOfADeviationEveryCaseHitsAreStillJudged) {
   const RunResult run = run_certification(impl, o);
   const ClauseOutcome* create = clause_in(run, "BONE-CREATE-1");
   ASSERT_TRUE(create && create->finding) << findings_of(run);
-  EXPECT_EQ(create->status, "fail");
+  EXPECT_EQ(create->status, ClauseStatus::Fail);
   long taken_out = 0;
   for (const auto& p : run.properties) taken_out += p.steps_taken_out;
   EXPECT_GT(taken_out, 0);
@@ -360,12 +360,12 @@ TEST(PastFindings, ClausesDownstreamOfADeviationEveryCaseHitsAreStillJudged) {
   // elsewhere has consequences, e.g. a bone made its own parent), or pass.
   for (const auto& co : run.clauses) {
     if (co.clause->id.rfind("BONE-", 0) != 0) continue;
-    EXPECT_NE(co.status, "unchecked") << co.clause->id << ": " << co.note;
+    EXPECT_NE(co.status, ClauseStatus::Unchecked) << co.clause->id << ": " << co.note;
   }
   for (const char* id : {"BONE-DOWNSTREAM-1", "BONE-VALUE-1", "BONE-DESTROY-1"}) {
     const ClauseOutcome* co = clause_in(run, id);
     ASSERT_TRUE(co) << id;
-    EXPECT_EQ(co->status, "pass") << id << ": " << co->note << " / " << findings_of(run);
+    EXPECT_EQ(co->status, ClauseStatus::Pass) << id << ": " << co->note << " / " << findings_of(run);
   }
 }
 

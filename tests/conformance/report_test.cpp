@@ -188,7 +188,7 @@ TEST_F(Report, JunitHasATestcasePerClauseAndAFailureForTheFailingOne) {
         EXPECT_FALSE(std::string(tc.child("failure").attribute("message").as_string()).empty());
       }
       for (const auto& co : run.clauses)
-        if (name == co.clause->id && co.status == "pass") {
+        if (name == co.clause->id && co.status == ClauseStatus::Pass) {
           EXPECT_FALSE(failed) << name << " passed but has a failure element";
         }
     }

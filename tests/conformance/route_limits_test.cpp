@@ -114,9 +114,9 @@ TEST(RouteLimits, WhatTheRouteCannotShowIsNotApplicableWithWhyAndTheRunIsConform
   EXPECT_EQ(run.route, "the test route");
   int not_applicable = 0;
   for (const ClauseOutcome& co : run.clauses) {
-    EXPECT_TRUE(co.status == "pass" || co.status == "not-applicable")
+    EXPECT_TRUE(co.status == ClauseStatus::Pass || co.status == ClauseStatus::NotApplicable)
         << co.clause->id << " " << co.status << ": " << co.note << (co.finding ? co.finding->message : "");
-    if (co.status == "not-applicable") {
+    if (co.status == ClauseStatus::NotApplicable) {
       ++not_applicable;
       EXPECT_NE(co.note.find("not judgeable over the test route: "), std::string::npos) << co.clause->id << co.note;
     }
@@ -125,13 +125,13 @@ TEST(RouteLimits, WhatTheRouteCannotShowIsNotApplicableWithWhyAndTheRunIsConform
   for (const char* id : {"REASON-1", "LAYER-SUBSCRIBE-1", "SUBD-CATMARK-1", "EDIT-HIERARCHY-1"}) {
     const ClauseOutcome* co = clause_in(run, id);
     ASSERT_NE(co, nullptr) << id;
-    EXPECT_EQ(co->status, "not-applicable") << id;
+    EXPECT_EQ(co->status, ClauseStatus::NotApplicable) << id;
   }
   // A clause only the derived document decides: bone world poses
   // (BONE-DOWNSTREAM-1).
   const ClauseOutcome* downstream = clause_in(run, "BONE-DOWNSTREAM-1");
   ASSERT_NE(downstream, nullptr);
-  EXPECT_EQ(downstream->status, "not-applicable") << downstream->note;
+  EXPECT_EQ(downstream->status, ClauseStatus::NotApplicable) << downstream->note;
   EXPECT_NE(downstream->note.find("only the derived document"), std::string::npos) << downstream->note;
   EXPECT_EQ(downstream->exercised, 0);
   // A clause judged on the snapshot too (which crease layers are accepted)
@@ -140,7 +140,7 @@ TEST(RouteLimits, WhatTheRouteCannotShowIsNotApplicableWithWhyAndTheRunIsConform
   for (const char* id : {"CREASE-VERTEX-LAYER-1", "CREASE-EDGE-LAYER-1"}) {
     const ClauseOutcome* co = clause_in(run, id);
     ASSERT_NE(co, nullptr) << id;
-    EXPECT_EQ(co->status, "pass") << id << ": " << co->note;
+    EXPECT_EQ(co->status, ClauseStatus::Pass) << id << ": " << co->note;
     EXPECT_NE(co->note.find("its derived part ("), std::string::npos) << id << ": " << co->note;
   }
   // The seven the route names, and the two only the derived document
@@ -149,7 +149,7 @@ TEST(RouteLimits, WhatTheRouteCannotShowIsNotApplicableWithWhyAndTheRunIsConform
   // bone_create with a missing parent being accepted, which judges no pose.
   const ClauseOutcome* parent = clause_in(run, "BONE-PARENT-1");
   ASSERT_NE(parent, nullptr);
-  EXPECT_EQ(parent->status, "not-applicable") << parent->note;
+  EXPECT_EQ(parent->status, ClauseStatus::NotApplicable) << parent->note;
   EXPECT_EQ(not_applicable, 9);
   EXPECT_TRUE(run.conformant);
   EXPECT_TRUE(run.complete);
@@ -178,7 +178,7 @@ TEST(RouteLimits, AFaultTheSnapshotShowsIsStillCaught) {
   const RunResult run = run_certification(sut, o);
   bool caught = false;
   for (const ClauseOutcome& co : run.clauses)
-    if (co.finding && co.status == "fail") caught = true;
+    if (co.finding && co.status == ClauseStatus::Fail) caught = true;
   EXPECT_TRUE(caught) << "the dropped crease_set_vertex was not found";
   EXPECT_FALSE(run.conformant);
 }

@@ -63,7 +63,7 @@ std::map<std::string, std::string> clause_view(const RunResult& run) {
   std::map<std::string, std::string> out;
   for (const ClauseOutcome& co : run.clauses)
     out[std::string(co.clause->id)] =
-        co.status + " | " + describe(co.finding) + " | " + print_commands(co.program.commands);
+        std::string(clause_status_name(co.status)) + " | " + describe(co.finding) + " | " + print_commands(co.program.commands);
   return out;
 }
 
@@ -120,7 +120,7 @@ void check_shards(const std::function<RunResult(const RunOptions&)>& run, int n,
   const auto& props = property_catalog();
   for (std::size_t p = 0; p < props.size(); ++p) {
     const PropertyOutcome& w = whole.properties[p];
-    ASSERT_NE(w.status, "skipped") << what << ": " << w.id;
+    ASSERT_NE(w.status, PropertyStatus::Skipped) << what << ": " << w.id;
     int ran_in = 0;
     if (props[p].at_scale) {
       int cases = 0, judged = 0;
@@ -137,7 +137,7 @@ void check_shards(const std::function<RunResult(const RunOptions&)>& run, int n,
     for (int i = 0; i < n; ++i) {
       const PropertyOutcome& s = shards[static_cast<std::size_t>(i)].properties[p];
       EXPECT_EQ(s.seed, w.seed) << what << ": a shard changed the seed of " << w.id;
-      if (s.status == "skipped") {
+      if (s.status == PropertyStatus::Skipped) {
         EXPECT_NE(s.note.find("shard"), std::string::npos) << what << ": " << s.note;
         continue;
       }
@@ -160,7 +160,7 @@ void check_shards(const std::function<RunResult(const RunOptions&)>& run, int n,
   // a clause that passes whole passes in a shard and fails in none.
   for (const ClauseOutcome& w : whole.clauses) {
     const std::string id(w.clause->id);
-    std::set<std::string> statuses;
+    std::set<ClauseStatus> statuses;
     bool same_finding = false;
     for (const auto& s : shards) {
       const ClauseOutcome* c = clause_in(s, id);
@@ -173,9 +173,9 @@ void check_shards(const std::function<RunResult(const RunOptions&)>& run, int n,
     if (w.finding) {
       EXPECT_TRUE(same_finding) << what << ": " << id << " " << describe(w.finding) << " is in no shard";
     } else {
-      EXPECT_EQ(w.status, "pass") << what << ": " << id << " (" << w.note << ")";
-      EXPECT_TRUE(statuses.count("pass")) << what << ": " << id;
-      for (const auto& st : statuses) EXPECT_TRUE(st == "pass" || st == "skipped") << what << ": " << id << " " << st;
+      EXPECT_EQ(w.status, ClauseStatus::Pass) << what << ": " << id << " (" << w.note << ")";
+      EXPECT_TRUE(statuses.count(ClauseStatus::Pass)) << what << ": " << id;
+      for (const auto& st : statuses) EXPECT_TRUE(st == ClauseStatus::Pass || st == ClauseStatus::Skipped) << what << ": " << id << " " << st;
     }
   }
   // And no shard finds anything the whole run does not report.
@@ -236,10 +236,10 @@ TEST(Runner, ClauseFilterRunsOnlyDeclaringPropertiesAndReportsFindingsOutsideIt)
     for (auto c : p.clauses) declares = declares || clause_selected(o.clause_glob, c);
     const PropertyOutcome* po = property_in(run, p.id);
     ASSERT_NE(po, nullptr);
-    if (declares) EXPECT_NE(po->status, "skipped") << p.id;
-    else EXPECT_EQ(po->status, "skipped") << p.id;
+    if (declares) EXPECT_NE(po->status, PropertyStatus::Skipped) << p.id;
+    else EXPECT_EQ(po->status, PropertyStatus::Skipped) << p.id;
   }
-  EXPECT_NE(property_in(run, "bones.stateful")->status, "skipped");
+  EXPECT_NE(property_in(run, "bones.stateful")->status, PropertyStatus::Skipped);
   std::set<std::string> reported;
   for (const auto& co : run.clauses) {
     reported.insert(std::string(co.clause->id));
@@ -248,7 +248,7 @@ TEST(Runner, ClauseFilterRunsOnlyDeclaringPropertiesAndReportsFindingsOutsideIt)
   }
   EXPECT_TRUE(reported.count("BONE-CREATE-1"));
   ASSERT_TRUE(reported.count("BONE-FOREST-1")) << "a finding outside the filter was dropped";
-  EXPECT_EQ(clause_in(run, "BONE-FOREST-1")->status, "fail");
+  EXPECT_EQ(clause_in(run, "BONE-FOREST-1")->status, ClauseStatus::Fail);
   EXPECT_FALSE(reported.count("LAYER-BASE-1"));
   EXPECT_TRUE(run.conformant) << "BONE-FOREST-1 is IMPLEMENTATION-DEFINED: a profile difference";
   EXPECT_EQ(judge(run, nullptr).exit_code, 0);
@@ -261,13 +261,13 @@ TEST(Runner, ClauseFilterRunsOnlyDeclaringPropertiesAndReportsFindingsOutsideIt)
   const RunResult r2 = run_reference(two);
   std::set<std::string> ran;
   for (const auto& p : r2.properties)
-    if (p.status != "skipped") ran.insert(p.id);
+    if (p.status != PropertyStatus::Skipped) ran.insert(p.id);
   // (storage.scale declares CREASE-VERTEX-LAYER-1, CREASE-EDGE-LAYER-1 and ID-BOUND-1 too.)
   EXPECT_EQ(ran, (std::set<std::string>{"creases.stateful", "ids.stateful", "storage.scale"}));
   for (const auto& co : r2.clauses) EXPECT_TRUE(clause_selected(two.clause_glob, co.clause->id)) << co.clause->id;
   EXPECT_TRUE(r2.conformant);
   EXPECT_TRUE(r2.complete);
-  for (const auto& co : r2.clauses) EXPECT_EQ(co.status, "pass") << co.clause->id << ": " << co.note;
+  for (const auto& co : r2.clauses) EXPECT_EQ(co.status, ClauseStatus::Pass) << co.clause->id << ": " << co.note;
 }
 
 TEST(Runner, ATinyBudgetMakesTheRunIncomplete) {
@@ -276,11 +276,11 @@ TEST(Runner, ATinyBudgetMakesTheRunIncomplete) {
   const RunResult run = run_reference(o);
   int incomplete = 0;
   for (const auto& p : run.properties) {
-    EXPECT_NE(p.status, "pass") << p.id << " passed without running its cases";
-    incomplete += p.status == "stopped";
+    EXPECT_NE(p.status, PropertyStatus::Pass) << p.id << " passed without running its cases";
+    incomplete += p.status == PropertyStatus::Stopped;
   }
   EXPECT_GE(incomplete, 1);
-  for (const auto& co : run.clauses) EXPECT_NE(co.status, "pass") << co.clause->id;
+  for (const auto& co : run.clauses) EXPECT_NE(co.status, ClauseStatus::Pass) << co.clause->id;
   EXPECT_FALSE(run.complete);
   const Verdict v = judge(run, nullptr);
   EXPECT_EQ(v.name, "incomplete");
@@ -346,7 +346,7 @@ TEST(Runner, ShouldOnlyFindingsLeaveTheVerdictConformant) {
   const ClauseOutcome* reason = clause_in(run, "REASON-1");
   ASSERT_NE(reason, nullptr);
   ASSERT_TRUE(reason->finding) << "the wrong reason codes were not noticed";
-  EXPECT_EQ(reason->status, "fail");
+  EXPECT_EQ(reason->status, ClauseStatus::Fail);
   for (const auto& co : run.clauses)
     if (co.clause->id != "REASON-1") {
       EXPECT_FALSE(co.finding) << co.clause->id << ": " << describe(co.finding);

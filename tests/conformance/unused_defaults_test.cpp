@@ -64,7 +64,7 @@ TEST(UnusedDefaults, AnotherUnusedDefaultIsNoFinding) {
     RewrittenDefaults sut(unused, false);
     const RunResult run = run_certification(sut, options());
     for (const ClauseOutcome& co : run.clauses)
-      EXPECT_TRUE(co.status == "pass") << unused << ": " << co.clause->id << " " << co.status << ": "
+      EXPECT_TRUE(co.status == ClauseStatus::Pass) << unused << ": " << co.clause->id << " " << co.status << ": "
                                        << (co.finding ? co.finding->message : "");
     EXPECT_TRUE(run.conformant) << unused;
   }

@@ -72,7 +72,7 @@ TEST(NoOracle, AClaimedCapabilityWithoutACheckIsNotJudgedAndTheRunIsIncomplete) 
     const std::string id(co.clause->id);
     if (!ids.count(id)) continue;
     seen.insert(id);
-    EXPECT_EQ(co.status, "unchecked") << id;
+    EXPECT_EQ(co.status, ClauseStatus::Unchecked) << id;
     EXPECT_EQ(co.note, "not judged: no oracle linked") << id;
     EXPECT_FALSE(co.finding.has_value()) << id;
     EXPECT_TRUE(co.properties.empty()) << id << ": a property is said to have checked it";
@@ -82,7 +82,7 @@ TEST(NoOracle, AClaimedCapabilityWithoutACheckIsNotJudgedAndTheRunIsIncomplete) 
     const PropertySpec* spec = find_property(po.id);
     ASSERT_NE(spec, nullptr) << po.id;
     if (spec->capability.empty()) continue;
-    EXPECT_EQ(po.status, "skipped") << po.id;
+    EXPECT_EQ(po.status, PropertyStatus::Skipped) << po.id;
     EXPECT_EQ(po.note, "no oracle linked") << po.id;
     EXPECT_EQ(po.cases, 0) << po.id;
   }
@@ -122,7 +122,7 @@ TEST(NoOracle, AnUnclaimedCapabilityIsNotClaimedEvenWithoutACheck) {
   for (const auto& id : capability_clause_ids()) glob += (glob.empty() ? "" : ",") + id;
   o.clause_glob = glob;
   const RunResult run = run_certification(impl, o);
-  for (const auto& co : run.clauses) EXPECT_EQ(co.status, "not-claimed") << co.clause->id;
+  for (const auto& co : run.clauses) EXPECT_EQ(co.status, ClauseStatus::NotClaimed) << co.clause->id;
   EXPECT_TRUE(run.complete);
   EXPECT_EQ(judge(run, nullptr).exit_code, 0);
 }
