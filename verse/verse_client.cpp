@@ -372,12 +372,28 @@ Status ClientSession::receive(WireCommand* out, double timeout_s) {
 
 Status ClientSession::barrier(std::uint32_t node_id, double timeout_s, std::vector<WireCommand>* before) {
   Impl& s = *impl_;
+  const Clock::time_point deadline = deadline_after(timeout_s);
+  // A packet lost on the way (either way) is naked and its commands come
+  // again under a later id, possibly after the echo: then the round is
+  // made again, after them (docs/verse_wire.md section 6).
+  for (;;) {
+    if (!s.channel) return s.not_connected();
+    const std::size_t naks = s.channel->counters().naks_sent, naked = s.channel->counters().naked_resent;
+    Status st = barrier_once(node_id, deadline, before);
+    if (!st.ok() || !s.channel) return st;
+    if (s.channel->counters().naks_sent == naks && s.channel->counters().naked_resent == naked) return {};
+  }
+}
+
+Status ClientSession::barrier_once(std::uint32_t node_id, std::chrono::steady_clock::time_point deadline,
+                                   std::vector<WireCommand>* before) {
+  Impl& s = *impl_;
   const std::string token = "vgc-barrier-" + std::to_string(s.avatar) + "-" + std::to_string(++s.barriers);
   Status st = s.send(wire::NodeNameSet{node_id, token}, true);
   if (!st.ok()) return st;
   std::size_t echo_at = 0;
   st = s.pump(
-      deadline_after(timeout_s),
+      deadline,
       [&] {
         for (std::size_t i = 0; i < s.inbox.size(); ++i) {
           const auto* n = std::get_if<wire::NodeNameSet>(&s.inbox[i]);

@@ -240,6 +240,7 @@ Status Channel::on_datagram(const std::uint8_t* data, std::size_t size, Clock::t
     } else if (const auto* n = std::get_if<wire::PacketNak>(&c)) {
       auto it = history_.find(n->packet_id);
       if (it != history_.end()) {  // its commands go out again, first, in a new packet
+        ++counters_.naked_resent;
         history_bytes_ -= it->second.commands.size();
         std::vector<Queued> again;
         const bool alone = it->second.parts.size() == 1;  // a packet of one (a barrier) stays one

@@ -132,6 +132,7 @@ class Channel {
 
   struct Counters {
     std::size_t sent = 0, received = 0, resends = 0, naks_sent = 0, duplicates = 0;
+    std::size_t naked_resent = 0;  // packets the peer naked, their commands queued again
     std::size_t other_bone_form = 0;  // packets parsed in the other bone_create form
   };
   const Counters& counters() const { return counters_; }
