@@ -33,6 +33,7 @@
 #include "runner.h"
 #include "subcommand.h"
 #include "verdict.h"
+#include "mesh_certification.h"
 #include "wire_fuzz.h"
 #include "terminal_text.h"
 
@@ -58,6 +59,7 @@ int run(const Options& o) {
     fuzz::WireFuzzOptions w;
     w.impl = o.impl;
     w.timeout_s = o.timeout;
+    w.login_timeout_s = o.start_timeout;
     if (o.verse_bone_form != "auto") w.verse_bone_form = o.verse_bone_form;
     return fuzz::replay_wire_transcript(o.file, w);
   }
@@ -80,7 +82,8 @@ int run(const Options& o) {
   auto sut = open_impl_or_report("replay", o.impl, {o.timeout, o.start_timeout}, o.verse_bone_form);
   if (!sut) return 2;
   register_oracle_checks();  // as certify: the oracles judge the capability checks
-  const ReplayResult r = replay_program(program, *sut);
+  // A user's mesh is judged as certify --mesh judged it (same requests).
+  const ReplayResult r = program.mesh ? replay_mesh_program(program, *sut) : replay_program(program, *sut);
   // A SHOULD clause not met is said as certify says it ("fail (SHOULD)",
   // the verdict stands); other notes are choices the model followed.
   int should_not_met = 0;

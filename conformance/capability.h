@@ -20,7 +20,7 @@
 #include <string>
 #include <vector>
 
-#include "check_step.h"
+#include "finding.h"
 #include "implementation.h"
 #include "node.h"
 

@@ -23,40 +23,11 @@
 #include <vector>
 
 #include "command.h"
+#include "finding.h"
 #include "implementation.h"
 #include "node.h"
 
 namespace vgc {
-
-// NotJudged is no finding: a capability check (capability.h) returns it
-// when its oracle cannot be asked about the case (OpenSubdiv refuses the
-// mesh), `message` saying why; certify counts the case as not judged and
-// `vgc replay` says so instead of "passes".
-enum class FindingStatus { Fail, Crash, Timeout, NotJudged };
-const char* finding_status_name(FindingStatus s);  // "fail", "crash", "timeout", "not-judged"
-
-struct Finding {
-  Finding() = default;
-  Finding(std::string clause_id, FindingStatus s, std::string text)
-      : clause(std::move(clause_id)), status(s), message(std::move(text)) {}
-
-  std::string clause;          // catalog id
-  FindingStatus status = FindingStatus::Fail;
-  std::string message;         // expected versus observed, one paragraph
-  // What the implementation showed, for a picture of the finding
-  // (report_html.cpp): the document that differed ("snapshot", "derived")
-  // or the capability request it answered ("?subdivide 2"), the whole text
-  // it printed, and for a document the first differing lines (either may be
-  // empty: a line missing or extra). All empty when no document differed
-  // (a verdict, a crash).
-  std::string shown_by;
-  std::string observed_document;
-  std::string expected_line, observed_line;
-  // The reference node's rules the finding is blamed on (attribution.h),
-  // the blamed one first; empty for a finding no node rule decided (a
-  // derived line, a capability check, a fresh node).
-  std::vector<Rule> rules;
-};
 
 struct StepResult {
   std::optional<Finding> failure;  // a MUST or IMPLEMENTATION-DEFINED clause broken

@@ -29,7 +29,7 @@
 
 #include "clause.h"
 #include "implementation.h"
-#include "runner.h"
+#include "run_result.h"
 
 namespace vgc {
 

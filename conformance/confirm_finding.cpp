@@ -7,6 +7,7 @@
 
 #include "cancel.h"
 #include "check_step.h"
+#include "runner.h"  // replay_program: a finding is confirmed by replaying it on a fresh instance
 #include "command_text.h"
 
 namespace vgc {

@@ -30,7 +30,7 @@
 #include <vector>
 
 #include "implementation.h"
-#include "runner.h"
+#include "program.h"
 
 namespace vgc {
 

@@ -30,7 +30,7 @@
 #include <optional>
 #include <string>
 
-#include "check_step.h"
+#include "finding.h"
 #include "command.h"
 #include "node.h"
 

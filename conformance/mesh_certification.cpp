@@ -76,11 +76,15 @@ Finding verdict_difference(const MeshProgram& mesh, std::size_t index, Reason wa
 
 // The mesh on a fresh instance and on the reference: verdicts per command,
 // the snapshots once at the end.
+// *at: the index of the command a verdict finding came on (the command
+// count when the finding is the final snapshot's or a call's).
 std::optional<Finding> build(const MeshProgram& mesh, Implementation& sut, Node* model,
-                             const std::function<std::string()>& should_stop, std::string* stopped) {
+                             const std::function<std::string()>& should_stop, std::string* stopped,
+                             std::size_t* at = nullptr) {
   const Answer fresh = sut.reset();
   if (fresh.status != CallStatus::Ok) return call_failure("STABLE-1", fresh.status, "resetting to a fresh node", fresh.detail);
   const auto& commands = mesh.program.commands;
+  if (at) *at = commands.size();
   for (std::size_t i = 0; i < commands.size(); ++i) {
     if (i % 1024 == 0 && !(*stopped = should_stop()).empty()) {
       *stopped += " while building the mesh (command " + std::to_string(i + 1) + ")";
@@ -93,7 +97,10 @@ std::optional<Finding> build(const MeshProgram& mesh, Implementation& sut, Node*
     // A route that reports no verdict (a host on the Verse wire answers
     // `done`): the snapshot at the end judges what it did with the command.
     if (!got.verdict_reported) continue;
-    if (got.applied != (want == Reason::Ok)) return verdict_difference(mesh, i, want, got, sut);
+    if (got.applied != (want == Reason::Ok)) {
+      if (at) *at = i;
+      return verdict_difference(mesh, i, want, got, sut);
+    }
   }
   return snapshot_difference(*model, sut, "after the mesh's " + std::to_string(commands.size()) + " commands");
 }
@@ -297,6 +304,7 @@ RunResult mesh_run_result(const MeshCertification& m, const MeshProgram& mesh, c
     co.finding = m.build_failure;
     co.found_by = built.id;
     co.program = mesh.program;
+    co.program.mesh = true;  // replayed as certify --mesh judged it
     co.program_origin = origin;
     co.exercised = 1;
     co.properties = {co.found_by};
@@ -357,6 +365,7 @@ RunResult mesh_run_result(const MeshCertification& m, const MeshProgram& mesh, c
         co.finding = c.finding;
         co.found_by = prop;
         co.program.commands = mesh.program.commands;
+        co.program.mesh = true;  // replayed as certify --mesh judged it
         co.program_origin = origin;
         co.program.request = CapabilityRequest{c.capability, c.level == 0 ? 1 : c.level, std::nullopt};
       }
@@ -369,6 +378,63 @@ RunResult mesh_run_result(const MeshCertification& m, const MeshProgram& mesh, c
     run.clauses.push_back(std::move(co));
   }
   return run;
+}
+
+namespace {
+
+// The counts expected_answer_bytes scales the limits with, read back from
+// the commands mesh_program.cpp writes: a base-layer polygon whose fourth
+// corner is unused is a triangle (a first corner unused is a delete).
+MeshProgram mesh_of_program(const Program& program) {
+  MeshProgram mesh;
+  mesh.program.commands = program.commands;
+  for (const Command& c : program.commands) {
+    const auto* p = std::get_if<cmd::PolygonSetCornerUint32>(&c);
+    if (!p || p->layer_id != 1 || p->v[0] == kNone32) continue;
+    (p->v[3] == kNone32 ? mesh.triangles : mesh.quads) += 1;
+  }
+  return mesh;
+}
+
+}  // namespace
+
+ReplayResult replay_mesh_program(const Program& program, Implementation& sut) {
+  ReplayResult r;
+  const MeshProgram mesh = mesh_of_program(program);
+  Node model;
+  std::string stopped;
+  std::size_t at = 0;
+  if (auto f = build(mesh, sut, &model, [] { return std::string(); }, &stopped, &at)) {
+    r.failure = std::move(f);
+    if (at < program.commands.size()) r.failed_at = static_cast<int>(at);
+    return r;
+  }
+  if (!program.request) return r;
+  const CapabilityRequest& q = *program.request;
+  const std::vector<std::string> claimed = query_capabilities(sut);
+  std::string clauses = capability_clauses(q.capability);
+  if (clauses.empty()) clauses = "no clause of this vgc";
+  if (std::find(claimed.begin(), claimed.end(), q.capability) == claimed.end()) {
+    r.not_judged = sut.name() + " does not claim the capability \"" + q.capability + "\" (certify --mesh reports " +
+                   clauses + " as not-claimed)";
+    return r;
+  }
+  const CapabilityCheck* check = find_capability_check(q.capability);
+  if (!check || (!check->check && !check->check_drawn)) {
+    r.not_judged = "this vgc has no oracle linked for the capability \"" + q.capability + "\" (" + clauses +
+                   " cannot be judged)";
+    return r;
+  }
+  sut.expect_answer_bytes(expected_answer_bytes(q.capability, q.variant, mesh));
+  if (auto f = run_capability_check(*check, model, sut, q)) {
+    if (f->status == FindingStatus::NotJudged) {
+      r.not_judged = "not judged (" + f->clause + "): " + f->message;
+      return r;
+    }
+    r.failure = std::move(f);
+    r.failed_at = static_cast<int>(program.commands.size());
+  }
+  return r;
 }
 
 }  // namespace vgc

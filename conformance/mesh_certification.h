@@ -90,4 +90,11 @@ MeshCertification certify_mesh(const MeshProgram& mesh, Implementation& sut, con
 RunResult mesh_run_result(const MeshCertification& m, const MeshProgram& mesh, const std::string& implementation,
                           double seconds);
 
+// `vgc replay` of a program marked "#! mesh" (Program::mesh): judged as
+// certify_mesh judged it, with the same requests, blame and wording: built
+// on a fresh instance with a verdict per command and the snapshot once at
+// the end (no ?digest), then the directive's capability check, if any,
+// with the answer limit scaled with the mesh. Never stopped by a budget.
+ReplayResult replay_mesh_program(const Program& program, Implementation& sut);
+
 }  // namespace vgc

@@ -30,7 +30,7 @@
 #include <string>
 #include <vector>
 
-#include "runner.h"
+#include "program.h"
 
 namespace vgc {
 

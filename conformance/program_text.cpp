@@ -45,6 +45,7 @@ std::string print_capability_directive(const CapabilityRequest& request) {
 std::string print_program(const Program& program) {
   std::string out = print_commands(program.commands);
   if (!program.history_kind.empty()) out += "#! history " + program.history_kind + "\n";
+  if (program.mesh) out += "#! mesh\n";
   if (program.request) out += print_capability_directive(*program.request);
   return out;
 }
@@ -74,6 +75,26 @@ bool parse_history_directive(const std::vector<std::pair<std::string, std::size_
   return true;
 }
 
+// "#! mesh": the program is a user's mesh as `vgc certify --mesh` judged it.
+bool parse_mesh_directive(const std::vector<std::pair<std::string, std::size_t>>& t, std::size_t line_number,
+                          std::size_t last_command, Program* out, TextError* error) {
+  if (out->mesh) {
+    set_error(error, line_number, 1, "a second mesh directive");
+    return false;
+  }
+  if (line_number < last_command) {
+    set_error(error, line_number, 1,
+              "the mesh directive must follow the last command (line " + std::to_string(last_command) + ")");
+    return false;
+  }
+  if (t.size() != 1) {
+    set_error(error, line_number, t[1].second, "expected \"#! mesh\" alone on its line");
+    return false;
+  }
+  out->mesh = true;
+  return true;
+}
+
 }  // namespace
 
 bool parse_program(std::string_view text, Program* out, TextError* error, std::vector<std::size_t>* lines,
@@ -81,6 +102,7 @@ bool parse_program(std::string_view text, Program* out, TextError* error, std::v
   out->commands.clear();
   out->request.reset();
   out->history_kind.clear();
+  out->mesh = false;
   if (directive_line) *directive_line = 0;
   std::vector<std::size_t> command_lines;
   if (!parse_commands(text, &out->commands, error, &command_lines)) {
@@ -100,6 +122,10 @@ bool parse_program(std::string_view text, Program* out, TextError* error, std::v
     const auto t = tokens(line, 2);
     if (!t.empty() && t[0].first == "history") {
       if (!parse_history_directive(t, line, line_number, last_command, out, error)) return false;
+      continue;
+    }
+    if (!t.empty() && t[0].first == "mesh") {
+      if (!parse_mesh_directive(t, line_number, last_command, out, error)) return false;
       continue;
     }
     if (t.empty() || t[0].first != "capability") continue;  // an ordinary comment

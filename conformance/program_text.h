@@ -8,6 +8,10 @@
 //   #! capability subdivision variant 2
 //   #! capability edits variant 3 draw 2718281828   (a check_drawn check)
 //
+// and, before it, "#! history KIND" (a finding that depends on the
+// implementation's history, confirm_finding.h) or "#! mesh" (a user's mesh
+// as `certify --mesh` judged it, mesh_certification.h).
+//
 // Spec: docs/certify.md "Replaying a failure", docs/commands.md 1
 // (comments); capabilities as in docs/adapters.md section 5.
 //
@@ -26,7 +30,7 @@
 #include <vector>
 
 #include "command_text.h"
-#include "runner.h"
+#include "program.h"
 
 namespace vgc {
 

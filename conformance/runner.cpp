@@ -1004,15 +1004,6 @@ void decide_clauses(const RunOptions& o, const RouteLimits& limits, RunResult* r
 
 }  // namespace
 
-bool clause_selected(const std::string& glob, std::string_view id) {
-  const std::string name(id);
-  std::stringstream ss(glob.empty() ? "*" : glob);
-  std::string pattern;
-  while (std::getline(ss, pattern, ','))
-    if (!pattern.empty() && fnmatch(pattern.c_str(), name.c_str(), 0) == 0) return true;
-  return false;
-}
-
 std::uint64_t property_seed(std::uint64_t run_seed, std::string_view property_id) {
   std::uint64_t h = 1469598103934665603ull;  // FNV-1a
   for (unsigned char ch : property_id) {

@@ -10,7 +10,7 @@
 
 #include <string>
 
-#include "check_step.h"
+#include "finding.h"
 #include "clause.h"
 
 namespace vgc::fuzz {

@@ -50,7 +50,7 @@
 #include "command_binary.h"
 #include "confirm_finding.h"
 #include "fast_check.h"
-#include "finding.h"
+#include "report_finding.h"
 #include "implementation.h"
 #include "live_implementation.h"
 #include "plugin_implementation.h"

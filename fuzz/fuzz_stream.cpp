@@ -19,7 +19,7 @@
 //     which is a crash).
 // Only when a check fails is the input re-run with the full check_node and
 // state_digest after every command, to name the first command that broke
-// it. Findings abort with the command file up to that command (finding.h).
+// it. Findings abort with the command file up to that command (report_finding.h).
 #include <cstddef>
 #include <cstdint>
 #include <string>
@@ -28,7 +28,7 @@
 
 #include "command_binary.h"
 #include "derived_document.h"
-#include "finding.h"
+#include "report_finding.h"
 #include "node.h"
 #include "node_invariants.h"
 #include "snapshot.h"

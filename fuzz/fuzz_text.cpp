@@ -16,7 +16,7 @@
 #include <vector>
 
 #include "command_text.h"
-#include "finding.h"
+#include "report_finding.h"
 
 namespace {
 constexpr const char* kTarget = "fuzz_text";

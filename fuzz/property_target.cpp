@@ -28,7 +28,7 @@
 
 #include "byte_cases.h"
 #include "clause.h"
-#include "finding.h"
+#include "report_finding.h"
 #include "implementation.h"
 #include "reference_implementation.h"
 

@@ -512,12 +512,15 @@ struct Session {
   std::size_t hostile_logins = 0;
 };
 
+// A login's limit. The campaign bounds a login by --timeout (a host that
+// died is found within it, not after certify's start limit); `vgc replay
+// --wire` gives its --start-timeout, as replay of a command file does.
+double login_limit(const WireFuzzOptions& o) { return o.login_timeout_s > 0 ? o.login_timeout_s : o.timeout_s; }
+
 OpenOptions open_options(const WireFuzzOptions& o) {
   OpenOptions op;
   op.timeout_seconds = o.timeout_s;
-  // A login is one of the calls --timeout bounds here (wire_fuzz.h): a host
-  // that died is found within it, not after certify's start limit.
-  op.start_timeout_seconds = o.timeout_s;
+  op.start_timeout_seconds = login_limit(o);
   if (!o.verse_bone_form.empty()) op.verse_bone_form = o.verse_bone_form;
   return op;
 }
@@ -530,7 +533,7 @@ bool login_hostile(Session* s, const WireFuzzOptions& o, std::string* why) {
   verse::ClientOptions co;
   co.name = "vgc-wire";
   if (const char* pw = std::getenv("VERSE_PASSWORD")) co.password = pw;
-  co.login_timeout_s = o.timeout_s;
+  co.login_timeout_s = login_limit(o);
   co.bone_form = s->sut->bone_form();
   co.unacknowledged_limit_s = 1.0;
   if (const verse::Status st = s->hostile->connect(s->host, s->port, co); !st.ok()) {

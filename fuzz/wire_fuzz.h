@@ -80,6 +80,8 @@ struct WireFuzzOptions {
   std::uint64_t seed = 1;
   std::uint64_t max_inputs = 0; // 0: until time_s
   double timeout_s = 5;         // per call (the probe's barrier, a login)
+  double login_timeout_s = 0;   // a login's limit; 0: timeout_s (`vgc replay --wire` passes
+                                // its --start-timeout, as certify and replay bound a start)
   std::string verse_bone_form;  // "" auto
   std::string restart;          // shell command starting a fresh host ("" none)
   std::string source_dir;       // reports/fuzz/wire/<run>/ under it ("" : $VGC_SOURCE_DIR or .)

@@ -84,7 +84,7 @@ struct ClientSession::Impl {
       if (overdue && inbox_checked) {
         connected = false;
         return Status::closed("the host has not acknowledged a packet for " +
-                              std::to_string(options.unacknowledged_limit_s) + " s: it no longer knows this session");
+                              seconds_text(options.unacknowledged_limit_s) + ": it no longer knows this session");
       }
       const bool late = now >= deadline;  // then only what has already arrived is read
       Clock::time_point wake = std::min({deadline, channel->next_resend_due(), now + std::chrono::milliseconds(50)});
@@ -208,7 +208,7 @@ Status ClientSession::connect(const std::string& host, std::uint16_t port, const
     if (now >= deadline) {
       s.socket.close();
       return Status::timeout("no Verse host answered at " + s.host.to_string() + ": it did not send " + stage_name +
-                             " within " + std::to_string(options.login_timeout_s) + " s");
+                             " within " + seconds_text(options.login_timeout_s));
     }
     Clock::time_point wake = std::min(deadline, sent_at + resend);
     if (options.while_awaiting_accept && awaiting_accept) wake = std::min(wake, nudged_at + nudge_every);

@@ -71,12 +71,6 @@ struct HostedGeometry {
 
 bool is_real64(RealFormat f) { return f == RealFormat::Real64; }
 
-std::string seconds_text(double s) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%g", s);
-  return buf;
-}
-
 // The set command that carries slot `s` of layer `lid` (type `type`) in
 // format `f` (docs/verse_wire.md section 7).
 vgc::Command slot_command(std::uint16_t lid, std::uint8_t type, std::uint32_t e, const vgc::Slot& s, RealFormat f) {
@@ -537,7 +531,7 @@ struct Host::Impl {
       if (stuck && now - s.last_heard > limit) silent.push_back(peer);
     }
     for (const PeerAddress& peer : silent)  // told too, in case only its acks were lost
-      terminate_session(peer, "silent for " + seconds_text(options.session_timeout_s) + " s", now);
+      terminate_session(peer, "silent for " + seconds_text(options.session_timeout_s), now);
     for (auto it = dropped.begin(); it != dropped.end();)
       it = now > it->second.until ? dropped.erase(it) : std::next(it);
   }

@@ -1,6 +1,8 @@
 // wire_status.cpp — see wire_status.h.
 #include "wire_status.h"
 
+#include <cstdio>
+
 namespace vgc::verse {
 
 const char* Status::code_name() const {
@@ -18,6 +20,12 @@ const char* Status::code_name() const {
 std::string Status::to_string() const {
   if (detail.empty()) return code_name();
   return std::string(code_name()) + ": " + detail;
+}
+
+std::string seconds_text(double seconds) {
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, "%g s", seconds);
+  return buffer;
 }
 
 }  // namespace vgc::verse

@@ -36,4 +36,8 @@ struct Status {
   std::string to_string() const;
 };
 
+// A limit in seconds as a person reads it in a Status detail: "2 s",
+// "0.25 s" (shortest form, "%g"), never "2.000000 s".
+std::string seconds_text(double seconds);
+
 }  // namespace vgc::verse

@@ -23,7 +23,7 @@
 #include <string>
 
 #include "mesh_arrays.h"
-#include "runner.h"
+#include "run_result.h"
 #include "svg_mesh.h"
 
 namespace vgc {

@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include "clause.h"
+#include "clause_selection.h"
 #include "clause_status.h"
 #include "command_text.h"
 #include "property.h"

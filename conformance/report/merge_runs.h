@@ -23,7 +23,7 @@
 
 #include "baseline.h"
 #include "report.h"
-#include "runner.h"
+#include "run_result.h"
 
 namespace vgc {
 

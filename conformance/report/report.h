@@ -16,7 +16,7 @@
 #include <string>
 
 #include "baseline.h"
-#include "runner.h"
+#include "run_result.h"
 #include "verdict.h"
 
 namespace vgc {

@@ -27,7 +27,7 @@
 #include <vector>
 
 #include "baseline.h"
-#include "runner.h"
+#include "run_result.h"
 
 namespace vgc {
 

@@ -53,6 +53,9 @@ check() {  # check NAME EXPECTED_RC LINE-REGEX... : certify --mesh output has ea
 check ref 0 '^  pass +MESH-CLASSIFY-1 +manifold' '^  pass +NORMALS-SPLIT-1 +normals' \
   '^  pass +SUBD-CATMARK-1 +subdivision level 1' '^  pass +SUBD-CATMARK-1 +subdivision level 2' ': conformant on grid.obj'
 
+# The proxy never answers ?digest (which certify --mesh does not ask), so
+# the replay below must ask what certify asked, no more.
+export VGC_PROXY_DIGEST_HANG=1
 "$vgc" certify --mesh grid.obj --levels 2 --impl "exec:$here/subdivision_skew_proxy.py $vgc" --reports R \
   >skew.out 2>&1; echo $? >skew.rc
 check skew 1 '^  fail +SUBD-CATMARK-1 +subdivision level 1 .*OpenSubdiv' '^  fail +SUBD-CATMARK-1 +subdivision level 2' \
@@ -72,6 +75,10 @@ line=$(sed -n 's/^ *replay SUBD-CATMARK-1: //p' skew.out)
 [ -n "$line" ] || { cat skew.out >&2; fail "skew: no replay line on the console"; }
 (cd / && eval "$line" >"$OLDPWD/skew.replay" 2>&1); rc=$?
 [ $rc = 1 ] && grep -q SUBD-CATMARK-1 skew.replay || { cat skew.replay >&2; fail "skew: the printed replay line did not show the finding from / (exit $rc)"; }
+grep -q '^#! mesh$' "$run/counterexamples/SUBD-CATMARK-1.vgc" || fail "skew: the counterexample is not marked #! mesh"
+# Replay is certify for one program: the same finding in the same words.
+grep -q "^fail SUBD-CATMARK-1 (MUST)" skew.replay || { cat skew.replay >&2; fail "skew: replay does not say fail SUBD-CATMARK-1 (MUST)"; }
+unset VGC_PROXY_DIGEST_HANG
 
 # A right answer later than vgc's --timeout (3 s: a loaded machine starts the
 # proxy in over 1 s): a timeout naming what to raise,

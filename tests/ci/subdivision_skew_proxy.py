@@ -7,16 +7,23 @@ stand-in for a node whose subdivision code is broken on real meshes
 (tests/ci/certify_mesh_test.sh).
 
 With VGC_PROXY_SLOW=SECONDS it skews nothing: it answers `?subdivide 2`
-SECONDS late (a host too slow for vgc's --timeout, whose answer is right)."""
+SECONDS late (a host too slow for vgc's --timeout, whose answer is right).
+
+With VGC_PROXY_DIGEST_HANG=1 it claims ?digest (the reference's
+?capabilities) but never answers it: `certify --mesh` asks no ?digest, so
+`vgc replay` of its counterexample must not either (issue 31 item 5)."""
 import os
 import subprocess
 import sys
 import time
 
 slow = float(os.environ.get("VGC_PROXY_SLOW", "0"))
+digest_hang = os.environ.get("VGC_PROXY_DIGEST_HANG") == "1"
 
 child = subprocess.Popen([sys.argv[1], "serve"], stdin=subprocess.PIPE, stdout=subprocess.PIPE, text=True, bufsize=1)
 for line in sys.stdin:
+    if digest_hang and line.strip() == "?digest":
+        time.sleep(3600)
     child.stdin.write(line)
     child.stdin.flush()
     request = line.strip()

@@ -10,6 +10,7 @@
 #     and passes against the reference host;
 #  3. a host killed during the campaign: a timeout finding, not confirmed
 #     (no --restart), the campaign stops and says why;
+#     `vgc replay --wire` against the dead port names its --start-timeout;
 #  4. the same with --restart (a new host on the port): the campaign goes on
 #     to --max-inputs after the finding.
 set -u
@@ -74,6 +75,13 @@ assert f[0]["confirmation"].startswith("not confirmed:") and "--restart" in f[0]
 assert "--restart" in s["stopped_because"], s["stopped_because"]
 assert s["wall_s"] < 25, s["wall_s"]
 PY
+
+# 3b. `vgc replay --wire` bounds its login by --start-timeout, as replay of a
+# command file does (issue 31): against the dead port it says that limit.
+r=$("$vgc" replay --wire "$transcript" --impl "verse:127.0.0.1:$port" --timeout 1 --start-timeout 2 2>&1)
+rc=$?
+[ "$rc" -eq 2 ] || fail "replay --wire against a dead host: expected exit 2, got $rc: $r"
+printf '%s\n' "$r" | grep -q -- "within 2 s (--start-timeout)" || fail "replay --wire against a dead host does not name its 2 s --start-timeout: $r"
 
 # 4. The same with --restart: a new host on the same port; the campaign goes on.
 start_verse_host "$vgc" "" 127.0.0.1:0 "$work/dies2.log" || fail "the host did not start"

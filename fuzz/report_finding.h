@@ -1,4 +1,4 @@
-// finding.h — how a fuzz target reports what it found.
+// report_finding.h — how a fuzz target reports what it found.
 //
 // Spec: docs/fuzzing.md "Counterexamples".
 //

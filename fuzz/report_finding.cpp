@@ -1,5 +1,5 @@
-// finding.cpp — see finding.h.
-#include "finding.h"
+// report_finding.cpp — see report_finding.h.
+#include "report_finding.h"
 
 #include <cstdio>
 #include <cstdlib>

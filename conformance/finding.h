@@ -1,0 +1,52 @@
+// finding.h — a deviation as every layer above the reference speaks of it:
+// the clause it is blamed on, its kind, and what the implementation showed.
+//
+// Spec: the clause catalog (clause.h): a finding names one clause id.
+//
+// Rationale: vocabulary at the bottom (issue 29). A finding is made by
+// check_step, the capability checks and the mesh build, shrunk by the
+// runner, confirmed by confirm_finding, replayed by `vgc replay`, written
+// by the report writers and read back by `vgc merge`: none of them should
+// have to include a driver to name it. Plain data: no behaviour but its
+// name.
+#pragma once
+
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "rule.h"
+
+namespace vgc {
+
+// NotJudged is no finding: a capability check (capability.h) returns it
+// when its oracle cannot be asked about the case (OpenSubdiv refuses the
+// mesh), `message` saying why; certify counts the case as not judged and
+// `vgc replay` says so instead of "passes".
+enum class FindingStatus { Fail, Crash, Timeout, NotJudged };
+const char* finding_status_name(FindingStatus s);  // "fail", "crash", "timeout", "not-judged"
+
+struct Finding {
+  Finding() = default;
+  Finding(std::string clause_id, FindingStatus s, std::string text)
+      : clause(std::move(clause_id)), status(s), message(std::move(text)) {}
+
+  std::string clause;          // catalog id
+  FindingStatus status = FindingStatus::Fail;
+  std::string message;         // expected versus observed, one paragraph
+  // What the implementation showed, for a picture of the finding
+  // (report_html.cpp): the document that differed ("snapshot", "derived")
+  // or the capability request it answered ("?subdivide 2"), the whole text
+  // it printed, and for a document the first differing lines (either may be
+  // empty: a line missing or extra). All empty when no document differed
+  // (a verdict, a crash).
+  std::string shown_by;
+  std::string observed_document;
+  std::string expected_line, observed_line;
+  // The reference node's rules the finding is blamed on (attribution.h),
+  // the blamed one first; empty for a finding no node rule decided (a
+  // derived line, a capability check, a fresh node).
+  std::vector<Rule> rules;
+};
+
+}  // namespace vgc
