@@ -52,7 +52,8 @@ struct ServeOptions {
 };
 
 // The implementation behind one served Verse node: every answer is
-// dropped (the wire has none); the host reads the snapshot to see changes.
+// dropped (the wire has none); the host reads the snapshot, or the digest
+// that confirms its own prediction, to see changes.
 class ImplementationNode : public verse::HostedNode {
  public:
   explicit ImplementationNode(std::unique_ptr<Implementation> impl) : impl_(std::move(impl)) {}
@@ -69,6 +70,19 @@ class ImplementationNode : public verse::HostedNode {
       return false;
     }
     *text = std::move(d.text);
+    return true;
+  }
+  // ?digest when the implementation offers it (an exec program claiming
+  // `digest`, the reference): the host then follows the node at the cost of
+  // each command (followed_node.h).
+  bool offers_digest() override { return impl_->offers_digest(); }
+  bool snapshot_digest(std::uint64_t* digest, std::string* error) override {
+    const DigestAnswer d = impl_->digest();
+    if (d.status != CallStatus::Ok) {
+      *error = std::string(call_status_name(d.status)) + ": " + d.detail;
+      return false;
+    }
+    *digest = d.digests.snapshot;
     return true;
   }
 

@@ -27,6 +27,26 @@ struct ClientSession::Impl {
   std::uint64_t barriers = 0;
   Counters counters;
   std::string last_protocol_error;
+  std::string dropped;  // why the session ended without our asking: every later call says so
+
+  // Not connected: why (Dropped when the session ended without our asking).
+  Status not_connected() const {
+    if (!dropped.empty()) return Status::dropped(dropped);
+    return Status::closed("not connected");
+  }
+
+  // The session ends without our asking: the host dropped it, or it fell
+  // out of step (then the host is told, as r6 tells a peer it ends).
+  Status end_dropped(const std::string& why, bool tell_host) {
+    if (tell_host && channel) {
+      std::string clear;
+      if (encode_command(wire::ConnectTerminate{"vgc client: out of step with the host"}, &clear).ok())
+        (void)socket.send_to(host, channel->raw_datagram(channel->take_raw_id(), clear));
+    }
+    connected = false;
+    dropped = why;
+    return Status::dropped(why);
+  }
 
   void note_protocol_error(const Status& st) {
     ++counters.protocol_errors;
@@ -34,7 +54,7 @@ struct ClientSession::Impl {
   }
 
   Status flush() {
-    if (!channel) return Status::closed("not connected");
+    if (!channel) return not_connected();
     for (const std::string& d : channel->take_datagrams(Clock::now())) {
       Status st = socket.send_to(host, d);
       if (!st.ok()) return st;
@@ -44,7 +64,7 @@ struct ClientSession::Impl {
 
   // Sends, receives and resends until done() or the deadline.
   Status pump(Clock::time_point deadline, const std::function<bool()>& done, const char* waiting_for) {
-    if (!connected) return Status::closed("not connected");
+    if (!connected) return not_connected();
     std::size_t drained_late = 0;  // a host flooding us cannot keep a late call going
     // A packet unacknowledged past the limit ends the session only once
     // nothing more has arrived: the ack may be waiting, unread, in the
@@ -93,11 +113,14 @@ struct ClientSession::Impl {
       std::vector<WireCommand> got;
       st = channel->on_datagram(reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size(), Clock::now(), &got);
       if (!st.ok()) note_protocol_error(st);
+      if (channel->out_of_step())
+        return end_dropped("this session fell out of step with the host, which can no longer be caught up: " +
+                               channel->out_of_step_detail() + "; log in again",
+                           true);
       for (WireCommand& c : got) {
-        if (const auto* t = std::get_if<wire::ConnectTerminate>(&c)) {
-          connected = false;
-          return Status::closed("the host ended the session: " + t->bye);
-        }
+        if (const auto* t = std::get_if<wire::ConnectTerminate>(&c))
+          return end_dropped("the host dropped this session (connect_terminate \"" + t->bye + "\"); log in again",
+                             false);
         track_index(c);
         inbox.push_back(std::move(c));
       }
@@ -115,7 +138,7 @@ struct ClientSession::Impl {
   }
 
   Status send(const WireCommand& c, bool own_packet = false) {
-    if (!connected) return Status::closed("not connected");
+    if (!connected) return not_connected();
     std::string bytes;
     Status st = encode_command(c, &bytes, options.bone_form);
     if (!st.ok()) return st;
@@ -141,6 +164,7 @@ static Clock::time_point deadline_after(double seconds) {
 Status ClientSession::connect(const std::string& host, std::uint16_t port, const ClientOptions& options) {
   Impl& s = *impl_;
   disconnect();
+  s.dropped.clear();
   s.options = options;
   KeyBytes block{};
   if (!make_login_block(options.name, options.password, &block))
@@ -282,7 +306,8 @@ Status ClientSession::create_geometry_nodes(std::size_t count, std::vector<std::
   // What the index announced before this request is not its answer; the
   // host answers in order, so the new nodes' node_creates come after.
   Status st = s.pump(Clock::now(), [] { return false; }, "nothing");  // reads what has already arrived
-  if (st.code == Status::Code::Closed || st.code == Status::Code::NetworkError) return st;
+  if (st.code == Status::Code::Closed || st.code == Status::Code::Dropped || st.code == Status::Code::NetworkError)
+    return st;
   s.new_mine.clear();
   for (std::size_t i = 0; i < count; ++i) {
     std::string bytes;
@@ -308,23 +333,23 @@ Status ClientSession::send_geometry(std::uint32_t node_id, const vgc::Command& c
 Status ClientSession::send(const WireCommand& command, bool own_packet) { return impl_->send(command, own_packet); }
 Status ClientSession::send_raw(std::uint32_t id, const std::string& clear) {
   Impl& s = *impl_;
-  if (!s.connected || !s.channel) return Status::closed("not connected");
+  if (!s.connected || !s.channel) return s.not_connected();
   return s.socket.send_to(s.host, s.channel->raw_datagram(id, clear));
 }
 std::uint32_t ClientSession::take_packet_id() { return impl_->channel ? impl_->channel->take_raw_id() : 0; }
 Status ClientSession::nudge() {
   Impl& s = *impl_;
-  if (!s.connected || !s.channel) return Status::closed("not connected");
+  if (!s.connected || !s.channel) return s.not_connected();
   return s.socket.send_to(s.host, s.channel->ack_only_datagram());
 }
 Status ClientSession::send_datagram(const std::string& bytes) {
   Impl& s = *impl_;
-  if (!s.connected) return Status::closed("not connected");
+  if (!s.connected) return s.not_connected();
   return s.socket.send_to(s.host, bytes);
 }
 Status ClientSession::send_burst(const std::vector<WireCommand>& commands) {
   Impl& s = *impl_;
-  if (!s.connected) return Status::closed("not connected");
+  if (!s.connected) return s.not_connected();
   for (const WireCommand& c : commands) {
     std::string bytes;
     Status st = encode_command(c, &bytes, s.options.bone_form);
@@ -347,12 +372,28 @@ Status ClientSession::receive(WireCommand* out, double timeout_s) {
 
 Status ClientSession::barrier(std::uint32_t node_id, double timeout_s, std::vector<WireCommand>* before) {
   Impl& s = *impl_;
+  const Clock::time_point deadline = deadline_after(timeout_s);
+  // A packet lost on the way (either way) is naked and its commands come
+  // again under a later id, possibly after the echo: then the round is
+  // made again, after them (docs/verse_wire.md section 6).
+  for (;;) {
+    if (!s.channel) return s.not_connected();
+    const std::size_t naks = s.channel->counters().naks_sent, naked = s.channel->counters().naked_resent;
+    Status st = barrier_once(node_id, deadline, before);
+    if (!st.ok() || !s.channel) return st;
+    if (s.channel->counters().naks_sent == naks && s.channel->counters().naked_resent == naked) return {};
+  }
+}
+
+Status ClientSession::barrier_once(std::uint32_t node_id, std::chrono::steady_clock::time_point deadline,
+                                   std::vector<WireCommand>* before) {
+  Impl& s = *impl_;
   const std::string token = "vgc-barrier-" + std::to_string(s.avatar) + "-" + std::to_string(++s.barriers);
   Status st = s.send(wire::NodeNameSet{node_id, token}, true);
   if (!st.ok()) return st;
   std::size_t echo_at = 0;
   st = s.pump(
-      deadline_after(timeout_s),
+      deadline,
       [&] {
         for (std::size_t i = 0; i < s.inbox.size(); ++i) {
           const auto* n = std::get_if<wire::NodeNameSet>(&s.inbox[i]);

@@ -21,6 +21,7 @@
 //   std::vector<WireCommand> seen; s.barrier(node, 5.0, &seen);  // everything the host sent first
 #pragma once
 
+#include <chrono>
 #include <cstddef>
 #include <cstdint>
 #include <functional>
@@ -140,7 +141,9 @@ class ClientSession {
   // appended to *before in arrival order (the queue is emptied); the echo
   // itself is not. So once barrier() returns ok, everything the host sent
   // in answer to commands sent before it has been seen, in the host's order
-  // (docs/verse_wire.md section 6 says what this assumes).
+  // (docs/verse_wire.md section 6 says what this assumes). When a packet
+  // was lost on the way meanwhile (naked, its commands sent again later)
+  // the round trip is made again, so what they caused is seen too.
   Status barrier(std::uint32_t node_id, double timeout_s, std::vector<WireCommand>* before);
 
   // Seconds since the oldest packet the host has not acknowledged was first
@@ -163,6 +166,8 @@ class ClientSession {
   const std::string& last_protocol_error() const;
 
  private:
+  Status barrier_once(std::uint32_t node_id, std::chrono::steady_clock::time_point deadline,
+                      std::vector<WireCommand>* before);
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };

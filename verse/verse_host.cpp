@@ -6,11 +6,14 @@
 #include <algorithm>
 #include <chrono>
 #include <cfloat>
+#include <cstdio>
 #include <ctime>
 #include <map>
 #include <set>
 #include <thread>
 
+#include "document_digest.h"
+#include "followed_node.h"
 #include "node.h"
 #include "packet_order.h"
 #include "snapshot.h"
@@ -24,16 +27,24 @@ namespace {
 class ReferenceHostedNode : public HostedNode {
  public:
   bool apply(const vgc::Command& command, std::string*) override {
-    node_.apply(command);
+    node_.apply(command, nullptr, &changes_);
+    digest_.update(node_, changes_);
     return true;
   }
   bool snapshot(std::string* text, std::string*) override {
     *text = print_snapshot(node_);
     return true;
   }
+  bool offers_digest() override { return true; }
+  bool snapshot_digest(std::uint64_t* digest, std::string*) override {
+    *digest = digest_.digests().snapshot;
+    return true;
+  }
 
  private:
   vgc::Node node_;
+  vgc::NodeDigest digest_;
+  vgc::ChangeLog changes_;
 };
 
 struct Session {
@@ -55,7 +66,7 @@ struct HostedGeometry {
   std::uint32_t owner = 0;  // avatar of the session that created it
   std::string name;
   std::unique_ptr<HostedNode> node;
-  NodeState state;
+  FollowedNode view;  // its stored state as the host knows it
 };
 
 bool is_real64(RealFormat f) { return f == RealFormat::Real64; }
@@ -107,6 +118,55 @@ struct Host::Impl {
   std::map<std::uint32_t, HostedGeometry> nodes;
   std::uint32_t next_node_id = 0;
   Counters counters;
+
+  // Sessions the host ended on its own (out of step, silent): a peer still
+  // sending gets connect_terminate again, at most once a resend interval,
+  // for session_timeout_s (the first may have been lost). At most 256.
+  struct Dropped {
+    std::unique_ptr<Channel> channel;  // its key and next packet id
+    std::string bye;
+    Clock::time_point until, last_sent;
+  };
+  std::map<PeerAddress, Dropped> dropped;
+
+  Clock::duration seconds(double s) const {
+    return std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(s));
+  }
+
+  void send_terminate(const PeerAddress& peer, Dropped& d, Clock::time_point now) {
+    std::string clear;
+    if (!encode_command(wire::ConnectTerminate{d.bye}, &clear).ok()) return;
+    (void)socket.send_to(peer, d.channel->raw_datagram(d.channel->take_raw_id(), clear));
+    ++counters.packets_sent;
+    ++counters.terminates_sent;
+    d.last_sent = now;
+  }
+
+  // Ends a session the host can no longer serve and tells its client, in
+  // a data packet under the session's next id, as r6 sends
+  // connect_terminate (v_connect.c v_send_hidden_connect_terminate).
+  void terminate_session(const PeerAddress& peer, const std::string& why, Clock::time_point now) {
+    auto it = sessions.find(peer);
+    if (it == sessions.end()) return;
+    Session& s = it->second;
+    log("session " + peer.to_string() + " dropped: " + why);
+    if (s.connected && s.channel) {
+      flush(s, now);
+      Dropped d;
+      d.channel = std::move(s.channel);
+      d.bye = "vgc serve --verse dropped this session: " + why;
+      d.until = now + seconds(options.session_timeout_s);
+      send_terminate(peer, d, now);
+      if (dropped.size() >= 256 && !dropped.count(peer)) {
+        auto oldest = dropped.begin();
+        for (auto i = dropped.begin(); i != dropped.end(); ++i)
+          if (i->second.until < oldest->second.until) oldest = i;
+        dropped.erase(oldest);
+      }
+      dropped[peer] = std::move(d);
+    }
+    sessions.erase(it);
+  }
 
   void log(const std::string& s) const {
     if (options.log) options.log(s);
@@ -163,6 +223,7 @@ struct Host::Impl {
         return;
       }
       if (it != sessions.end()) drop_session(from, "a new login from the same address");
+      dropped.erase(from);
       Session s;
       s.peer = from;
       s.avatar = new_node_id();
@@ -231,18 +292,20 @@ struct Host::Impl {
   }
 
   void send_node_content(Session& s, const HostedGeometry& g) {
-    for (const auto& [lid, l] : g.state.layers) send_to(s, wire::Geometry{g.id, layer_command(lid, l)});
-    send_to(s, wire::Geometry{g.id, cmd::CreaseSetVertex{g.state.crease_vertex.layer, g.state.crease_vertex.def_crease}});
-    send_to(s, wire::Geometry{g.id, cmd::CreaseSetEdge{g.state.crease_edge.layer, g.state.crease_edge.def_crease}});
-    for (const auto& [bid, b] : g.state.bones) send_to(s, wire::Geometry{g.id, bone_command(b)});
+    const NodeState& state = g.view.state();
+    for (const auto& [lid, l] : state.layers) send_to(s, wire::Geometry{g.id, layer_command(lid, l)});
+    send_to(s, wire::Geometry{g.id, cmd::CreaseSetVertex{state.crease_vertex.layer, state.crease_vertex.def_crease}});
+    send_to(s, wire::Geometry{g.id, cmd::CreaseSetEdge{state.crease_edge.layer, state.crease_edge.def_crease}});
+    for (const auto& [bid, b] : state.bones) send_to(s, wire::Geometry{g.id, bone_command(b)});
     send_to(s, wire::NodeNameSet{g.id, g.name});
   }
 
   void send_layer_content(Session& s, const HostedGeometry& g, std::uint16_t lid, RealFormat f) {
-    auto l = g.state.layers.find(lid);
-    if (l == g.state.layers.end()) return;
-    auto slots = g.state.slots.find(lid);
-    if (slots == g.state.slots.end()) return;
+    const NodeState& state = g.view.state();
+    auto l = state.layers.find(lid);
+    if (l == state.layers.end()) return;
+    auto slots = state.slots.find(lid);
+    if (slots == state.slots.end()) return;
     const vgc::Slot def = layer_default_slot(lid, l->second);
     for (const auto& [e, slot] : slots->second)
       if (lid <= 1 || !slot_equal(l->second.type, slot, def))
@@ -267,12 +330,12 @@ struct Host::Impl {
         log("node_create failed: " + error);
         return;
       }
-      std::string text;
-      Status st = read_state(*g.node, &g.state);
+      Status st = g.view.open(*g.node, options.verify_min_commands);
       if (!st.ok()) {
         log("node_create failed: the new node's snapshot: " + st.detail);
         return;
       }
+      counters.whole_snapshots += g.view.counters().whole_reads;
       g.id = new_node_id();
       g.owner = s.avatar;
       g.name = "Geometry_Node_" + std::to_string(g.id);
@@ -314,31 +377,28 @@ struct Host::Impl {
 
   bool terminated = false;
 
-  Status read_state(HostedNode& node, NodeState* state) {
-    std::string text, error;
-    if (!node.snapshot(&text, &error)) return Status::protocol_error("the node gave no snapshot: " + error);
-    return parse_snapshot_state(text, state);
-  }
-
   void on_geometry(Session& s, const wire::Geometry& x) {
     auto it = nodes.find(x.node_id);
     if (it == nodes.end()) return;  // r6: a command for no node is dropped
     HostedGeometry& g = it->second;
     std::string error;
-    if (!g.node->apply(x.command, &error)) {
+    const bool failed = !g.node->apply(x.command, &error);
+    if (failed)
       log("node " + std::to_string(g.id) + " failed on " + std::string(command_verb(x.command)) + ": " + error);
-      return;
-    }
-    NodeState after;
-    Status st = read_state(*g.node, &after);
+    StateChange change;
+    const FollowedNode::Counters was = g.view.counters();
+    Status st = g.view.follow(*g.node, x.command, failed, &change);
+    const FollowedNode::Counters now = g.view.counters();
+    counters.followed_by_digest += now.by_digest - was.by_digest;
+    counters.whole_snapshots += now.whole_reads - was.whole_reads;
     if (!st.ok()) {
       log("node " + std::to_string(g.id) + ": " + st.detail);
       return;
     }
-    broadcast_changes(g, after);
-    g.state = std::move(after);
+    if (failed) return;
+    broadcast_changes(g, change.before, change.after);
     if (const auto* sub = std::get_if<cmd::LayerSubscribe>(&x.command)) {
-      if (sub->real_format <= 1 && g.state.layers.count(sub->layer_id)) {
+      if (sub->real_format <= 1 && g.view.state().layers.count(sub->layer_id)) {
         const RealFormat f = static_cast<RealFormat>(sub->real_format);
         s.layer_subs[{g.id, sub->layer_id}] = f;
         send_layer_content(s, g, sub->layer_id, f);
@@ -348,10 +408,11 @@ struct Host::Impl {
     }
   }
 
-  // Section 7: each difference between g.state and `after`, to the sessions
-  // that subscribed to the node (layers, creases, bones) or to the layer (data).
-  void broadcast_changes(HostedGeometry& g, const NodeState& after) {
-    const NodeState& before = g.state;
+  // Section 7: each difference between `before` and `after` (the whole
+  // states, or the parts a command changed: followed_node.h), to the
+  // sessions that subscribed to the node (layers, creases, bones) or to the
+  // layer (data).
+  void broadcast_changes(HostedGeometry& g, const NodeState& before, const NodeState& after) {
     std::vector<vgc::Command> node_level;
     std::set<std::uint16_t> reset_layers;  // created anew, re-typed or destroyed: their subscriptions end (r6)
     for (const auto& [lid, l] : after.layers) {
@@ -424,6 +485,12 @@ struct Host::Impl {
     const auto* data = reinterpret_cast<const std::uint8_t*>(bytes.data());
     const bool login_id = bytes.size() >= 4 && data[0] == 0 && data[1] == 0 && data[2] == 0 && data[3] <= 1;
     auto it = sessions.find(from);
+    if (!login_id && it == sessions.end()) {
+      if (auto d = dropped.find(from); d != dropped.end()) {  // a peer still sending after its session ended
+        if (now - d->second.last_sent >= seconds(options.resend_interval_s)) send_terminate(from, d->second, now);
+        return;
+      }
+    }
     if (login_id || it == sessions.end() || !it->second.connected) {
       on_login_packet(from, data, bytes.size(), now);
       return;
@@ -442,6 +509,10 @@ struct Host::Impl {
       ++counters.protocol_errors;
       log("protocol-error from " + from.to_string() + ": " + st.detail);
     }
+    if (s.channel->out_of_step()) {  // every later packet would be refused too: end it and say so
+      terminate_session(from, s.channel->out_of_step_detail() + "; log in again", now);
+      return;
+    }
     terminated = false;
     order_packet(&got);  // one packet: creations before their uses (packet_order.h)
     for (WireCommand& c : got) {
@@ -452,18 +523,17 @@ struct Host::Impl {
   }
 
   void service(Clock::time_point now) {
-    const auto limit = std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(options.session_timeout_s));
-    for (auto it = sessions.begin(); it != sessions.end();) {
-      Session& s = it->second;
+    const auto limit = seconds(options.session_timeout_s);
+    std::vector<PeerAddress> silent;
+    for (auto& [peer, s] : sessions) {
       flush(s, now);
       const bool stuck = !s.connected || (s.channel && !s.channel->all_acknowledged());
-      if (stuck && now - s.last_heard > limit) {
-        log("session " + s.peer.to_string() + " dropped: silent for " + seconds_text(options.session_timeout_s));
-        it = sessions.erase(it);
-      } else {
-        ++it;
-      }
+      if (stuck && now - s.last_heard > limit) silent.push_back(peer);
     }
+    for (const PeerAddress& peer : silent)  // told too, in case only its acks were lost
+      terminate_session(peer, "silent for " + seconds_text(options.session_timeout_s), now);
+    for (auto it = dropped.begin(); it != dropped.end();)
+      it = now > it->second.until ? dropped.erase(it) : std::next(it);
   }
 
   Clock::time_point next_due() const {

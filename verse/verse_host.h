@@ -7,11 +7,15 @@
 // Rationale: the node behind the wire is any HostedNode: the reference, or
 // (from the command line) any vgc Implementation, a faulty plugin included.
 // The host never trusts it to say what changed: after every geometry
-// command it compares the node's snapshot (reference/node/snapshot.h) before
-// and after and sends each subscriber the commands that carry the change,
-// the way an r6 host sends what it applied. So a client sees exactly the
-// stored state, whatever the node did. A command the node rejects changes
-// nothing and sends nothing, as on r6 (no error on the wire).
+// command it works out the node's snapshot (reference/node/snapshot.h)
+// before and after and sends each subscriber the commands that carry the
+// change, the way an r6 host sends what it applied. So a client sees
+// exactly the stored state, whatever the node did. A command the node
+// rejects changes nothing and sends nothing, as on r6 (no error on the
+// wire). What changed is found at the cost of the command, not of the
+// node's size, when the node offers a snapshot digest that confirms what
+// the host's own reference predicts; otherwise by reading the whole
+// snapshot (followed_node.h says how, and why that keeps the guarantee).
 #pragma once
 
 #include <atomic>
@@ -36,6 +40,15 @@ class HostedNode {
   virtual bool apply(const vgc::Command& command, std::string* error) = 0;
   // The node's whole state as the snapshot document of reference/node/snapshot.h.
   virtual bool snapshot(std::string* text, std::string* error) = 0;
+  // Whether snapshot_digest() answers: the digest of the snapshot it would
+  // print now (document_digest.h; `?digest` of an exec program). A node
+  // without one is read whole after every command (followed_node.h).
+  virtual bool offers_digest() { return false; }
+  virtual bool snapshot_digest(std::uint64_t* digest, std::string* error) {
+    (void)digest;
+    *error = "no digest offered";
+    return false;
+  }
 };
 
 // The reference node (reference/node/node.h) as a HostedNode.
@@ -59,8 +72,14 @@ struct HostOptions {
   bool reuse_node_ids = false;
   BoneForm bone_form = BoneForm::Spec;
   bool strict_bone_form = false;
-  double session_timeout_s = 30.0;     // a session silent this long is dropped (r6: 30 s)
+  // A session silent this long (while it owes acks or has not finished its
+  // login) is dropped (r6: 30 s). A dropped session's client is told
+  // (connect_terminate), and told again for this long if it keeps sending.
+  double session_timeout_s = 30.0;
   double resend_interval_s = 0.25;
+  // A node followed by its digest (followed_node.h) is still read whole at
+  // least every max(this, its snapshot's lines) commands.
+  std::size_t verify_min_commands = 1024;
 };
 
 class Host {
@@ -84,6 +103,12 @@ class Host {
 
   struct Counters {
     std::size_t logins = 0, nodes = 0, packets_received = 0, packets_sent = 0, protocol_errors = 0;
+    // Geometry commands whose changes the node's digest confirmed, and
+    // whole snapshots read (followed_node.h), over every node.
+    std::size_t followed_by_digest = 0, whole_snapshots = 0;
+    // connect_terminate packets sent to sessions the host dropped (out of
+    // step: more than kMaxPacketGap packets lost in a row; silent).
+    std::size_t terminates_sent = 0;
   };
   Counters counters() const;
 

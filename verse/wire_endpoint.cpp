@@ -240,6 +240,7 @@ Status Channel::on_datagram(const std::uint8_t* data, std::size_t size, Clock::t
     } else if (const auto* n = std::get_if<wire::PacketNak>(&c)) {
       auto it = history_.find(n->packet_id);
       if (it != history_.end()) {  // its commands go out again, first, in a new packet
+        ++counters_.naked_resent;
         history_bytes_ -= it->second.commands.size();
         std::vector<Queued> again;
         const bool alone = it->second.parts.size() == 1;  // a packet of one (a barrier) stays one
@@ -258,9 +259,15 @@ Status Channel::on_datagram(const std::uint8_t* data, std::size_t size, Clock::t
     return st;
   }
   const std::uint32_t gap = p.id - expected_in_id_;
-  if (gap > kMaxPacketGap)
-    return Status::protocol_error("packet id " + std::to_string(p.id) + " is " + std::to_string(gap) +
-                                  " past the expected " + std::to_string(expected_in_id_));
+  if (gap > kMaxPacketGap) {
+    const std::string why = "packet id " + std::to_string(p.id) + " is " + std::to_string(gap) + " past the expected " +
+                            std::to_string(expected_in_id_) + " (more than " + std::to_string(kMaxPacketGap) +
+                            " packets lost in a row)";
+    // Only a packet that reads as one under the session's key (garbage
+    // under a far id, from anyone, is only a protocol error).
+    if (out_of_step_.empty() && st.ok()) out_of_step_ = why;
+    return Status::protocol_error(why);
+  }
   for (std::uint32_t id = expected_in_id_; id != p.id; ++id) {
     ack_nak_.push_back(wire::PacketNak{id});
     ++counters_.naks_sent;

@@ -70,8 +70,10 @@ inline constexpr std::size_t kWindowBytes = 48 * 1024;
 // A packet id up to this past the expected one: every id in between is
 // naked, as r6 does (a burst the kernel dropped, 2,000 packets and more,
 // resynchronises); further is a protocol error (a hostile id must not cost
-// 4 * 10^9 naks). It was 1,024, and a session that lost more was stuck for
-// good (issue 28).
+// 4 * 10^9 naks) and the channel is out of step for good (out_of_step()):
+// its owner ends the session and says so to the peer (connect_terminate),
+// rather than leaving it stuck. It was 1,024, and a session that lost more
+// was stuck for good, its peer never told (issue 28).
 inline constexpr std::uint32_t kMaxPacketGap = 65536;
 
 class Channel {
@@ -119,6 +121,10 @@ class Channel {
   void set_tap(std::function<void(const std::uint8_t*, std::size_t)> tap) { tap_ = std::move(tap); }
 
   bool all_acknowledged() const { return history_.empty() && queue_.empty(); }
+  // A packet came more than kMaxPacketGap past the expected id: every later
+  // one is refused too, so the session cannot go on. The detail says which.
+  bool out_of_step() const { return !out_of_step_.empty(); }
+  const std::string& out_of_step_detail() const { return out_of_step_; }
   Clock::time_point next_resend_due() const;  // max() when nothing is unacknowledged
   // When the oldest packet still unacknowledged was first sent; max() when none.
   Clock::time_point oldest_unacknowledged() const;
@@ -126,6 +132,7 @@ class Channel {
 
   struct Counters {
     std::size_t sent = 0, received = 0, resends = 0, naks_sent = 0, duplicates = 0;
+    std::size_t naked_resent = 0;  // packets the peer naked, their commands queued again
     std::size_t other_bone_form = 0;  // packets parsed in the other bone_create form
   };
   const Counters& counters() const { return counters_; }
@@ -161,6 +168,7 @@ class Channel {
   std::function<void(const std::uint8_t*, std::size_t)> tap_;
   BoneForm bone_form_ = BoneForm::Spec;
   bool either_bone_form_ = false;
+  std::string out_of_step_;
 };
 
 }  // namespace vgc::verse

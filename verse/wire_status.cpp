@@ -12,6 +12,7 @@ const char* Status::code_name() const {
     case Code::Timeout: return "timeout";
     case Code::NetworkError: return "network-error";
     case Code::Closed: return "closed";
+    case Code::Dropped: return "dropped";
   }
   return "unknown";
 }

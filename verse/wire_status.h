@@ -7,7 +7,10 @@
 // A malformed or hostile packet is Code::ProtocolError with a sentence
 // saying what was wrong and where; a peer that stops answering is
 // Code::Timeout; an operating-system failure (socket, bind, resolve) is
-// Code::NetworkError; a peer that ended the session is Code::Closed.
+// Code::NetworkError; a peer that ended the session is Code::Closed, and a
+// host that dropped this client's session (it sent connect_terminate: the
+// session fell too far behind, went silent, ...) is Code::Dropped, with the
+// host's words.
 #pragma once
 
 #include <string>
@@ -16,7 +19,7 @@
 namespace vgc::verse {
 
 struct Status {
-  enum class Code { Ok, ProtocolError, Timeout, NetworkError, Closed };
+  enum class Code { Ok, ProtocolError, Timeout, NetworkError, Closed, Dropped };
   Code code = Code::Ok;
   std::string detail;  // empty when ok(); otherwise one line for a person
 
@@ -26,7 +29,8 @@ struct Status {
   static Status timeout(std::string d) { return {Code::Timeout, std::move(d)}; }
   static Status network_error(std::string d) { return {Code::NetworkError, std::move(d)}; }
   static Status closed(std::string d) { return {Code::Closed, std::move(d)}; }
-  // "ok", "protocol-error", "timeout", "network-error", "closed".
+  static Status dropped(std::string d) { return {Code::Dropped, std::move(d)}; }
+  // "ok", "protocol-error", "timeout", "network-error", "closed", "dropped".
   const char* code_name() const;
   // "<code_name>: <detail>" (just the code name when detail is empty).
   std::string to_string() const;

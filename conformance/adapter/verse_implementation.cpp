@@ -67,6 +67,7 @@ CallStatus call_status_of(const verse::Status& s) {
     case verse::Status::Code::Timeout: return CallStatus::Timeout;
     case verse::Status::Code::ProtocolError: return CallStatus::ProtocolError;
     case verse::Status::Code::Closed:
+    case verse::Status::Code::Dropped:
     case verse::Status::Code::NetworkError: return CallStatus::Crash;  // the session is gone
   }
   return CallStatus::Crash;
