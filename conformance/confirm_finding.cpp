@@ -8,6 +8,7 @@
 #include "cancel.h"
 #include "check_step.h"
 #include "command_text.h"
+#include "program_checker.h"
 
 namespace vgc {
 namespace {
@@ -162,14 +163,16 @@ std::string finding_kind(const Finding& f) {
   if (f.status == FindingStatus::Crash) return "crash";
   if (f.status == FindingStatus::Timeout) return "timeout";
   if (is_call_failure(f)) return "protocol-error";
+  if (f.message.rfind(kLateViewPrefix, 0) == 0) return "hidden-state";
   return "wrong-answer";
 }
 
 int finding_severity(const Finding& f) {
   const std::string kind = finding_kind(f);
-  if (kind == "crash") return 3;
-  if (kind == "timeout") return 2;
-  if (kind == "protocol-error") return 1;
+  if (kind == "crash") return 4;
+  if (kind == "timeout") return 3;
+  if (kind == "protocol-error") return 2;
+  if (kind == "hidden-state") return 1;
   return 0;
 }
 

@@ -3,6 +3,7 @@
 
 #include <utility>
 
+#include "attribution.h"
 #include "command_text.h"
 #include "derived_document.h"
 #include "document_diff.h"
@@ -237,6 +238,38 @@ std::optional<Localized> ProgramChecker::finish(const std::vector<Command>& sent
                             "implementation does not repeat itself");
   r.failure = f;
   return Localized{std::move(r), last};
+}
+
+}  // namespace vgc
+
+namespace vgc {
+
+std::optional<Localized> ProgramChecker::check_late_view(const std::vector<Command>& sent,
+                                                         const std::function<bool(const std::string&)>& localize) {
+  late_shape_.clear();
+  if (sent.empty() || sent.size() != applied_.size() || !sut_.offers_late_view()) return std::nullopt;
+  struct LateView {  // on for this call only, however it returns
+    Implementation& sut;
+    explicit LateView(Implementation& s) : sut(s) { sut.use_late_view(true); }
+    ~LateView() { sut.use_late_view(false); }
+  } on(sut_);
+  const Document late = sut_.snapshot();
+  if (late.status != CallStatus::Ok) return std::nullopt;
+  const RouteLimits limits = sut_.limits();
+  const std::string expected = print_snapshot(model_);
+  const auto d = limits.subscriptions ? diff_documents(expected, late.text)
+                                      : diff_documents(without_subscriptions(expected), without_subscriptions(late.text));
+  if (!d) return std::nullopt;
+  late_shape_ = difference_shape(model_, *d);
+  if (localize && !localize(late_shape_)) return std::nullopt;
+  auto l = bisect(sent, 0, sent.size());
+  if (!l || !l->step.failure) return std::nullopt;
+  Finding& f = *l->step.failure;
+  f.message = std::string(kLateViewPrefix) +
+              ": a session that subscribed to the node and every layer (REAL32 and REAL64) after this command was "
+              "sent another node than the session that watched it all along, which agreed with the model; " +
+              f.message;
+  return l;
 }
 
 }  // namespace vgc

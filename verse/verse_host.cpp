@@ -231,7 +231,11 @@ struct Host::Impl {
   }
 
   void send_node_content(Session& s, const HostedGeometry& g) {
-    for (const auto& [lid, l] : g.state.layers) send_to(s, wire::Geometry{g.id, layer_command(lid, l)});
+    for (const auto& [lid, l] : g.state.layers) {
+      cmd::LayerCreate c = layer_command(lid, l);
+      if (options.xyz_no_default && c.type == static_cast<std::uint8_t>(LayerType::VertexXyz)) c.def_real = 0;
+      send_to(s, wire::Geometry{g.id, c});
+    }
     send_to(s, wire::Geometry{g.id, cmd::CreaseSetVertex{g.state.crease_vertex.layer, g.state.crease_vertex.def_crease}});
     send_to(s, wire::Geometry{g.id, cmd::CreaseSetEdge{g.state.crease_edge.layer, g.state.crease_edge.def_crease}});
     for (const auto& [bid, b] : g.state.bones) send_to(s, wire::Geometry{g.id, bone_command(b)});
@@ -336,6 +340,13 @@ struct Host::Impl {
       return;
     }
     broadcast_changes(g, after);
+    if (const auto* del = std::get_if<cmd::VertexDelete>(&x.command); del && options.announce_missing_deletes)
+      if (const auto base = g.state.slots.find(0); base == g.state.slots.end() || !base->second.count(del->vertex_id))
+        for (auto& [peer, other] : sessions)
+          if (const auto f = other.layer_subs.find({g.id, 0}); other.connected && f != other.layer_subs.end())
+            send_to(other, wire::Geometry{g.id, is_real64(f->second) ? vgc::Command(cmd::VertexSetXyzReal64{
+                                                                           0, del->vertex_id, DBL_MAX, DBL_MAX, DBL_MAX})
+                                                                     : vgc::Command(cmd::VertexDelete{del->vertex_id})});
     g.state = std::move(after);
     if (const auto* sub = std::get_if<cmd::LayerSubscribe>(&x.command)) {
       if (sub->real_format <= 1 && g.state.layers.count(sub->layer_id)) {
