@@ -203,6 +203,24 @@ std::optional<Localized> ProgramChecker::bisect(const std::vector<Command>& sent
   return Localized{std::move(r), static_cast<int>(hi - 1)};
 }
 
+std::optional<Localized> ProgramChecker::judge_at(const std::vector<Command>& sent, std::size_t index) {
+  if (index >= sent.size() || sent.size() != applied_.size() || sut_.reset().status != CallStatus::Ok)
+    return std::nullopt;
+  for (std::size_t i = 0; i < index; ++i)
+    if (sut_.apply(sent[i]).status != CallStatus::Ok) return std::nullopt;
+  const Node before = rebuild(index);
+  std::optional<Finding> call;
+  std::string difference;
+  if (!documents_agree(before, &call, &difference)) return std::nullopt;
+  Node after;
+  StepResult r = check_step(before, sent[index], sut_, &after, follow_choices_);
+  if (!r.failure) return std::nullopt;
+  model_ = std::move(after);
+  applied_.resize(index + 1);
+  if (sparse_) sent_.resize(index + 1);
+  return Localized{std::move(r), static_cast<int>(index)};
+}
+
 void ProgramChecker::drop_last() {
   if (applied_.empty()) return;
   applied_.pop_back();
@@ -262,7 +280,15 @@ std::optional<Localized> ProgramChecker::check_late_view(const std::vector<Comma
   if (!d) return std::nullopt;
   late_shape_ = difference_shape(model_, *d);
   if (localize && !localize(late_shape_)) return std::nullopt;
-  auto l = bisect(sent, 0, sent.size());
+  // Provenance first: the command that last wrote the model's line is
+  // where a host that stored something else most likely began to differ.
+  // Checked (the view agrees before it and differs after it); otherwise,
+  // and for a line the model does not have, bisection.
+  std::optional<Localized> l;
+  if (!d->expected_line.empty())
+    if (const auto w = line_written(model_, d->expected_line); w && w->step >= 1 && w->step <= sent.size())
+      l = judge_at(sent, w->step - 1);
+  if (!l) l = bisect(sent, 0, sent.size());
   if (!l || !l->step.failure) return std::nullopt;
   Finding& f = *l->step.failure;
   f.message = std::string(kLateViewPrefix) +

@@ -89,7 +89,8 @@ class ProgramChecker {
   // watching now would be sent (Implementation::offers_late_view: the
   // Verse wire's late subscriber): that view against the model. A
   // difference is localized by bisection with the late view on (a prefix
-  // of the program from a fresh node, the view read after it), and the
+  // of the program from a fresh node, the view read after it; first the
+  // command that last wrote the model's differing line, checked), and the
   // first command whose prefix differs is judged by check_step on the late
   // view, so it is blamed by provenance like any other; its message starts
   // with kLateViewPrefix. `localize` (may be empty: always) is asked with
@@ -115,6 +116,10 @@ class ProgramChecker {
   // The first command after `agreed` (a prefix length whose documents agree)
   // up to `differs` whose prefix differs, judged; nullopt when none does.
   std::optional<Localized> bisect(const std::vector<Command>& sent, std::size_t agreed, std::size_t differs);
+  // Command `index` of `sent` judged by check_step after the prefix before
+  // it, sent to a fresh implementation, agrees with the model; nullopt
+  // when the prefix does not agree or the command shows no difference.
+  std::optional<Localized> judge_at(const std::vector<Command>& sent, std::size_t index);
 
   Implementation& sut_;
   bool follow_choices_;
