@@ -55,6 +55,7 @@ class HistoryRecorder final : public Implementation {
   DigestAnswer digest() override { return sut_.digest(); }
   bool offers_late_view() override { return sut_.offers_late_view(); }
   void use_late_view(bool on) override { sut_.use_late_view(on); }
+  std::string late_view_wrong_format() override { return sut_.late_view_wrong_format(); }
 
   // The commands since the running instance started, case by case.
   const std::vector<std::vector<Command>>& history() const { return history_; }

@@ -8,6 +8,7 @@
 #include "derived_document.h"
 #include "document_diff.h"
 #include "exercised_clauses.h"
+#include "rule_clauses.h"
 #include "snapshot.h"
 
 namespace vgc {
@@ -273,6 +274,28 @@ std::optional<Localized> ProgramChecker::check_late_view(const std::vector<Comma
   } on(sut_);
   const Document late = sut_.snapshot();
   if (late.status != CallStatus::Ok) return std::nullopt;
+  // (A shape of its own, "subscription both-formats": once tolerated, the
+  // document is judged as if it had not been seen.)
+  if (const std::string wrong = sut_.late_view_wrong_format();
+      !wrong.empty() && (!localize || localize("subscription both-formats"))) {
+    late_shape_ = "subscription both-formats";
+    // A subscription's format is replaced by the next one (layer.subscribe):
+    // what a REAL32-then-REAL64 subscriber of layer 0 was sent during the
+    // case. No command of the case decides it; the case is its program.
+    StepResult r;
+    r.expected = Reason::Ok;
+    Finding f;
+    f.clause = std::string(rule_clause(Rule::Subscribe));
+    f.rules = {Rule::Subscribe};
+    f.message = std::string(kLateViewPrefix) +
+                ": a session that subscribed to layer 0 at REAL32 and then at REAL64 before the case was sent `" +
+                wrong + "` during it, a REAL32 value after its REAL64 subscription: the host kept both subscriptions "
+                "(every value then comes twice). Blamed on rule layer.subscribe (" + f.clause +
+                "): the layer's subscription becomes REAL32 or REAL64 (4.4).";
+    r.failure = f;
+    return Localized{std::move(r), static_cast<int>(sent.size()) - 1};
+  }
+  late_shape_.clear();
   const RouteLimits limits = sut_.limits();
   const std::string expected = print_snapshot(model_);
   const auto d = limits.subscriptions ? diff_documents(expected, late.text)

@@ -525,6 +525,7 @@ class RequestRecorder final : public Implementation {
   DigestAnswer digest() override { return sut_.digest(); }
   bool offers_late_view() override { return sut_.offers_late_view(); }
   void use_late_view(bool on) override { sut_.use_late_view(on); }
+  std::string late_view_wrong_format() override { return sut_.late_view_wrong_format(); }
   Document request(const std::string& line) override {
     Document d = sut_.request(line);
     last_request = line;

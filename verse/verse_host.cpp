@@ -48,6 +48,9 @@ struct Session {
   BoneForm bone_form = BoneForm::Spec;  // what it is sent in: the host's, until it sends the other one
   std::set<std::uint32_t> node_subs;
   std::map<std::pair<std::uint32_t, std::uint16_t>, RealFormat> layer_subs;
+  // HostOptions::both_formats: the format a subscription had before the
+  // session subscribed again in another one, still served (as r6 does).
+  std::map<std::pair<std::uint32_t, std::uint16_t>, RealFormat> layer_subs_kept;
 };
 
 struct HostedGeometry {
@@ -291,6 +294,8 @@ struct Host::Impl {
         other.node_subs.erase(x->node_id);
         for (auto it = other.layer_subs.begin(); it != other.layer_subs.end();)
           it = it->first.first == x->node_id ? other.layer_subs.erase(it) : std::next(it);
+        for (auto it = other.layer_subs_kept.begin(); it != other.layer_subs_kept.end();)
+          it = it->first.first == x->node_id ? other.layer_subs_kept.erase(it) : std::next(it);
         if (other.connected && other.index_geometry) send_to(other, wire::NodeDestroy{x->node_id});
       }
     } else if (auto* x = std::get_if<wire::NodeSubscribe>(&c)) {
@@ -302,6 +307,8 @@ struct Host::Impl {
       s.node_subs.erase(x->node_id);
       for (auto it = s.layer_subs.begin(); it != s.layer_subs.end();)
         it = it->first.first == x->node_id ? s.layer_subs.erase(it) : std::next(it);
+      for (auto it = s.layer_subs_kept.begin(); it != s.layer_subs_kept.end();)
+        it = it->first.first == x->node_id ? s.layer_subs_kept.erase(it) : std::next(it);
     } else if (auto* x = std::get_if<wire::NodeNameSet>(&c)) {
       auto g = nodes.find(x->node_id);
       if (g == nodes.end() || x->name.empty()) return;
@@ -351,11 +358,15 @@ struct Host::Impl {
     if (const auto* sub = std::get_if<cmd::LayerSubscribe>(&x.command)) {
       if (sub->real_format <= 1 && g.state.layers.count(sub->layer_id)) {
         const RealFormat f = static_cast<RealFormat>(sub->real_format);
+        const auto old = s.layer_subs.find({g.id, sub->layer_id});
+        if (options.both_formats && old != s.layer_subs.end() && old->second != f)
+          s.layer_subs_kept[{g.id, sub->layer_id}] = old->second;
         s.layer_subs[{g.id, sub->layer_id}] = f;
         send_layer_content(s, g, sub->layer_id, f);
       }
     } else if (const auto* un = std::get_if<cmd::LayerUnsubscribe>(&x.command)) {
       s.layer_subs.erase({g.id, un->layer_id});
+      s.layer_subs_kept.erase({g.id, un->layer_id});
     }
   }
 
@@ -394,7 +405,7 @@ struct Host::Impl {
       if (!s.connected) continue;
       if (s.node_subs.count(g.id))
         for (const vgc::Command& c : node_level) send_to(s, wire::Geometry{g.id, c});
-      for (std::uint16_t lid : reset_layers) s.layer_subs.erase({g.id, lid});
+      for (std::uint16_t lid : reset_layers) s.layer_subs.erase({g.id, lid}), s.layer_subs_kept.erase({g.id, lid});
     }
 
     static const std::map<std::uint32_t, vgc::Slot> kEmpty;
@@ -403,6 +414,8 @@ struct Host::Impl {
       for (auto& [peer, s] : sessions) {
         auto f = s.layer_subs.find({g.id, lid});
         if (s.connected && f != s.layer_subs.end()) subs.emplace_back(&s, f->second);
+        auto k = s.layer_subs_kept.find({g.id, lid});
+        if (s.connected && k != s.layer_subs_kept.end()) subs.emplace_back(&s, k->second);
       }
       if (subs.empty()) continue;
       auto a_it = after.slots.find(lid);

@@ -68,8 +68,12 @@ struct HostOptions {
   // the node with def_real 0 (r6 keeps no default for one: its layer_create
   // sets def.real only for the other real types); those who watched the
   // layer's creation were sent the right one.
+  // both_formats: a session that subscribes to a layer in one real format
+  // and then in the other is served in both (r6 adds it to the second
+  // list and never takes it off the first: every value comes twice).
   bool announce_missing_deletes = false;
   bool xyz_no_default = false;
+  bool both_formats = false;
   double session_timeout_s = 30.0;     // a session silent this long is dropped (r6: 30 s)
   double resend_interval_s = 0.25;
 };

@@ -166,6 +166,11 @@ class Implementation {
   // it at the end of every case and localizes a difference). Only called
   // when offers_late_view().
   virtual void use_late_view(bool on) { (void)on; }
+  // Read with the late view: what a party that subscribed to the node's
+  // base vertex layer at REAL32 and then at REAL64, before the case, was
+  // sent during it in the format it left (a REAL32 value: the host kept
+  // both subscriptions, as r6 does), printed; empty when nothing.
+  virtual std::string late_view_wrong_format() { return {}; }
 };
 
 struct OpenOptions {

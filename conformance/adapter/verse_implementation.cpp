@@ -327,6 +327,15 @@ Answer VerseImplementation::refill_pool(double create_timeout_s) {
     if (const verse::Status st = observer_->subscribe_node(id); !st.ok())
       return failed(call_status_of(st), "subscribing to geometry node " + std::to_string(id) + ": " + st.to_string());
   }
+  // The late subscriber watches layer 0 of each, REAL32 then REAL64. (An
+  // id may be a destroyed node's: r6 reuses ids.)
+  for (std::uint32_t id : ids) late_watching_.erase(id);
+  bool late_ok = ensure_late();
+  for (std::uint32_t id : ids) {
+    if (!late_ok) break;
+    late_ok = late_->subscribe_node(id).ok() && late_->subscribe_layer(id, 0, RealFormat::Real32).ok() &&
+              late_->subscribe_layer(id, 0, RealFormat::Real64).ok();
+  }
   const auto deadline = Clock::now() + std::chrono::duration_cast<Clock::duration>(
                                            std::chrono::duration<double>(options_.timeout_seconds));
   const std::string what = "creating geometry nodes " + std::to_string(ids.front()) + " to " +
@@ -337,7 +346,35 @@ Answer VerseImplementation::refill_pool(double create_timeout_s) {
   if (a.status != CallStatus::Ok) return a;
   pool_.settle_all();
   drain_driver();
+  // Its subscriptions settled too (what they were sent: empty fresh nodes).
+  if (late_ok) {
+    std::vector<verse::WireCommand> dump;
+    ++round_trips_;
+    if (late_->barrier(ids.back(), seconds_left(deadline), &dump).ok()) {
+      verse::WireCommand w;
+      for (int i = 0; i < 100000 && late_->receive(&w, 0).ok(); ++i) {
+      }
+      late_watching_.insert(ids.begin(), ids.end());
+    } else {
+      late_->disconnect();  // logs in again at its next use
+    }
+  }
   return {};
+}
+
+bool VerseImplementation::ensure_late() {
+  if (late_ && late_->connected()) return true;
+  if (late_) late_->disconnect();
+  late_ = std::make_unique<verse::ClientSession>();
+  late_node_ = 0;
+  late_watching_.clear();
+  // The observer wakes the host for this login (r6 answers a login only on
+  // its one-second tick otherwise): once per run, not per case.
+  // It idles between cases: an ack it has not read yet is no sign of a host
+  // that forgot it (only its own time-out ends its waits).
+  verse::ClientOptions o = session_options(observer_.get());
+  o.unacknowledged_limit_s = 0;
+  return observer_ && late_->connect(host_, port_, o).ok();
 }
 
 Answer VerseImplementation::start() {
@@ -565,16 +602,9 @@ Document VerseImplementation::snapshot() {
 
 Document VerseImplementation::late_snapshot() {
   if (!have_node_) return {CallStatus::Crash, {}, "no node to subscribe to"};
+  late_wrong_format_.clear();
   for (int attempt = 0;; ++attempt) {
-    if (!late_ || !late_->connected()) {
-      if (late_) late_->disconnect();
-      late_ = std::make_unique<verse::ClientSession>();
-      late_node_ = 0;
-      // The observer wakes the host for this login (r6 answers a login only
-      // on its one-second tick otherwise): once per run, not per case.
-      if (const verse::Status st = late_->connect(host_, port_, session_options(observer_.get())); !st.ok())
-        return {call_status_of(st), {}, "logging in the late subscriber: " + st.to_string()};
-    }
+    if (!ensure_late()) return {CallStatus::Crash, {}, "the late subscriber could not log in"};
     Document d = late_snapshot_once();
     // A session the host forgot (r6 drops one silent for 30 s, as this one
     // is between cases) logs in again, once.
@@ -586,10 +616,29 @@ Document VerseImplementation::late_snapshot() {
 Document VerseImplementation::late_snapshot_once() {
   const auto deadline = Clock::now() + std::chrono::duration_cast<Clock::duration>(
                                            std::chrono::duration<double>(options_.timeout_seconds));
-  verse::WireCommand w;
-  for (int i = 0; i < 100000 && late_->receive(&w, 0).ok(); ++i) {  // what an earlier node sent it
+  // What it was sent while watching the node (a pool node's layer 0, from
+  // REAL32 then REAL64 subscriptions): a round trip of its own first, since
+  // a host sends each session's share of a change in its own time (r6
+  // flushes this session after the observer's echo). Then what an earlier
+  // node sent it is dropped.
+  const bool watched = late_watching_.erase(node_) > 0;
+  std::vector<verse::WireCommand> stream;
+  if (watched) {
+    ++round_trips_;
+    if (const verse::Status st = late_->barrier(node_, options_.timeout_seconds, &stream); !st.ok())
+      return Document{call_status_of(st), {}, "the late subscriber's round trip: " + st.to_string()};
   }
-  if (late_node_ != 0) (void)late_->unsubscribe_node(late_node_);  // subscribed again below, from nothing
+  verse::WireCommand w;
+  for (int i = 0; i < 100000 && late_->receive(&w, 0).ok(); ++i) stream.push_back(w);
+  for (const auto& x : stream) {
+    const auto* g = std::get_if<verse::wire::Geometry>(&x);
+    if (!watched || !g || g->node_id != node_ || !late_wrong_format_.empty()) continue;
+    if (const auto* v = std::get_if<cmd::VertexSetXyzReal32>(&g->command); v && v->layer_id == 0)
+      late_wrong_format_ = print_command(g->command);
+  }
+  // Subscribed again below, from nothing. (Only the node's own id: an
+  // earlier node's may be a pool node's by now, r6 reusing ids.)
+  if (watched || late_node_ == node_) (void)late_->unsubscribe_node(node_);
   late_node_ = node_;
   const auto fail = [&](CallStatus s, const std::string& why) {
     return Document{s, {}, "the late subscriber of node " + std::to_string(node_) + ": " + why};
@@ -664,6 +713,10 @@ Document VerseImplementation::late_snapshot_once() {
       if (!real32_only(g->command) && !v64.apply(g->command, &error)) return fail(CallStatus::ProtocolError, error);
     }
   v64.take_real32_differences(v32);
+  // Done with the node: nothing more is sent it for it, and a later node
+  // with its id (r6 reuses ids) is not unsubscribed by mistake.
+  (void)late_->unsubscribe_node(node_);
+  late_node_ = 0;
   return {CallStatus::Ok, v64.snapshot(), {}};
 }
 

@@ -339,6 +339,34 @@ TEST(VerseRoute, ALateSubscriberSeesWhatTheWatchersWereNotTold) {
   EXPECT_EQ(r.failure->message.rfind("late subscriber: ", 0), 0u) << r.failure->message;
 }
 
+// Issue 27 item 3, r6's fifth behaviour: a session that subscribes to a
+// layer at REAL32 and then at REAL64 is kept on both lists and gets every
+// value twice (`--r6-deviation both-formats`). The late subscriber watches
+// layer 0 of every node so subscribed; a REAL32 value it is sent during
+// the case is LAYER-SUBSCRIBE-1's (on the wire otherwise not judgeable).
+TEST(VerseRoute, ASubscriptionInTwoFormatsIsFound) {
+  ServedHost host({"--r6-deviation", "both-formats"}, {});
+  ASSERT_NE(host.port(), 0) << "no port in \"" << host.line() << "\"";
+  auto sut = open_verse(host);
+  ASSERT_NE(sut, nullptr);
+  RunOptions o = options(20);
+  o.clause_glob = "VERTEX-*,LAYER-SUBSCRIBE-1";
+  const RunResult run = run_certification(*sut, o);
+  bool named = false;
+  for (const ClauseOutcome& co : run.clauses) {
+    if (co.clause->id != "LAYER-SUBSCRIBE-1") {
+      EXPECT_TRUE(co.status == "pass" || co.status == "not-applicable")
+          << co.clause->id << " " << co.status << ": " << (co.finding ? co.finding->message : co.note);
+      continue;
+    }
+    ASSERT_TRUE(co.finding) << co.status << ": " << co.note;
+    named = co.status == "fail";
+    EXPECT_NE(co.finding->message.find("a REAL32 value after its REAL64 subscription"), std::string::npos)
+        << co.finding->message;
+  }
+  EXPECT_TRUE(named);
+}
+
 // The host stops answering after the first property (SIGSTOP): the rest of
 // the run is timeouts, bounded by --timeout, and the report is written.
 TEST(VerseRoute, AHostThatGoesSilentGivesTimeoutsAndAFinishedReport) {
