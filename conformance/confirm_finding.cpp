@@ -54,7 +54,8 @@ class Reproducer {
     ++attempts_;
     if (sut_.restart().status != CallStatus::Ok) return false;
     const ReplayResult r = replay_program(f.program, sut_);
-    return r.failure && r.failure->status == f.finding.status && r.failure->clause == f.finding.clause;
+    const auto same = [&f](const Finding& x) { return x.status == f.finding.status && x.clause == f.finding.clause; };
+    return (r.failure && same(*r.failure)) || std::any_of(r.also_failed.begin(), r.also_failed.end(), same);
   }
 
  private:

@@ -274,16 +274,15 @@ std::optional<Localized> ProgramChecker::check_late_view(const std::vector<Comma
   } on(sut_);
   const Document late = sut_.snapshot();
   if (late.status != CallStatus::Ok) return std::nullopt;
-  // (A shape of its own, "subscription both-formats": once tolerated, the
-  // document is judged as if it had not been seen.)
-  if (const std::string wrong = sut_.late_view_wrong_format();
-      !wrong.empty() && (!localize || localize("subscription both-formats"))) {
-    late_shape_ = "subscription both-formats";
-    // A subscription's format is replaced by the next one (layer.subscribe):
-    // what a REAL32-then-REAL64 subscriber of layer 0 was sent during the
-    // case. No command of the case decides it; the case is its program.
-    StepResult r;
-    r.expected = Reason::Ok;
+  // What a REAL32-then-REAL64 subscriber of layer 0 was sent during the
+  // case (the late subscriber's watch): a REAL32 value means the host kept
+  // both subscriptions, and a subscription's format is replaced by the next
+  // one (layer.subscribe). No command of the case decides it; the case is
+  // its program. Judged after the document (a difference there is reported
+  // first, so that a replay shows what certify showed), and a shape of its
+  // own ("subscription both-formats") that `localize` may spare.
+  late_format_.reset();
+  if (const std::string wrong = sut_.late_view_wrong_format(); !wrong.empty()) {
     Finding f;
     f.clause = std::string(rule_clause(Rule::Subscribe));
     f.rules = {Rule::Subscribe};
@@ -292,17 +291,23 @@ std::optional<Localized> ProgramChecker::check_late_view(const std::vector<Comma
                 wrong + "` during it, a REAL32 value after its REAL64 subscription: the host kept both subscriptions "
                 "(every value then comes twice). Blamed on rule layer.subscribe (" + f.clause +
                 "): the layer's subscription becomes REAL32 or REAL64 (4.4).";
-    r.failure = f;
-    return Localized{std::move(r), static_cast<int>(sent.size()) - 1};
+    late_format_ = f;
   }
-  late_shape_.clear();
+  const auto format_finding = [&]() -> std::optional<Localized> {
+    if (!late_format_ || (localize && !localize("subscription both-formats"))) return std::nullopt;
+    late_shape_ = "subscription both-formats";
+    StepResult r;
+    r.expected = Reason::Ok;
+    r.failure = late_format_;
+    return Localized{std::move(r), static_cast<int>(sent.size()) - 1};
+  };
   const RouteLimits limits = sut_.limits();
   const std::string expected = print_snapshot(model_);
   const auto d = limits.subscriptions ? diff_documents(expected, late.text)
                                       : diff_documents(without_subscriptions(expected), without_subscriptions(late.text));
-  if (!d) return std::nullopt;
+  if (!d) return format_finding();
   late_shape_ = difference_shape(model_, *d);
-  if (localize && !localize(late_shape_)) return std::nullopt;
+  if (localize && !localize(late_shape_)) return format_finding();
   // Provenance first: the command that last wrote the model's line is
   // where a host that stored something else most likely began to differ.
   // Checked (the view agrees before it and differs after it); otherwise,
@@ -312,7 +317,7 @@ std::optional<Localized> ProgramChecker::check_late_view(const std::vector<Comma
     if (const auto w = line_written(model_, d->expected_line); w && w->step >= 1 && w->step <= sent.size())
       l = judge_at(sent, w->step - 1);
   if (!l) l = bisect(sent, 0, sent.size());
-  if (!l || !l->step.failure) return std::nullopt;
+  if (!l || !l->step.failure) return format_finding();
   Finding& f = *l->step.failure;
   f.message = std::string(kLateViewPrefix) +
               ": a session that subscribed to the node and every layer (REAL32 and REAL64) after this command was "

@@ -103,6 +103,10 @@ class ProgramChecker {
                                            const std::function<bool(const std::string& shape)>& localize = {});
   // The shape of the late view's last difference (empty: none seen).
   const std::string& late_shape() const { return late_shape_; }
+  // The last check_late_view's finding on a subscription kept in two
+  // formats (Implementation::late_view_wrong_format), whether or not it is
+  // the one returned: a replay shows both (ReplayResult::also_failed).
+  const std::optional<Finding>& late_format_finding() const { return late_format_; }
 
  private:
   Node rebuild(std::size_t commands) const;  // a fresh node with the first `commands` of applied_
@@ -133,6 +137,7 @@ class ProgramChecker {
   ChangeLog changes_;
   std::vector<Command> applied_;
   std::string late_shape_;
+  std::optional<Finding> late_format_;
 };
 
 // How a finding of the late view (ProgramChecker::check_late_view) begins.

@@ -1268,6 +1268,8 @@ ReplayResult replay_program(const Program& program, Implementation& sut) {
   if (auto l = checker.check_late_view(program.commands)) {  // what a late subscriber is sent
     r.failure = l->step.failure;
     r.failed_at = l->index;
+    if (const auto& also = checker.late_format_finding(); also && also->clause != r.failure->clause)
+      r.also_failed.push_back(*also);
     return r;
   }
   const Node& model = checker.model();
