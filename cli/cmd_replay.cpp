@@ -138,6 +138,8 @@ int run(const Options& o) {
                             : gates                              ? status
                                                                  : std::string("profile difference");
   say("{} {} ({}): {}\n", shown, r.failure->clause, clause_level_name(clause->level), r.failure->message);
+  for (const Finding& also : r.also_failed)  // what the same end shows besides (the late view's)
+    say("also {} {}: {}\n", finding_status_name(also.status), also.clause, also.message);
   say("spec ({}): {}\n", clause->source, clause->text);
   if (clause->level == ClauseLevel::Should)
     say("verdict: a SHOULD clause not met: certify reports it as \"{}\" and the verdict stands (not "

@@ -49,6 +49,7 @@ struct ServeOptions {
   bool done = false;  // answer every command "done" (verdict not reported)
   std::string verse;  // [ADDR:]PORT: serve as a Verse host instead
   bool like_r6 = false;  // --like-r6: reuse node ids, read and send bone_create in r6's form, strictly
+  std::vector<std::string> r6_deviations;  // --r6-deviation NAME...
 };
 
 // The implementation behind one served Verse node: every answer is
@@ -99,6 +100,11 @@ int run_verse(const ServeOptions& o) {
     h.reuse_node_ids = true;
     h.bone_form = verse::BoneForm::R6;
     h.strict_bone_form = true;
+  }
+  for (const std::string& d : o.r6_deviations) {
+    if (d == "announce-missing-deletes") h.announce_missing_deletes = true;
+    else if (d == "xyz-no-default") h.xyz_no_default = true;
+    else if (d == "both-formats") h.both_formats = true;
   }
   std::string error;
   if (!verse::parse_listen_address(o.verse, &h.address, &h.port, &error)) {
@@ -234,6 +240,13 @@ void add_serve(CLI::App& app, int* exit_code) {
                 "reused; bone_create in r6's form, a packet that does not decode losing its rest; "
                 "docs/verse_wire.md)");
   like_r6->needs(verse);
+  sub->add_option("--r6-deviation", opts->r6_deviations,
+                  "With --verse: break the spec as the r6 host does, for testing a client that must find it: "
+                  "announce-missing-deletes (a vertex_delete of a vertex that is not live is sent to "
+                  "subscribers), xyz-no-default (a new subscriber is told def_real 0 for every VERTEX_XYZ layer), both-formats (a session that "
+                  "subscribes REAL32 then REAL64 is sent every value in both); repeatable (docs/verse_wire.md)")
+      ->check(CLI::IsMember({"announce-missing-deletes", "xyz-no-default", "both-formats"}))
+      ->needs(verse);
   done->excludes(verse);  // a Verse host answers nothing: --done is the exec route's way to say so
   sub->callback([opts, exit_code] { *exit_code = run_serve(*opts); });
 }

@@ -77,6 +77,18 @@ std::map<std::string, std::string> lines_by_key(const std::string& doc) {
   return out;
 }
 
+// The quoted fields of a snapshot line (names and labels), in order.
+std::vector<std::string> quoted_parts(const std::string& line) {
+  std::vector<std::string> parts;
+  for (std::size_t i = line.find('"'); i != std::string::npos;) {
+    const std::size_t end = line.find('"', i + 1);
+    if (end == std::string::npos) break;
+    parts.push_back(line.substr(i + 1, end - i - 1));
+    i = line.find('"', end + 1);
+  }
+  return parts;
+}
+
 std::string quoted(const std::string& line) { return "\"" + line + "\""; }
 
 std::string written_by(const std::optional<Written>& w) {
@@ -156,7 +168,9 @@ Blame blame_snapshot(const Node& before, const Node& after, Reason expected, con
     const std::uint8_t bit = line_kind_bit(first_word(e));
     const auto w = line_written(after, e);
     if (w && w->step == now && w->rule != Rule::None) {
-      add(with_role(trace, RuleRole::Accept, bit));  // a 15-byte name stored cut
+      // A 15-byte name stored cut: the accept rules (every one is about a
+      // name) explain a difference only where the names differ.
+      if (quoted_parts(e) != quoted_parts(o)) add(with_role(trace, RuleRole::Accept, bit));
       cands.push_back(w->rule);
       what = "The model wrote " + quoted(e) + " by rule " + std::string(rule_name(w->rule)) +
              "; the implementation shows " + quoted(o) + ".";
@@ -213,6 +227,17 @@ Blame blame_snapshot(const Node& before, const Node& after, Reason expected, con
   }
   if (cands.empty()) add(effects(trace));
   return make_blame(cands, what);
+}
+
+std::string difference_shape(const Node& after, const DocumentDifference& d) {
+  const std::string& line = d.expected_line.empty() ? d.observed_line : d.expected_line;
+  std::string shape = first_word(line) + (d.expected_line.empty()   ? " extra"
+                                          : d.observed_line.empty() ? " missing"
+                                                                    : " changed");
+  if (!d.expected_line.empty())
+    if (const auto w = line_written(after, d.expected_line); w && w->rule != Rule::None)
+      shape += " " + std::string(rule_name(w->rule));
+  return shape;
 }
 
 static std::string_view crease_clause(const Node& n, const std::string& name, LayerType required) {

@@ -73,6 +73,14 @@ const std::vector<std::string_view>& derived_only_clauses();
 // The bone id of a derived document's "bone_pose <id> ..." line, or -1.
 long bone_id_of(const std::string& line);
 
+// A short name for the shape of a snapshot difference from the model
+// `after`: the kind of line, which side lacks it, and the rule that last
+// wrote the model's line ("slot changed element.create.slot_default").
+// Differences of one shape are blamed alike, as a rule: what a caller that
+// has already localized one (the late view, program_checker.h) uses to
+// spare localizing the others.
+std::string difference_shape(const Node& after, const DocumentDifference& d);
+
 // The identity of a snapshot or derived line: its kind and the ids after
 // it ("slot 3 17", "edge_crease 4 2", "vertex 5", "crease_vertex").
 std::string line_key(const std::string& line);

@@ -115,9 +115,16 @@ StepResult judge_step(const Node& before, const Command& c, const Answer& answer
     const std::string before_text = comparable(print_snapshot(before));
     const bool changed = diff_documents(before_text, comparable(snap.text)).has_value();
     const bool reference_changed = expected == Reason::Ok && comparable(print_snapshot(*after)) != before_text;
-    applied = changed || (expected == Reason::Ok && !reference_changed);
+    // What the implementation told others about the command (a host's
+    // broadcast to its subscribers) is its verdict too: announced means
+    // applied, whatever the state shows.
+    const bool announced = !answer.broadcast.empty();
+    applied = changed || announced || (expected == Reason::Ok && !reference_changed);
     result.implementation_unchanged = !changed;
-    observed_answer = changed ? "done, and the state changed (applied)" : "done, and the state is unchanged (dropped)";
+    observed_answer = changed     ? "done, and the state changed (applied)"
+                      : announced ? "done, and the state is unchanged but the host sent its subscribers `" +
+                                        answer.broadcast + "` for it (applied)"
+                                  : "done, and the state is unchanged (dropped)";
   }
   if (applied != (expected == Reason::Ok)) {
     Finding f;

@@ -70,7 +70,9 @@ Finding call_failure(std::string_view clause, CallStatus s, const std::string& w
 // the state: the implementation's snapshot after `c` identical to `before`'s
 // means dropped (rejected), otherwise applied; then as usual, except that a
 // command the reference applies without changing its own snapshot is
-// consistent with an unchanged state, and no reason is compared. Same calls
+// consistent with an unchanged state, and no reason is compared. An
+// unchanged state with a broadcast (Answer::broadcast: the host announced
+// the command's effect to its subscribers) means applied. Same calls
 // as an ok/rejected answer: apply, snapshot, derived.
 //
 // The route's limits (Implementation::limits) apply: with no derived

@@ -9,6 +9,7 @@
 #include "check_step.h"
 #include "runner.h"  // replay_program: a finding is confirmed by replaying it on a fresh instance
 #include "command_text.h"
+#include "program_checker.h"
 
 namespace vgc {
 namespace {
@@ -54,7 +55,8 @@ class Reproducer {
     ++attempts_;
     if (sut_.restart().status != CallStatus::Ok) return false;
     const ReplayResult r = replay_program(f.program, sut_);
-    return r.failure && r.failure->status == f.finding.status && r.failure->clause == f.finding.clause;
+    const auto same = [&f](const Finding& x) { return x.status == f.finding.status && x.clause == f.finding.clause; };
+    return (r.failure && same(*r.failure)) || std::any_of(r.also_failed.begin(), r.also_failed.end(), same);
   }
 
  private:
@@ -163,14 +165,16 @@ std::string finding_kind(const Finding& f) {
   if (f.status == FindingStatus::Crash) return "crash";
   if (f.status == FindingStatus::Timeout) return "timeout";
   if (is_call_failure(f)) return "protocol-error";
+  if (f.message.rfind(kLateViewPrefix, 0) == 0) return "hidden-state";
   return "wrong-answer";
 }
 
 int finding_severity(const Finding& f) {
   const std::string kind = finding_kind(f);
-  if (kind == "crash") return 3;
-  if (kind == "timeout") return 2;
-  if (kind == "protocol-error") return 1;
+  if (kind == "crash") return 4;
+  if (kind == "timeout") return 3;
+  if (kind == "protocol-error") return 2;
+  if (kind == "hidden-state") return 1;
   return 0;
 }
 

@@ -53,6 +53,9 @@ class HistoryRecorder final : public Implementation {
   Document request(const std::string& line) override { return sut_.request(line); }
   bool offers_digest() override { return sut_.offers_digest(); }
   DigestAnswer digest() override { return sut_.digest(); }
+  bool offers_late_view() override { return sut_.offers_late_view(); }
+  void use_late_view(bool on) override { sut_.use_late_view(on); }
+  std::string late_view_wrong_format() override { return sut_.late_view_wrong_format(); }
 
   // The commands since the running instance started, case by case.
   const std::vector<std::vector<Command>>& history() const { return history_; }
@@ -79,15 +82,20 @@ bool note_reproduces_fresh(Implementation& sut, const Finding& note, const Progr
 // Whether `program` fails a fresh instance with `f`'s clause and status.
 bool reproduces_fresh(Implementation& sut, const Finding& f, const Program& program);
 
-// "crash", "timeout", "protocol-error" or "wrong-answer" (a wrong verdict,
+// "crash", "timeout", "protocol-error", "hidden-state" (what a party that
+// starts watching late is sent differs from what those that watched all
+// along were sent and the model holds: program_checker.h check_late_view)
+// or "wrong-answer" (a wrong verdict,
 // reason or document): the kind of failure `f` is, or, for a finding that
 // depends on the history, the kind it is about. Kinds are what
 // confirmation compares: a history's reproducer must fail a fresh instance
 // with the same kind.
 std::string finding_kind(const Finding& f);
 
-// How bad a kind of failure is: a wrong answer 0, a protocol error 1, a
-// time-out 2, a crash (a sanitizer report included) 3. A finding of one
+// How bad a kind of failure is: a wrong answer 0, hidden state 1 (the
+// watchers were told something else than is stored: worse than a state
+// every watcher sees), a protocol error 2, a time-out 3, a crash (a
+// sanitizer report included) 4. A finding of one
 // kind in a clause hides nothing worse in it (runner.cpp tolerates a
 // clause only up to the worst kind found there), and a clause's outcome
 // shows its worst finding (clause_status.h prefer_finding).

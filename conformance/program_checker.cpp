@@ -3,10 +3,12 @@
 
 #include <utility>
 
+#include "attribution.h"
 #include "command_text.h"
 #include "derived_document.h"
 #include "document_diff.h"
 #include "exercised_clauses.h"
+#include "rule_clauses.h"
 #include "snapshot.h"
 
 namespace vgc {
@@ -202,6 +204,24 @@ std::optional<Localized> ProgramChecker::bisect(const std::vector<Command>& sent
   return Localized{std::move(r), static_cast<int>(hi - 1)};
 }
 
+std::optional<Localized> ProgramChecker::judge_at(const std::vector<Command>& sent, std::size_t index) {
+  if (index >= sent.size() || sent.size() != applied_.size() || sut_.reset().status != CallStatus::Ok)
+    return std::nullopt;
+  for (std::size_t i = 0; i < index; ++i)
+    if (sut_.apply(sent[i]).status != CallStatus::Ok) return std::nullopt;
+  const Node before = rebuild(index);
+  std::optional<Finding> call;
+  std::string difference;
+  if (!documents_agree(before, &call, &difference)) return std::nullopt;
+  Node after;
+  StepResult r = check_step(before, sent[index], sut_, &after, follow_choices_);
+  if (!r.failure) return std::nullopt;
+  model_ = std::move(after);
+  applied_.resize(index + 1);
+  if (sparse_) sent_.resize(index + 1);
+  return Localized{std::move(r), static_cast<int>(index)};
+}
+
 void ProgramChecker::drop_last() {
   if (applied_.empty()) return;
   applied_.pop_back();
@@ -237,6 +257,73 @@ std::optional<Localized> ProgramChecker::finish(const std::vector<Command>& sent
                             "implementation does not repeat itself");
   r.failure = f;
   return Localized{std::move(r), last};
+}
+
+}  // namespace vgc
+
+namespace vgc {
+
+std::optional<Localized> ProgramChecker::check_late_view(const std::vector<Command>& sent,
+                                                         const std::function<bool(const std::string&)>& localize) {
+  late_shape_.clear();
+  if (sent.empty() || sent.size() != applied_.size() || !sut_.offers_late_view()) return std::nullopt;
+  struct LateView {  // on for this call only, however it returns
+    Implementation& sut;
+    explicit LateView(Implementation& s) : sut(s) { sut.use_late_view(true); }
+    ~LateView() { sut.use_late_view(false); }
+  } on(sut_);
+  const Document late = sut_.snapshot();
+  if (late.status != CallStatus::Ok) return std::nullopt;
+  // What a REAL32-then-REAL64 subscriber of layer 0 was sent during the
+  // case (the late subscriber's watch): a REAL32 value means the host kept
+  // both subscriptions, and a subscription's format is replaced by the next
+  // one (layer.subscribe). No command of the case decides it; the case is
+  // its program. Judged after the document (a difference there is reported
+  // first, so that a replay shows what certify showed), and a shape of its
+  // own ("subscription both-formats") that `localize` may spare.
+  late_format_.reset();
+  if (const std::string wrong = sut_.late_view_wrong_format(); !wrong.empty()) {
+    Finding f;
+    f.clause = std::string(rule_clause(Rule::Subscribe));
+    f.rules = {Rule::Subscribe};
+    f.message = std::string(kLateViewPrefix) +
+                ": a session that subscribed to layer 0 at REAL32 and then at REAL64 before the case was sent `" +
+                wrong + "` during it, a REAL32 value after its REAL64 subscription: the host kept both subscriptions "
+                "(every value then comes twice). Blamed on rule layer.subscribe (" + f.clause +
+                "): the layer's subscription becomes REAL32 or REAL64 (4.4).";
+    late_format_ = f;
+  }
+  const auto format_finding = [&]() -> std::optional<Localized> {
+    if (!late_format_ || (localize && !localize("subscription both-formats"))) return std::nullopt;
+    late_shape_ = "subscription both-formats";
+    StepResult r;
+    r.expected = Reason::Ok;
+    r.failure = late_format_;
+    return Localized{std::move(r), static_cast<int>(sent.size()) - 1};
+  };
+  const RouteLimits limits = sut_.limits();
+  const std::string expected = print_snapshot(model_);
+  const auto d = limits.subscriptions ? diff_documents(expected, late.text)
+                                      : diff_documents(without_subscriptions(expected), without_subscriptions(late.text));
+  if (!d) return format_finding();
+  late_shape_ = difference_shape(model_, *d);
+  if (localize && !localize(late_shape_)) return format_finding();
+  // Provenance first: the command that last wrote the model's line is
+  // where a host that stored something else most likely began to differ.
+  // Checked (the view agrees before it and differs after it); otherwise,
+  // and for a line the model does not have, bisection.
+  std::optional<Localized> l;
+  if (!d->expected_line.empty())
+    if (const auto w = line_written(model_, d->expected_line); w && w->step >= 1 && w->step <= sent.size())
+      l = judge_at(sent, w->step - 1);
+  if (!l) l = bisect(sent, 0, sent.size());
+  if (!l || !l->step.failure) return format_finding();
+  Finding& f = *l->step.failure;
+  f.message = std::string(kLateViewPrefix) +
+              ": a session that subscribed to the node and every layer (REAL32 and REAL64) after this command was "
+              "sent another node than the session that watched it all along, which agreed with the model; " +
+              f.message;
+  return l;
 }
 
 }  // namespace vgc

@@ -22,7 +22,9 @@
 // check_step, as before, unless the caller allows sparse reading (below).
 #pragma once
 
+#include <functional>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "check_step.h"
@@ -83,6 +85,29 @@ class ProgramChecker {
   // they agree or every step compared them. `sent` is the program as sent.
   std::optional<Localized> finish(const std::vector<Command>& sent);
 
+  // After the last step, on a route that shows what a party that starts
+  // watching now would be sent (Implementation::offers_late_view: the
+  // Verse wire's late subscriber): that view against the model. A
+  // difference is localized by bisection with the late view on (a prefix
+  // of the program from a fresh node, the view read after it; first the
+  // command that last wrote the model's differing line, checked), and the
+  // first command whose prefix differs is judged by check_step on the late
+  // view, so it is blamed by provenance like any other; its message starts
+  // with kLateViewPrefix. `localize` (may be empty: always) is asked with
+  // the difference's shape (attribution.h difference_shape) first: false
+  // spares the bisection (a shape already localized to a tolerated clause)
+  // and nothing is returned. nullopt when the view agrees, the route has
+  // none, or the view could not be read (that is no finding: the route's
+  // own session, not the implementation).
+  std::optional<Localized> check_late_view(const std::vector<Command>& sent,
+                                           const std::function<bool(const std::string& shape)>& localize = {});
+  // The shape of the late view's last difference (empty: none seen).
+  const std::string& late_shape() const { return late_shape_; }
+  // The last check_late_view's finding on a subscription kept in two
+  // formats (Implementation::late_view_wrong_format), whether or not it is
+  // the one returned: a replay shows both (ReplayResult::also_failed).
+  const std::optional<Finding>& late_format_finding() const { return late_format_; }
+
  private:
   Node rebuild(std::size_t commands) const;  // a fresh node with the first `commands` of applied_
   StepResult full_step(const Command& c, std::vector<DerivedChange>* derived_changed);
@@ -95,6 +120,10 @@ class ProgramChecker {
   // The first command after `agreed` (a prefix length whose documents agree)
   // up to `differs` whose prefix differs, judged; nullopt when none does.
   std::optional<Localized> bisect(const std::vector<Command>& sent, std::size_t agreed, std::size_t differs);
+  // Command `index` of `sent` judged by check_step after the prefix before
+  // it, sent to a fresh implementation, agrees with the model; nullopt
+  // when the prefix does not agree or the command shows no difference.
+  std::optional<Localized> judge_at(const std::vector<Command>& sent, std::size_t index);
 
   Implementation& sut_;
   bool follow_choices_;
@@ -107,6 +136,11 @@ class ProgramChecker {
   NodeDigest digest_;
   ChangeLog changes_;
   std::vector<Command> applied_;
+  std::string late_shape_;
+  std::optional<Finding> late_format_;
 };
+
+// How a finding of the late view (ProgramChecker::check_late_view) begins.
+inline constexpr const char* kLateViewPrefix = "late subscriber";
 
 }  // namespace vgc

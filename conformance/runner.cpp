@@ -86,6 +86,12 @@ struct CaseContext {
   // implementation and replays the case so far, which at that size costs
   // minutes on a slow route (r6's geometry code behind vgc_r6_exec).
   bool no_take_out = false;
+  // The late view (program_checker.h check_late_view): each shape of
+  // difference with the finding it was last localized to, and the shape of
+  // the finding being shrunk (a shrink attempt with another shape is not
+  // localized: it cannot be that finding).
+  std::map<std::string, Finding> late_shapes;
+  std::string sought_late_shape;
   // What the instance had been sent since it started when the round's first
   // call failure happened (confirm_finding.h), the failing case last.
   HistoryRecorder* recorder = nullptr;
@@ -517,6 +523,9 @@ class RequestRecorder final : public Implementation {
   std::string identity() const override { return sut_.identity(); }
   bool offers_digest() override { return sut_.offers_digest(); }
   DigestAnswer digest() override { return sut_.digest(); }
+  bool offers_late_view() override { return sut_.offers_late_view(); }
+  void use_late_view(bool on) override { sut_.use_late_view(on); }
+  std::string late_view_wrong_format() override { return sut_.late_view_wrong_format(); }
   Document request(const std::string& line) override {
     Document d = sut_.request(line);
     last_request = line;
@@ -691,6 +700,36 @@ bool compare_whole_documents(CaseContext& c) {
   return true;
 }
 
+// What a party that starts watching the node now is sent (the Verse wire's
+// late subscriber), against the model; a difference is localized and
+// blamed (program_checker.h check_late_view). The case's steps were all
+// judged, so a difference in a clause tolerated at that kind is noted, not
+// set aside; a shape of difference already localized to such a clause is
+// not localized again (each costs a bisection: reset and replay). False
+// ends the case.
+bool check_late_view(CaseContext& c) {
+  if (!case_still_judged(c)) return false;
+  const auto localize = [&c](const std::string& shape) {
+    if (c.shrinking)
+      return c.last_failure && finding_kind(*c.last_failure) == "hidden-state" && shape == c.sought_late_shape;
+    const auto it = c.late_shapes.find(shape);
+    return it == c.late_shapes.end() || !is_tolerated(c, it->second);
+  };
+  auto l = c.checker->check_late_view(c.trace, localize);
+  if (!l || past_deadline()) return true;
+  const Finding f = *l->step.failure;
+  const std::string shape = c.checker->late_shape();
+  if (!c.shrinking) c.late_shapes[shape] = f;
+  if (is_tolerated(c, f)) {
+    note_tolerated(f);
+    return true;
+  }
+  c.trace.resize(static_cast<std::size_t>(l->index) + 1);
+  if (!c.shrinking) c.sought_late_shape = shape;
+  fail_case(f);
+  return false;
+}
+
 // An optional capability: judged on the final state, the variant
 // (subdivision level) chosen by the case; a check that needs more
 // (check_drawn) gets a value drawn for the case.
@@ -724,6 +763,7 @@ void run_case(const CaseSpec& s) {
   if (s.at_scale) run_scale_case();
   else run_drawn_commands(c, s.focus);
   if (!compare_whole_documents(c)) return;
+  if (!check_late_view(c)) return;
   if (s.capability) check_capability(c, s);
 }
 
@@ -1214,6 +1254,13 @@ ReplayResult replay_program(const Program& program, Implementation& sut) {
   if (auto l = checker.finish(program.commands)) {  // a ?digest that does not stand for the documents
     r.failure = l->step.failure;
     r.failed_at = l->index;
+    return r;
+  }
+  if (auto l = checker.check_late_view(program.commands)) {  // what a late subscriber is sent
+    r.failure = l->step.failure;
+    r.failed_at = l->index;
+    if (const auto& also = checker.late_format_finding(); also && also->clause != r.failure->clause)
+      r.also_failed.push_back(*also);
     return r;
   }
   const Node& model = checker.model();

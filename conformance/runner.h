@@ -68,6 +68,10 @@ struct ReplayResult {
   int failed_at = -1;
   std::vector<Finding> notes;
   std::string not_judged;  // empty, or why program.request could not be judged
+  // Other failures the program's end shows besides `failure` (the late
+  // view's: a document difference and a subscription kept in two formats;
+  // certify reports whichever its tolerated clauses leave first).
+  std::vector<Finding> also_failed;
 };
 ReplayResult replay_program(const Program& program, Implementation& sut);
 

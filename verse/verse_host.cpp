@@ -59,6 +59,9 @@ struct Session {
   BoneForm bone_form = BoneForm::Spec;  // what it is sent in: the host's, until it sends the other one
   std::set<std::uint32_t> node_subs;
   std::map<std::pair<std::uint32_t, std::uint16_t>, RealFormat> layer_subs;
+  // HostOptions::both_formats: the format a subscription had before the
+  // session subscribed again in another one, still served (as r6 does).
+  std::map<std::pair<std::uint32_t, std::uint16_t>, RealFormat> layer_subs_kept;
 };
 
 struct HostedGeometry {
@@ -293,7 +296,11 @@ struct Host::Impl {
 
   void send_node_content(Session& s, const HostedGeometry& g) {
     const NodeState& state = g.view.state();
-    for (const auto& [lid, l] : state.layers) send_to(s, wire::Geometry{g.id, layer_command(lid, l)});
+    for (const auto& [lid, l] : state.layers) {
+      cmd::LayerCreate c = layer_command(lid, l);
+      if (options.xyz_no_default && c.type == static_cast<std::uint8_t>(LayerType::VertexXyz)) c.def_real = 0;
+      send_to(s, wire::Geometry{g.id, c});
+    }
     send_to(s, wire::Geometry{g.id, cmd::CreaseSetVertex{state.crease_vertex.layer, state.crease_vertex.def_crease}});
     send_to(s, wire::Geometry{g.id, cmd::CreaseSetEdge{state.crease_edge.layer, state.crease_edge.def_crease}});
     for (const auto& [bid, b] : state.bones) send_to(s, wire::Geometry{g.id, bone_command(b)});
@@ -350,6 +357,8 @@ struct Host::Impl {
         other.node_subs.erase(x->node_id);
         for (auto it = other.layer_subs.begin(); it != other.layer_subs.end();)
           it = it->first.first == x->node_id ? other.layer_subs.erase(it) : std::next(it);
+        for (auto it = other.layer_subs_kept.begin(); it != other.layer_subs_kept.end();)
+          it = it->first.first == x->node_id ? other.layer_subs_kept.erase(it) : std::next(it);
         if (other.connected && other.index_geometry) send_to(other, wire::NodeDestroy{x->node_id});
       }
     } else if (auto* x = std::get_if<wire::NodeSubscribe>(&c)) {
@@ -361,6 +370,8 @@ struct Host::Impl {
       s.node_subs.erase(x->node_id);
       for (auto it = s.layer_subs.begin(); it != s.layer_subs.end();)
         it = it->first.first == x->node_id ? s.layer_subs.erase(it) : std::next(it);
+      for (auto it = s.layer_subs_kept.begin(); it != s.layer_subs_kept.end();)
+        it = it->first.first == x->node_id ? s.layer_subs_kept.erase(it) : std::next(it);
     } else if (auto* x = std::get_if<wire::NodeNameSet>(&c)) {
       auto g = nodes.find(x->node_id);
       if (g == nodes.end() || x->name.empty()) return;
@@ -395,16 +406,33 @@ struct Host::Impl {
       log("node " + std::to_string(g.id) + ": " + st.detail);
       return;
     }
+    // Before `failed`: the r6 deviation announces a delete the node refused.
+    if (const auto* del = std::get_if<cmd::VertexDelete>(&x.command); del && options.announce_missing_deletes) {
+      const auto live_in = [&](const NodeState& st) {
+        const auto base = st.slots.find(0);
+        return base != st.slots.end() && base->second.count(del->vertex_id) > 0;
+      };
+      if (!live_in(change.before) && !live_in(g.view.state()))
+        for (auto& [peer, other] : sessions)
+          if (const auto f = other.layer_subs.find({g.id, 0}); other.connected && f != other.layer_subs.end())
+            send_to(other, wire::Geometry{g.id, is_real64(f->second) ? vgc::Command(cmd::VertexSetXyzReal64{
+                                                                           0, del->vertex_id, DBL_MAX, DBL_MAX, DBL_MAX})
+                                                                     : vgc::Command(cmd::VertexDelete{del->vertex_id})});
+    }
     if (failed) return;
     broadcast_changes(g, change.before, change.after);
     if (const auto* sub = std::get_if<cmd::LayerSubscribe>(&x.command)) {
       if (sub->real_format <= 1 && g.view.state().layers.count(sub->layer_id)) {
         const RealFormat f = static_cast<RealFormat>(sub->real_format);
+        const auto old = s.layer_subs.find({g.id, sub->layer_id});
+        if (options.both_formats && old != s.layer_subs.end() && old->second != f)
+          s.layer_subs_kept[{g.id, sub->layer_id}] = old->second;
         s.layer_subs[{g.id, sub->layer_id}] = f;
         send_layer_content(s, g, sub->layer_id, f);
       }
     } else if (const auto* un = std::get_if<cmd::LayerUnsubscribe>(&x.command)) {
       s.layer_subs.erase({g.id, un->layer_id});
+      s.layer_subs_kept.erase({g.id, un->layer_id});
     }
   }
 
@@ -444,7 +472,7 @@ struct Host::Impl {
       if (!s.connected) continue;
       if (s.node_subs.count(g.id))
         for (const vgc::Command& c : node_level) send_to(s, wire::Geometry{g.id, c});
-      for (std::uint16_t lid : reset_layers) s.layer_subs.erase({g.id, lid});
+      for (std::uint16_t lid : reset_layers) s.layer_subs.erase({g.id, lid}), s.layer_subs_kept.erase({g.id, lid});
     }
 
     static const std::map<std::uint32_t, vgc::Slot> kEmpty;
@@ -453,6 +481,8 @@ struct Host::Impl {
       for (auto& [peer, s] : sessions) {
         auto f = s.layer_subs.find({g.id, lid});
         if (s.connected && f != s.layer_subs.end()) subs.emplace_back(&s, f->second);
+        auto k = s.layer_subs_kept.find({g.id, lid});
+        if (s.connected && k != s.layer_subs_kept.end()) subs.emplace_back(&s, k->second);
       }
       if (subs.empty()) continue;
       auto a_it = after.slots.find(lid);

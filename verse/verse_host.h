@@ -72,6 +72,21 @@ struct HostOptions {
   bool reuse_node_ids = false;
   BoneForm bone_form = BoneForm::Spec;
   bool strict_bone_form = false;
+  // r6 deviations from the spec, for tests of a client that must find them
+  // (docs/verse_wire.md "Certifying r6"); none by default.
+  // announce_missing_deletes: a vertex_delete of a vertex that is not live
+  // is sent to layer 0's subscribers anyway, as r6 does (vs_node_geometry.c
+  // callback_send_g_vertex_delete_real checks only its storage size).
+  // xyz_no_default: a VERTEX_XYZ layer is announced to a new subscriber of
+  // the node with def_real 0 (r6 keeps no default for one: its layer_create
+  // sets def.real only for the other real types); those who watched the
+  // layer's creation were sent the right one.
+  // both_formats: a session that subscribes to a layer in one real format
+  // and then in the other is served in both (r6 adds it to the second
+  // list and never takes it off the first: every value comes twice).
+  bool announce_missing_deletes = false;
+  bool xyz_no_default = false;
+  bool both_formats = false;
   // A session silent this long (while it owes acks or has not finished its
   // login) is dropped (r6: 30 s). A dropped session's client is told
   // (connect_terminate), and told again for this long if it keeps sending.

@@ -54,6 +54,13 @@ struct Answer {
   // the implementation's state is unchanged, and the step is not judged
   // (check_step.h); detail says why.
   bool not_sent = false;
+  // For an answer `done` from a route that sees what the implementation
+  // told others about the command (the Verse wire: what the host sent its
+  // subscribers for it): the first such message, printed; empty when it
+  // sent nothing. A host's broadcasts are its verdict: a command whose
+  // effect it announced was applied, even when the state shows no change
+  // (a delete of an element the watching session never saw). check_step.h.
+  std::string broadcast;
 };
 
 // The text documents of snapshot.h and derived_document.h, as the
@@ -150,6 +157,20 @@ class Implementation {
   virtual void expect_answer_bytes(std::size_t bytes) { (void)bytes; }
   // The digests of its two documents now; only called when offers_digest().
   virtual DigestAnswer digest() { return {CallStatus::ProtocolError, {}, "not supported"}; }
+  // Whether the route can show what a party that starts watching the node
+  // now would be sent (the Verse wire: a session that subscribes late),
+  // which can differ from what was sent to those that watched it all along
+  // (the snapshot). Default: no (the route shows the stored state itself).
+  virtual bool offers_late_view() { return false; }
+  // While on, snapshot() answers that late view (program_checker.h judges
+  // it at the end of every case and localizes a difference). Only called
+  // when offers_late_view().
+  virtual void use_late_view(bool on) { (void)on; }
+  // Read with the late view: what a party that subscribed to the node's
+  // base vertex layer at REAL32 and then at REAL64, before the case, was
+  // sent during it in the format it left (a REAL32 value: the host kept
+  // both subscriptions, as r6 does), printed; empty when nothing.
+  virtual std::string late_view_wrong_format() { return {}; }
 };
 
 struct OpenOptions {

@@ -2,6 +2,7 @@
 #include "verse_implementation.h"
 
 #include <chrono>
+#include <map>
 #include <cstdlib>
 #include <optional>
 #include <set>
@@ -143,6 +144,7 @@ void VerseImplementation::use_bone_form(verse::BoneForm f) {
   bone_form_ = f;
   if (driver_) driver_->set_bone_form(f);
   if (observer_) observer_->set_bone_form(f);
+  if (late_) late_->set_bone_form(f);
 }
 
 Answer VerseImplementation::probe_bone_form() {
@@ -176,6 +178,7 @@ VerseImplementation::~VerseImplementation() {
     if (have_node_) ids.push_back(node_);
     (void)destroy_nodes(ids);
   }
+  if (late_) late_->disconnect();
   if (observer_) observer_->disconnect();
   if (driver_) driver_->disconnect();
 }
@@ -325,6 +328,15 @@ Answer VerseImplementation::refill_pool(double create_timeout_s) {
     if (const verse::Status st = observer_->subscribe_node(id); !st.ok())
       return failed(call_status_of(st), "subscribing to geometry node " + std::to_string(id) + ": " + st.to_string());
   }
+  // The late subscriber watches layer 0 of each, REAL32 then REAL64. (An
+  // id may be a destroyed node's: r6 reuses ids.)
+  for (std::uint32_t id : ids) late_watching_.erase(id);
+  bool late_ok = ensure_late();
+  for (std::uint32_t id : ids) {
+    if (!late_ok) break;
+    late_ok = late_->subscribe_node(id).ok() && late_->subscribe_layer(id, 0, RealFormat::Real32).ok() &&
+              late_->subscribe_layer(id, 0, RealFormat::Real64).ok();
+  }
   const auto deadline = Clock::now() + std::chrono::duration_cast<Clock::duration>(
                                            std::chrono::duration<double>(options_.timeout_seconds));
   const std::string what = "creating geometry nodes " + std::to_string(ids.front()) + " to " +
@@ -335,7 +347,35 @@ Answer VerseImplementation::refill_pool(double create_timeout_s) {
   if (a.status != CallStatus::Ok) return a;
   pool_.settle_all();
   drain_driver();
+  // Its subscriptions settled too (what they were sent: empty fresh nodes).
+  if (late_ok) {
+    std::vector<verse::WireCommand> dump;
+    ++round_trips_;
+    if (late_->barrier(ids.back(), seconds_left(deadline), &dump).ok()) {
+      verse::WireCommand w;
+      for (int i = 0; i < 100000 && late_->receive(&w, 0).ok(); ++i) {
+      }
+      late_watching_.insert(ids.begin(), ids.end());
+    } else {
+      late_->disconnect();  // logs in again at its next use
+    }
+  }
   return {};
+}
+
+bool VerseImplementation::ensure_late() {
+  if (late_ && late_->connected()) return true;
+  if (late_) late_->disconnect();
+  late_ = std::make_unique<verse::ClientSession>();
+  late_node_ = 0;
+  late_watching_.clear();
+  // The observer wakes the host for this login (r6 answers a login only on
+  // its one-second tick otherwise): once per run, not per case.
+  // It idles between cases: an ack it has not read yet is no sign of a host
+  // that forgot it (only its own time-out ends its waits).
+  verse::ClientOptions o = session_options(observer_.get());
+  o.unacknowledged_limit_s = 0;
+  return observer_ && late_->connect(host_, port_, o).ok();
 }
 
 Answer VerseImplementation::start() {
@@ -396,6 +436,7 @@ bool VerseImplementation::absorb(const verse::WireCommand& w, std::string* error
   const bool pooled = pool_.holds(g->node_id);
   if (!pooled && !(have_node_ && g->node_id == node_)) return true;  // another node
   VerseNodeMirror& m = pooled ? *pool_.mirror(g->node_id) : mirror_;
+  if (!pooled && counting_broadcasts_ && first_broadcast_.empty()) first_broadcast_ = print_command(g->command);
   const bool follow_layers = !pooled || !pool_.settled(g->node_id);
   if (const auto* lc = std::get_if<cmd::LayerCreate>(&g->command); lc && !lc->name.empty() && follow_layers) {
     const auto it = m.layers().find(lc->layer_id);
@@ -515,6 +556,7 @@ Answer VerseImplementation::settle(const std::string& what) {
     if (!absorb(w, &error)) return failed(CallStatus::ProtocolError, what + ": " + error);
   }
   if (Answer a = absorb_arrived(what); a.status != CallStatus::Ok) return a;
+  counting_broadcasts_ = false;  // what follows answers the observer's own subscriptions
   // Layers announced: the observer subscribes and waits for their contents.
   if (Answer a = subscribe_new_layers(node_, deadline, what); a.status != CallStatus::Ok) return a;
   drain_driver();
@@ -543,15 +585,140 @@ Answer VerseImplementation::apply(const Command& c) {
   if (const verse::Status st = driver_->send_geometry(node_, c); !st.ok())
     return failed(call_status_of(st), "sending `" + print_command(c) + "`: " + st.to_string());
   if (may_desynchronise_r6(c)) desync_risk_ = true;
+  first_broadcast_.clear();
+  counting_broadcasts_ = true;
   Answer a = settle(what);
+  counting_broadcasts_ = false;
   if (a.status != CallStatus::Ok) return a;
   a.verdict_reported = false;  // `done`: a host acknowledges nothing
+  a.broadcast = first_broadcast_;  // ... but what it tells its subscribers is its verdict
   return a;
 }
 
 Document VerseImplementation::snapshot() {
   if (broken_) return {CallStatus::Crash, {}, "the session with the Verse host was lost"};
+  if (late_view_) return late_snapshot();
   return {CallStatus::Ok, mirror_.snapshot(), {}};
+}
+
+Document VerseImplementation::late_snapshot() {
+  if (!have_node_) return {CallStatus::Crash, {}, "no node to subscribe to"};
+  late_wrong_format_.clear();
+  for (int attempt = 0;; ++attempt) {
+    if (!ensure_late()) return {CallStatus::Crash, {}, "the late subscriber could not log in"};
+    Document d = late_snapshot_once();
+    // A session the host forgot (r6 drops one silent for 30 s, as this one
+    // is between cases) logs in again, once.
+    if (d.status == CallStatus::Ok || attempt == 1) return d;
+    late_->disconnect();
+  }
+}
+
+Document VerseImplementation::late_snapshot_once() {
+  const auto deadline = Clock::now() + std::chrono::duration_cast<Clock::duration>(
+                                           std::chrono::duration<double>(options_.timeout_seconds));
+  // What it was sent while watching the node (a pool node's layer 0, from
+  // REAL32 then REAL64 subscriptions): a round trip of its own first, since
+  // a host sends each session's share of a change in its own time (r6
+  // flushes this session after the observer's echo). Then what an earlier
+  // node sent it is dropped.
+  const bool watched = late_watching_.erase(node_) > 0;
+  std::vector<verse::WireCommand> stream;
+  if (watched) {
+    ++round_trips_;
+    if (const verse::Status st = late_->barrier(node_, options_.timeout_seconds, &stream); !st.ok())
+      return Document{call_status_of(st), {}, "the late subscriber's round trip: " + st.to_string()};
+  }
+  verse::WireCommand w;
+  for (int i = 0; i < 100000 && late_->receive(&w, 0).ok(); ++i) stream.push_back(w);
+  for (const auto& x : stream) {
+    const auto* g = std::get_if<verse::wire::Geometry>(&x);
+    if (!watched || !g || g->node_id != node_ || !late_wrong_format_.empty()) continue;
+    if (const auto* v = std::get_if<cmd::VertexSetXyzReal32>(&g->command); v && v->layer_id == 0)
+      late_wrong_format_ = print_command(g->command);
+  }
+  // Subscribed again below, from nothing. (Only the node's own id: an
+  // earlier node's may be a pool node's by now, r6 reusing ids.)
+  if (watched || late_node_ == node_) (void)late_->unsubscribe_node(node_);
+  late_node_ = node_;
+  const auto fail = [&](CallStatus s, const std::string& why) {
+    return Document{s, {}, "the late subscriber of node " + std::to_string(node_) + ": " + why};
+  };
+  if (const verse::Status st = late_->subscribe_node(node_); !st.ok()) return fail(call_status_of(st), st.to_string());
+  // Every layer the observer knows, in each format a layer of its type has
+  // (a REAL32 and a REAL64 subscription of a real layer, one of any other);
+  // layers only the late subscriber is told of get a round of their own.
+  const auto is_real = [](LayerType t) {
+    return t == LayerType::VertexXyz || t == LayerType::VertexReal || t == LayerType::PolygonCornerReal ||
+           t == LayerType::PolygonFaceReal;
+  };
+  std::map<std::uint16_t, LayerType> asked;
+  std::vector<verse::WireCommand> seen;
+  std::map<std::uint16_t, LayerType> to_ask;
+  for (const auto& [lid, layer] : mirror_.layers()) to_ask[lid] = layer.type;
+  for (int round = 0;; ++round) {
+    for (const auto& [lid, type] : to_ask) {
+      for (RealFormat f : {RealFormat::Real32, RealFormat::Real64}) {
+        if (f == RealFormat::Real64 && !is_real(type)) continue;
+        if (const verse::Status st = late_->subscribe_layer(node_, lid, f); !st.ok())
+          return fail(call_status_of(st), "subscribing to layer " + std::to_string(lid) + ": " + st.to_string());
+      }
+      asked[lid] = type;
+    }
+    std::vector<verse::WireCommand> before;
+    ++round_trips_;
+    const verse::Status st = late_->barrier(node_, seconds_left(deadline), &before);
+    if (!st.ok()) return fail(call_status_of(st), "its round trip: " + st.to_string());
+    for (int i = 0; i < 100000 && late_->receive(&w, 0).ok(); ++i) before.push_back(w);  // the echo's datagram
+    seen.insert(seen.end(), before.begin(), before.end());
+    // Layers announced to it (layer_create with a name) that it has not
+    // asked for in that type.
+    to_ask.clear();
+    for (const auto& x : before)
+      if (const auto* g = std::get_if<verse::wire::Geometry>(&x); g && g->node_id == node_)
+        if (const auto* lc = std::get_if<cmd::LayerCreate>(&g->command); lc && !lc->name.empty() && is_layer_type(lc->type)) {
+          const auto it = asked.find(lc->layer_id);
+          if (it == asked.end() || it->second != static_cast<LayerType>(lc->type))
+            to_ask[lc->layer_id] = static_cast<LayerType>(lc->type);
+        }
+    if (to_ask.empty()) break;
+    if (round == 8) return fail(CallStatus::ProtocolError, "the host kept announcing new layers after 8 rounds");
+  }
+  // Everything it was sent comes from one state (nothing ran meanwhile), so
+  // the layers, creases and bones go first (r6 sends a flush in the hash
+  // order of addresses: a layer's values may come before the layer), then
+  // the values, REAL32 ones to one view and REAL64 ones to the other.
+  // A dump holds live elements only, so a vertex_delete in it is the alias
+  // a REAL32 write of FLT_MAX reads as (the REAL32 subscriber's loss,
+  // VerseNodeMirror::take_real32_differences).
+  const auto real32_only = [](const Command& c) {
+    return std::holds_alternative<cmd::VertexDelete>(c) || std::holds_alternative<cmd::VertexSetXyzReal32>(c) || std::holds_alternative<cmd::VertexSetReal32>(c) ||
+           std::holds_alternative<cmd::PolygonSetCornerReal32>(c) || std::holds_alternative<cmd::PolygonSetFaceReal32>(c);
+  };
+  const auto real64_only = [](const Command& c) {
+    return std::holds_alternative<cmd::VertexSetXyzReal64>(c) || std::holds_alternative<cmd::VertexSetReal64>(c) ||
+           std::holds_alternative<cmd::PolygonSetCornerReal64>(c) || std::holds_alternative<cmd::PolygonSetFaceReal64>(c);
+  };
+  const auto node_level = [](const Command& c) {
+    return std::holds_alternative<cmd::LayerCreate>(c) || std::holds_alternative<cmd::LayerDestroy>(c) ||
+           std::holds_alternative<cmd::CreaseSetVertex>(c) || std::holds_alternative<cmd::CreaseSetEdge>(c) ||
+           std::holds_alternative<cmd::BoneCreate>(c) || std::holds_alternative<cmd::BoneDestroy>(c);
+  };
+  VerseNodeMirror v32(kMirrorCells), v64(kMirrorCells);
+  std::string error;
+  for (int pass = 0; pass < 2; ++pass)
+    for (const auto& x : seen) {
+      const auto* g = std::get_if<verse::wire::Geometry>(&x);
+      if (!g || g->node_id != node_ || node_level(g->command) != (pass == 0)) continue;
+      if (!real64_only(g->command) && !v32.apply(g->command, &error)) return fail(CallStatus::ProtocolError, error);
+      if (!real32_only(g->command) && !v64.apply(g->command, &error)) return fail(CallStatus::ProtocolError, error);
+    }
+  v64.take_real32_differences(v32);
+  // Done with the node: nothing more is sent it for it, and a later node
+  // with its id (r6 reuses ids) is not unsubscribed by mistake.
+  (void)late_->unsubscribe_node(node_);
+  late_node_ = 0;
+  return {CallStatus::Ok, v64.snapshot(), {}};
 }
 
 Document VerseImplementation::derived() {

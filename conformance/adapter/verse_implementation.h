@@ -34,6 +34,28 @@
 // subscriptions, three round trips for a batch instead of three per node);
 // a fresh node is whatever the host sent for it.
 //
+// A host's broadcasts are its verdicts: what the observer received for the
+// node before the echo is the Answer's `broadcast`, so a command whose
+// effect the host announced counts as applied even when the state the
+// observer built did not change (check_step.h).
+//
+// The late view (Implementation::offers_late_view): a third session,
+// logged in once for the run (and again only when the host forgot it),
+// subscribes to the node and every layer, REAL32 and REAL64, in one batch
+// and one round trip, and builds the node from what the host sends it.
+// What a session that subscribes late is sent must be what the watching
+// session built: a host that changes state without telling its
+// subscribers (r6 writes a new vertex's position into every XYZ layer
+// silently) is seen only so. The late view prints the REAL64 view, with a
+// slot whose REAL32 value is not the REAL64 value rounded to float taken
+// from the REAL32 view (so either difference shows against the model).
+// The same session also watches the base vertex layer of every pool node
+// from the pool's making, subscribed at REAL32 and then at REAL64: a
+// REAL32 value it is sent during the case means the host kept both
+// subscriptions (r6 puts it on both lists and sends every value twice);
+// late_view_wrong_format() says so (LAYER-SUBSCRIBE-1). That costs one
+// round trip per pool batch.
+//
 // Load: every round trip waits for the host to be scheduled (r6 polls its
 // socket in a loop), so on a loaded machine the run's time is its number of
 // round trips (docs/verse_wire.md "Where the time of a wire run goes"):
@@ -91,6 +113,9 @@ class VerseImplementation final : public Implementation {
   Document snapshot() override;
   Document derived() override;
   RouteLimits limits() const override;
+  bool offers_late_view() override { return true; }
+  void use_late_view(bool on) override { late_view_ = on; }
+  std::string late_view_wrong_format() override { return late_wrong_format_; }
 
   // The geometry node the commands go to now (changes at every reset()),
   // and the bone_create form spoken: for `vgc fuzz wire` (fuzz/wire_fuzz.h),
@@ -148,11 +173,28 @@ class VerseImplementation final : public Implementation {
   Answer probe_bone_form();
   void use_bone_form(verse::BoneForm f);
   void drain_driver();
+  // The late view of the current node (class comment): logs the late
+  // session in when it is not, once more when its round trip fails.
+  Document late_snapshot();
+  Document late_snapshot_once();
+  // Logs the late subscriber in when it is not; false when it cannot be.
+  bool ensure_late();
 
   std::string spec_, login_, host_;
   std::uint16_t port_ = 0;
   OpenOptions options_;
   std::unique_ptr<verse::ClientSession> driver_, observer_;
+  std::unique_ptr<verse::ClientSession> late_;  // the late subscriber, made at its first use
+  std::uint32_t late_node_ = 0;                 // the node it subscribed to last (0: none)
+  bool late_view_ = false;                      // snapshot() answers the late view
+  // Pool nodes whose layer 0 the late subscriber watches, subscribed at
+  // REAL32 and then at REAL64 when the pool was made (class comment).
+  std::set<std::uint32_t> late_watching_;
+  std::string late_wrong_format_;  // what it was sent in the format it left (late_view_wrong_format)
+  // The broadcasts of the command under way (apply(), until its echo): the
+  // first one the observer received for the current node, printed.
+  bool counting_broadcasts_ = false;
+  std::string first_broadcast_;
   std::uint32_t node_ = 0;
   bool have_node_ = false;
   bool broken_ = true;  // reset() must log in again

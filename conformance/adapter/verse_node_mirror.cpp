@@ -2,6 +2,8 @@
 #include "verse_node_mirror.h"
 
 #include <cfloat>
+#include <cmath>
+#include <set>
 #include <type_traits>
 
 #include "command_text.h"
@@ -219,6 +221,55 @@ bool VerseNodeMirror::apply(const Command& sent, std::string* error) {
         }
       },
       sent);
+}
+
+void VerseNodeMirror::take_real32_differences(const VerseNodeMirror& real32) {
+  const auto same = [](double v64, double v32) {
+    const double rounded = static_cast<double>(static_cast<float>(v64));
+    return (std::isnan(rounded) && std::isnan(v32)) || rounded == v32;
+  };
+  // A vertex with a coordinate that rounds to FLT_MAX in some XYZ layer
+  // cannot be sent to a REAL32 subscriber: its real32 form is the
+  // vertex_delete alias (docs/spec_facts.md section 4), which the REAL32
+  // view then applied to the whole vertex. Such vertices keep this view's.
+  std::set<std::uint32_t> unsendable;
+  for (const auto& [lid, layer] : layers_)
+    if (layer.type == LayerType::VertexXyz)
+      for (const auto& [e, slot] : layer.slots)
+        for (int i = 0; i < 3; ++i)
+          if (static_cast<float>(slot.r[i]) == FLT_MAX) unsendable.insert(e);
+  for (auto& [lid, layer] : layers_) {
+    const bool vertex_stack = is_vertex_stack(layer.type);
+    const auto skip = [&](std::uint32_t e) { return vertex_stack && unsendable.count(e) > 0; };
+    const auto other = real32.layers_.find(lid);
+    if (other == real32.layers_.end() || other->second.type != layer.type) continue;
+    int components = 0;
+    switch (layer.type) {
+      case LayerType::VertexXyz: components = 3; break;
+      case LayerType::VertexReal: case LayerType::PolygonFaceReal: components = 1; break;
+      case LayerType::PolygonCornerReal: components = 4; break;
+      default: continue;  // no real values: both views hold the same
+    }
+    for (auto it = layer.slots.begin(); it != layer.slots.end();) {
+      if (skip(it->first)) {
+        ++it;
+        continue;
+      }
+      const auto o = other->second.slots.find(it->first);
+      if (o == other->second.slots.end()) {
+        it = layer.slots.erase(it);
+        continue;
+      }
+      for (int i = 0; i < components; ++i)
+        if (!same(it->second.r[i], o->second.r[i])) {
+          it->second = o->second;
+          break;
+        }
+      ++it;
+    }
+    for (const auto& [e, slot] : other->second.slots)
+      if (!layer.slots.count(e) && !skip(e)) layer.slots[e] = slot;
+  }
 }
 
 std::string VerseNodeMirror::snapshot() const {

@@ -49,6 +49,12 @@ class VerseNodeMirror {
   // The snapshot document (reference/node/snapshot.h) of what the host sent,
   // with no subscription column ("-": a host broadcasts none).
   std::string snapshot() const;
+  // This mirror is a REAL64 subscriber's view and `real32` a REAL32
+  // subscriber's of the same state: wherever `real32` differs other than by
+  // rounding to float (a slot's value, an element one has and the other
+  // has not, in a real layer), this takes `real32`'s, so the difference
+  // shows in snapshot() (the verse: route's late view).
+  void take_real32_differences(const VerseNodeMirror& real32);
 
   const std::map<std::uint16_t, Layer>& layers() const { return layers_; }
   const CreaseSetting& vertex_crease() const { return vertex_crease_; }

@@ -120,5 +120,37 @@ TEST(VerseNodeMirror, AHostCannotMakeItGrowPastItsBound) {
   EXPECT_NE(error.find("more state than vgc keeps"), std::string::npos) << error;
 }
 
+// The late view (verse_implementation.h): a REAL32 subscriber's view taken
+// where it differs from the REAL64 one other than by rounding; a vertex
+// whose REAL32 form is the delete alias (a coordinate of FLT_MAX) cannot be
+// sent to a REAL32 subscriber and keeps the REAL64 view's.
+TEST(VerseNodeMirror, AReal32ViewCountsOnlyWhereItDiffersBeyondRounding) {
+  VerseNodeMirror v64, v32;
+  announce_fresh_node(&v64);
+  announce_fresh_node(&v32);
+  std::string error;
+  for (const char* c : {"layer_create 2 \"r\" VERTEX_REAL 0 0", "layer_create 3 \"x\" VERTEX_XYZ 0 0"}) {
+    ASSERT_TRUE(v64.apply(C(c), &error)) << error;
+    ASSERT_TRUE(v32.apply(C(c), &error)) << error;
+  }
+  ASSERT_TRUE(v64.apply(C("vertex_set_xyz_real64 0 0 0.1 0.2 0.3"), &error)) << error;
+  ASSERT_TRUE(v32.apply(C("vertex_set_xyz_real32 0 0 0.1 0.2 0.3"), &error)) << error;
+  ASSERT_TRUE(v64.apply(C("vertex_set_real64 2 0 0.1"), &error)) << error;
+  ASSERT_TRUE(v32.apply(C("vertex_set_real32 2 0 0.1"), &error)) << error;
+  VerseNodeMirror same = v64;
+  same.take_real32_differences(v32);
+  EXPECT_EQ(same.snapshot(), v64.snapshot());  // only rounding
+  ASSERT_TRUE(v32.apply(C("vertex_set_real32 2 0 0.5"), &error)) << error;  // a REAL32 subscriber told otherwise
+  VerseNodeMirror merged = v64;
+  merged.take_real32_differences(v32);
+  EXPECT_NE(merged.snapshot().find("slot 2 0 0.5\n"), std::string::npos) << merged.snapshot();
+  // FLT_MAX in layer 3: the REAL32 subscriber reads the delete alias.
+  ASSERT_TRUE(v64.apply(C("vertex_set_xyz_real64 3 0 1 3.4028234663852886e+38 1"), &error)) << error;
+  ASSERT_TRUE(v32.apply(C("vertex_delete 0"), &error)) << error;
+  VerseNodeMirror kept = v64;
+  kept.take_real32_differences(v32);
+  EXPECT_EQ(kept.snapshot(), v64.snapshot());
+}
+
 }  // namespace
 }  // namespace vgc

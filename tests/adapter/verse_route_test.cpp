@@ -25,6 +25,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -271,6 +272,99 @@ TEST(VerseRoute, ASeededFaultInTheServedNodeIsNamedWithItsClause) {
     }
   EXPECT_TRUE(named);
   EXPECT_FALSE(run.conformant);
+}
+
+// Issue 27 item 2: a host's broadcasts are its verdicts. A host that, as
+// r6 does, sends its subscribers the delete of a vertex that is not live
+// (`--r6-deviation announce-missing-deletes`) applied the delete, although
+// the state the watching session built does not change: VERTEX-DELETE-1
+// fails on the verdict. (main's route judged the unchanged state as the
+// delete dropped and passed it.)
+TEST(VerseRoute, ABroadcastOfARefusedCommandIsItsVerdict) {
+  ServedHost host({"--r6-deviation", "announce-missing-deletes"}, {});
+  ASSERT_NE(host.port(), 0) << "no port in \"" << host.line() << "\"";
+  auto sut = open_verse(host);
+  ASSERT_NE(sut, nullptr);
+  RunOptions o = options(40);
+  o.clause_glob = "VERTEX-*";
+  const RunResult run = run_certification(*sut, o);
+  bool named = false;
+  for (const ClauseOutcome& co : run.clauses) {
+    if (co.clause->id != "VERTEX-DELETE-1") {
+      EXPECT_TRUE(co.status == "pass" || co.status == "not-applicable" || co.status == "not-selected")
+          << co.clause->id << " " << co.status << ": " << (co.finding ? co.finding->message : co.note);
+      continue;
+    }
+    ASSERT_TRUE(co.finding) << co.status << ": " << co.note;
+    named = co.status == "fail";
+    EXPECT_NE(co.finding->message.find("the host sent its subscribers `vertex_delete"), std::string::npos)
+        << co.finding->message;
+  }
+  EXPECT_TRUE(named);
+}
+
+// Issue 27 item 3: a late subscriber. A host that tells a session
+// subscribing later another default for a VERTEX_XYZ layer than it told
+// those who watched the layer's creation (`--r6-deviation xyz-no-default`,
+// r6 keeps no default for such a layer) is seen only by a session that
+// subscribes after the case: LAYER-CREATE-1 fails, as hidden state, blamed
+// by provenance on the layer's creation, and the counterexample replays
+// so. The served reference with no deviation stays conformant
+// (TheServedReferenceIsConformantOverTheWire).
+TEST(VerseRoute, ALateSubscriberSeesWhatTheWatchersWereNotTold) {
+  ServedHost host({"--r6-deviation", "xyz-no-default"}, {});
+  ASSERT_NE(host.port(), 0) << "no port in \"" << host.line() << "\"";
+  auto sut = open_verse(host);
+  ASSERT_NE(sut, nullptr);
+  RunOptions o = options(60);
+  o.clause_glob = "LAYER-*";
+  const RunResult run = run_certification(*sut, o);
+  std::optional<Program> program;
+  for (const ClauseOutcome& co : run.clauses) {
+    if (co.clause->id == "LAYER-CREATE-1") {
+      ASSERT_TRUE(co.finding) << co.status << ": " << co.note;
+      EXPECT_EQ(co.status, "fail");
+      EXPECT_EQ(co.finding->message.rfind("late subscriber: ", 0), 0u) << co.finding->message;
+      EXPECT_NE(co.finding->message.find("VERTEX_XYZ - 0 -"), std::string::npos) << co.finding->message;
+      program = co.program;
+    } else if (co.clause->id != "LAYER-RECREATE-1") {  // a re-typed XYZ layer: the same deviation, IMPL.-DEFINED
+      EXPECT_TRUE(co.status == "pass" || co.status == "not-applicable")
+          << co.clause->id << " " << co.status << ": " << (co.finding ? co.finding->message : co.note);
+    }
+  }
+  ASSERT_TRUE(program);
+  const ReplayResult r = replay_program(*program, *sut);
+  ASSERT_TRUE(r.failure);
+  EXPECT_EQ(r.failure->clause, "LAYER-CREATE-1") << r.failure->message;
+  EXPECT_EQ(r.failure->message.rfind("late subscriber: ", 0), 0u) << r.failure->message;
+}
+
+// Issue 27 item 3, r6's fifth behaviour: a session that subscribes to a
+// layer at REAL32 and then at REAL64 is kept on both lists and gets every
+// value twice (`--r6-deviation both-formats`). The late subscriber watches
+// layer 0 of every node so subscribed; a REAL32 value it is sent during
+// the case is LAYER-SUBSCRIBE-1's (on the wire otherwise not judgeable).
+TEST(VerseRoute, ASubscriptionInTwoFormatsIsFound) {
+  ServedHost host({"--r6-deviation", "both-formats"}, {});
+  ASSERT_NE(host.port(), 0) << "no port in \"" << host.line() << "\"";
+  auto sut = open_verse(host);
+  ASSERT_NE(sut, nullptr);
+  RunOptions o = options(20);
+  o.clause_glob = "VERTEX-*,LAYER-SUBSCRIBE-1";
+  const RunResult run = run_certification(*sut, o);
+  bool named = false;
+  for (const ClauseOutcome& co : run.clauses) {
+    if (co.clause->id != "LAYER-SUBSCRIBE-1") {
+      EXPECT_TRUE(co.status == "pass" || co.status == "not-applicable")
+          << co.clause->id << " " << co.status << ": " << (co.finding ? co.finding->message : co.note);
+      continue;
+    }
+    ASSERT_TRUE(co.finding) << co.status << ": " << co.note;
+    named = co.status == "fail";
+    EXPECT_NE(co.finding->message.find("a REAL32 value after its REAL64 subscription"), std::string::npos)
+        << co.finding->message;
+  }
+  EXPECT_TRUE(named);
 }
 
 // The host stops answering after the first property (SIGSTOP): the rest of
