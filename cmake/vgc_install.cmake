@@ -4,6 +4,8 @@
 #
 #   bin/vgc                                  the program
 #   include/vgc/vgc_plugin.h                 the plugin ABI header
+#   lib/vgc/libvgc_coverage.a, vgc_coverage.o  the coverage runtime for implementations (runtime/)
+#   include/vgc/vgc_coverage_shm.h           its shared memory layout
 #   share/doc/vgc/README.md, docs/*.md       the documentation
 #   lib/cmake/vgc/vgcConfig.cmake, vgcConfigVersion.cmake, vgcTargets*.cmake,
 #                vgcCertification.cmake      the CMake package

@@ -16,7 +16,13 @@
  * C_HOST_FAULT_UNROTATED_CHILDREN, a child bone's world position ignores its
  * parent's rotation (world_pos = parent's world_pos + pos), which breaks
  * clause BONE-DOWNSTREAM-1 (000 2.6.3: "all bones 'downstream' of it will
- * rotate, too").
+ * rotate, too"). With C_HOST_FAULT_GENERATION_WRAP, the element created
+ * when a stack's 2-bit generation of reused slots wraps (its fourth reuse
+ * of a deleted element's slot since the node was made) is never listed, so
+ * the vertex or polygon just set is missing (VERTEX-SET-1, ...). The
+ * reference keeps its elements in maps and has no slots, generations or
+ * branch for this: a fault that coverage of this node, not of the
+ * reference, leads to (docs/fuzzing.md "Coverage of the implementation").
  */
 #include <math.h>
 #include <stdarg.h>
@@ -122,6 +128,7 @@ typedef struct {
   uint32_t* free_slots; /* slot numbers of deleted elements, for reuse */
   size_t free_count, free_capacity;
   uint32_t slots_used; /* slot numbers handed out so far: 0 .. slots_used-1 */
+  uint8_t generation;  /* slot reuses so far, 2 bits: the tag of the handles the stack gives out */
 } stack;
 
 typedef struct {
@@ -245,7 +252,18 @@ static uint32_t add_element(ch_node* node, int sn, uint32_t id) {
     s->ids = grow(s->ids, s->capacity, sizeof(uint32_t));
     s->slot = grow(s->slot, s->capacity, sizeof(uint32_t));
   }
-  const uint32_t slot = s->free_count ? s->free_slots[--s->free_count] : s->slots_used++;
+  uint32_t slot;
+  if (s->free_count) { /* the slot of the element deleted last; a new generation of handles */
+    slot = s->free_slots[--s->free_count];
+    s->generation = (uint8_t)((s->generation + 1) & 3);
+    if (s->generation == 0) { /* it wrapped: the stack's fourth reuse of a slot */
+#ifdef C_HOST_FAULT_GENERATION_WRAP
+      return slot; /* the seeded fault: a handle of generation 0 reads as dead, the element is never listed */
+#endif
+    }
+  } else {
+    slot = s->slots_used++;
+  }
   memmove(&s->ids[at + 1], &s->ids[at], (s->count - at) * sizeof(uint32_t));
   memmove(&s->slot[at + 1], &s->slot[at], (s->count - at) * sizeof(uint32_t));
   s->ids[at] = id;
