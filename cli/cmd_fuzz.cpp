@@ -254,9 +254,9 @@ void add_fuzz(CLI::App& app, int* exit_code) {
                   "verse: a shell command that starts a fresh host (and returns once it listens); run before a "
                   "crash or hang is confirmed on a fresh instance. Without it such findings are reported unconfirmed");
   sub->add_option("--impl-coverage", o.impl_coverage,
-                  "exec: an implementation built with vgc's coverage runtime: guide (default; its counters steer "
-                  "libFuzzer), observe (counted, not steering) or off")
-      ->check(CLI::IsMember({"guide", "observe", "off"}));
+                  "exec: an implementation built with vgc's coverage runtime: guide (default; its edges steer "
+                  "libFuzzer), guide-counts (edges and hit counts), observe (counted, not steering) or off")
+      ->check(CLI::IsMember({"guide", "guide-counts", "observe", "off"}));
   sub->add_option("--seed", o.seed, "libFuzzer seed (default 1)")
       ->transform(whole_number(0, UINT_MAX, "the libFuzzer seed"));
   sub->add_option("--max-len", o.max_len, "Longest input in bytes (libFuzzer -max_len, default 1024)")

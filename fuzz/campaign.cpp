@@ -401,8 +401,10 @@ bool is_implementation_variable(const std::string& v) {
 bool choose_implementation(const CampaignOptions& o, const std::string& name, bool property,
                            ImplementationChoice* out) {
   const bool live = o.impl.rfind("exec:", 0) == 0 || o.impl.rfind("verse:", 0) == 0;
-  if (o.impl_coverage != "guide" && o.impl_coverage != "observe" && o.impl_coverage != "off") {
-    fmt::print(stderr, "vgc fuzz: --impl-coverage takes guide, observe or off, not '{}'\n", o.impl_coverage);
+  if (o.impl_coverage != "guide" && o.impl_coverage != "guide-counts" && o.impl_coverage != "observe" &&
+      o.impl_coverage != "off") {
+    fmt::print(stderr, "vgc fuzz: --impl-coverage takes guide, guide-counts, observe or off, not '{}'\n",
+               o.impl_coverage);
     return false;
   }
   if (o.impl_coverage != "guide" && o.impl.rfind("exec:", 0) != 0) {
@@ -1290,7 +1292,9 @@ std::string implementation_coverage_line(const CampaignSummary& s) {
   if (s.impl_function_entries)
     line += fmt::format(", {} of {} functions entered", s.impl_functions_entered, s.impl_function_entries);
   if (s.impl_counters_dropped) line += fmt::format(", {} counters not seen (past the region's size)", s.impl_counters_dropped);
-  line += s.impl_coverage_mode == "guide" ? "; guiding libFuzzer" : "; counted only (--impl-coverage observe)";
+  line += s.impl_coverage_mode == "guide"          ? "; guiding libFuzzer by edges"
+          : s.impl_coverage_mode == "guide-counts" ? "; guiding libFuzzer by edges and hit counts"
+                                                   : "; counted only (--impl-coverage observe)";
   return line;
 }
 

@@ -51,8 +51,9 @@ struct CampaignOptions {
   std::string restart;
   // An exec: implementation's own coverage (fuzz/live_coverage.h): "guide"
   // (default: its counters are libFuzzer features when it was built with
-  // vgc's coverage runtime), "observe" (counted for the summary, not
-  // guiding: an unguided campaign measured alike) or "off".
+  // vgc's coverage runtime: its edges), "guide-counts" (its counters with
+  // hit counts), "observe" (counted for the summary, not guiding: an
+  // unguided campaign measured alike) or "off".
   std::string impl_coverage = "guide";
   unsigned seed = 1;
   std::size_t max_len = 1024;
@@ -143,7 +144,7 @@ struct CampaignSummary {
   // An exec: implementation's own coverage (coverage_record.h), merged over
   // the run's processes: recorded when the target looked for it (mode
   // guide or observe), seen when the implementation exported counters.
-  std::string impl_coverage_mode;  // guide, observe, off; "" when not a live exec: implementation
+  std::string impl_coverage_mode;  // guide, guide-counts, observe, off; wire (not taken); "" when not live
   bool impl_coverage_seen = false;
   std::size_t impl_counters = 0, impl_counters_reached = 0, impl_function_entries = 0, impl_functions_entered = 0,
               impl_counters_dropped = 0;

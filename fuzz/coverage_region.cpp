@@ -134,7 +134,7 @@ void CoverageRegion::clear() {
   }
 }
 
-bool CoverageRegion::collect(std::uint8_t* out, std::size_t slots) {
+bool CoverageRegion::collect(std::uint8_t* out, std::size_t slots, bool counts) {
   bool grew = false;
   const std::uint32_t n = std::min<std::uint32_t>(__atomic_load_n(&header_->modules, __ATOMIC_ACQUIRE),
                                                   VGC_COVERAGE_MAX_MODULES);
@@ -164,7 +164,8 @@ bool CoverageRegion::collect(std::uint8_t* out, std::size_t slots) {
       }
       if (out) {
         std::uint8_t& slot = out[index % slots];
-        if (v > slot) slot = v;
+        if (!counts) slot = 1;
+        else if (v > slot) slot = v;
       }
     }
   }

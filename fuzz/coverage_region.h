@@ -23,7 +23,10 @@
 // implementation's counters, nothing inside the implementation. The
 // implementation may have more counters than libFuzzer's extra array has
 // slots: counter i feeds slot i mod n (the largest count wins), which
-// merges distant counters but keeps every one seen. Nothing is attached when
+// merges distant counters but keeps every one seen. By default only whether
+// an edge was taken is folded, not how often (docs/fuzzing.md: the hit
+// counts of the implementation's loops kept so many inputs that the
+// search thinned out). Nothing is attached when
 // the implementation was built without the runtime: attached() is false and
 // fold() does nothing, and the campaign says the implementation's coverage
 // is not seen.
@@ -61,9 +64,11 @@ class CoverageRegion {
   // Zeroes the implementation's counters (before an input).
   void clear();
   // Notes every counter that is non-zero as reached, and when `out` is not
-  // null, folds them into out[0..n): out[i mod n] = max(out[i mod n], c_i).
+  // null, folds them into out[0..n): with `counts`, out[i mod n] =
+  // max(out[i mod n], c_i) (libFuzzer then buckets the hit counts); without,
+  // out[i mod n] = 1 (the edge was taken, however often).
   // Returns whether a counter was reached for the first time.
-  bool collect(std::uint8_t* out, std::size_t n);
+  bool collect(std::uint8_t* out, std::size_t n, bool counts = false);
 
   // Counters reached by any input so far (since create, any process), and
   // reached counters that are function entries.

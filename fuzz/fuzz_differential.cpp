@@ -32,7 +32,8 @@
 // with clang's inline 8-bit counters and vgc's coverage runtime maps its
 // counters into shared memory; they are cleared before each input and,
 // after it, folded into g_implementation_counters, an array in libFuzzer's
-// extra-counters section, so that an input reaching new code in the
+// extra-counters section (its edges; with VGC_FUZZ_IMPL_COVERAGE=guide-counts
+// their hit counts), so that an input reaching new code in the
 // implementation is kept as one reaching new code in the reference is.
 // Without such a program nothing is folded and everything is as before.
 //

@@ -26,12 +26,14 @@ std::unique_ptr<LiveCoverage> LiveCoverage::for_implementation(const std::string
   const char* mode = std::getenv("VGC_FUZZ_IMPL_COVERAGE");
   const std::string m = mode && *mode ? mode : "guide";
   if (m == "off") return nullptr;
-  if (m != "guide" && m != "observe") {
-    std::fprintf(stderr, "%s: VGC_FUZZ_IMPL_COVERAGE=%s: expected guide, observe or off\n", target, m.c_str());
+  if (m != "guide" && m != "guide-counts" && m != "observe") {
+    std::fprintf(stderr, "%s: VGC_FUZZ_IMPL_COVERAGE=%s: expected guide, guide-counts, observe or off\n", target,
+                 m.c_str());
     std::exit(2);
   }
   std::unique_ptr<LiveCoverage> c(new LiveCoverage());
-  c->guide_ = m == "guide";
+  c->guide_ = m != "observe";
+  c->counts_ = m == "guide-counts";
   c->target_ = target;
   std::string error;
   c->region_ = CoverageRegion::create(kMaxCounters, &error);
@@ -54,7 +56,8 @@ void LiveCoverage::started() {
                  "%s: the implementation's coverage is seen: %zu counters (%zu function entries) in shared memory %s, "
                  "%s\n",
                  target_.c_str(), region_->counters(), region_->function_entries(), region_->name().c_str(),
-                 guide_ ? "guiding libFuzzer" : "counted only (observe)");
+                 !guide_ ? "counted only (observe)" : counts_ ? "guiding libFuzzer by edges and hit counts"
+                                                            : "guiding libFuzzer by edges");
     for (const std::string& m : region_->modules()) std::fprintf(stderr, "%s:   module %s\n", target_.c_str(), m.c_str());
     if (region_->dropped_counters())
       std::fprintf(stderr, "%s:   %zu counters did not fit the shared memory and are not seen\n", target_.c_str(),
@@ -73,7 +76,7 @@ void LiveCoverage::started() {
 void LiveCoverage::before_input() { region_->clear(); }
 
 void LiveCoverage::after_input(std::uint8_t* extra, std::size_t n) {
-  const bool grew = region_->collect(guide_ ? extra : nullptr, n);
+  const bool grew = region_->collect(guide_ ? extra : nullptr, n, counts_);
   if (grew) {
     dirty_ = true;
     // One point per second at most (its count the latest), at most kMaxTimeline.

@@ -9,8 +9,10 @@
 //
 // Rationale: the target is run by `vgc fuzz` with these variables (it takes
 // no options of ours):
-//   VGC_FUZZ_IMPL_COVERAGE      guide (default): the implementation's counters
+//   VGC_FUZZ_IMPL_COVERAGE      guide (default): the implementation's edges
 //                               are libFuzzer features beside the reference's;
+//                               guide-counts: its counters with their hit
+//                               counts (measured slower, docs/fuzzing.md);
 //                               observe: only counted, for an unguided
 //                               campaign measured the same way; off: no region
 //                               at all (the implementation runs as before).
@@ -61,6 +63,7 @@ class LiveCoverage {
   void write_record();
   std::unique_ptr<CoverageRegion> region_;
   bool guide_ = true;
+  bool counts_ = false;  // guide-counts
   bool said_seen_ = false;
   bool finished_ = false;
   std::string target_;

@@ -97,8 +97,11 @@ TEST(CoverageRuntime, TheRegionSeesTheCountersAndClearsThem) {
     g_module[kFirst + 20 + 64] = 9;  // the same slot of 64
     g_module[kFirst + 4999] = 1;
     std::uint8_t out[64] = {};
-    CHILD_CHECK(region->collect(out, 64), 7);
+    CHILD_CHECK(region->collect(out, 64, /*counts=*/true), 7);
     CHILD_CHECK(region->reached() == 3 && out[20] == 9 && out[4999 % 64] == 1, 8);
+    std::uint8_t edges[64] = {};  // the default: whether an edge was taken, not how often
+    region->collect(edges, 64);
+    CHILD_CHECK(edges[20] == 1 && edges[4999 % 64] == 1 && edges[21] == 0, 15);
     CHILD_CHECK(region->functions_entered() == 1, 9);  // counter 20 is an entry, 84 and 4999 are not
     CHILD_CHECK(!region->collect(out, 64), 10);        // nothing new
     region->clear();

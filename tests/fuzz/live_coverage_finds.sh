@@ -3,14 +3,15 @@
 # (libFuzzer build only) Fuzzing guided by the implementation's own
 # coverage (docs/fuzzing.md "Coverage of the implementation"): PLUGIN is
 # examples/c_host built with clang's inline 8-bit counters and vgc's
-# coverage runtime, with its seeded fault STALE_REUSED_SLOT (an element
-# created in a deleted element's slot keeps its values: a branch the
+# coverage runtime, with its seeded fault SLOT_TAG_WRAP (the element created
+# in a slot reused a fourth time is never listed: behind branches the
 # reference has no counterpart of). For each SEED, `vgc fuzz differential
 # --impl "exec:VGC serve --impl plugin:PLUGIN" --impl-coverage MODE` from
 # the spec's cube alone, at most CAP s, must find CLAUSE, and its summary
 # must say the node's coverage was seen (counters reached, functions
-# entered). MODE guide is the done-when check (3 of 3 seeds within 300 s);
-# observe runs the same campaign unguided, for the comparison.
+# entered). MODE guide is the done-when check (3 of 3 seeds within 300 s;
+# not met, docs/fuzzing.md "Does it pay?"); observe runs the same campaign
+# unguided, for the comparison.
 set -u
 vgc=$1 fbuild=$2 plugin=$3 clause=$4 cap=$5 src=$6 work=$7 mode=$8
 shift 8
