@@ -1135,6 +1135,11 @@ void count_implementation_coverage(CampaignRun* r) {
   s.impl_functions_entered = t.functions_entered;
   s.impl_counters_dropped = t.dropped;
   s.impl_modules = t.modules;
+  // The records' clock (the epoch) on the campaign's (seconds since its start).
+  const double now_epoch =
+      std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count();
+  const double start_epoch = now_epoch - std::chrono::duration<double>(clock::now() - r->t0).count();
+  for (const auto& [when, n] : t.timeline) s.impl_timeline.emplace_back(std::max(0.0, when - start_epoch), n);
 }
 
 // summary.json and summary.md (each written whole or not at all: a
@@ -1159,6 +1164,13 @@ int write_campaign_reports(CampaignRun* r) {
   page.executions = s.executions, page.exec_per_s_last = s.exec_per_s_last, page.exec_per_s_mean = s.exec_per_s_mean;
   page.coverage = s.cov, page.features = s.ft, page.corpus_files = s.corpus_files, page.corpus_bytes = s.corpus_bytes;
   page.seed_files = s.seed_files, page.crash_inputs = s.crash_inputs, page.samples = std::move(r->samples);
+  if (!s.impl_coverage_mode.empty()) page.implementation_coverage = implementation_coverage_line(s);
+  for (const auto& [t, n] : s.impl_timeline) {
+    CampaignSample p;
+    p.seconds = t;
+    p.coverage = static_cast<long long>(n);
+    page.implementation_samples.push_back(p);
+  }
   for (const CampaignCrash& c : s.crashes) {
     CampaignFinding f;
     f.signature = c.signature, f.also = c.also, f.inputs = c.inputs, f.counterexample = c.counterexample;
@@ -1263,7 +1275,8 @@ std::string summary_json(const CampaignSummary& s) {
                         {"function_entries", s.impl_function_entries},
                         {"functions_entered", s.impl_functions_entered},
                         {"counters_dropped", s.impl_counters_dropped},
-                        {"modules", s.impl_modules}}},
+                        {"modules", s.impl_modules},
+                        {"over_time", s.impl_timeline}}},
             {"corpus", {{"files", s.corpus_files}, {"bytes", s.corpus_bytes}, {"seed_files", s.seed_files}}},
             {"crash_inputs", s.crash_inputs},
             {"crash_inputs_signed", s.crash_inputs_signed},

@@ -27,6 +27,7 @@
 #include <optional>
 #include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace vgc::fuzz {
@@ -149,6 +150,7 @@ struct CampaignSummary {
   std::size_t impl_counters = 0, impl_counters_reached = 0, impl_function_entries = 0, impl_functions_entered = 0,
               impl_counters_dropped = 0;
   std::vector<std::string> impl_modules;
+  std::vector<std::pair<double, std::size_t>> impl_timeline;  // seconds since the start, counters reached
 };
 
 // Runs the campaign, writes reports/fuzz/<target>/<run>/{summary.json,

@@ -1,6 +1,7 @@
 // coverage_record.cpp — see coverage_record.h.
 #include "coverage_record.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cstdio>
 #include <filesystem>
@@ -131,6 +132,7 @@ CoverageTotals merge_coverage_records(const std::string& dir) {
   CoverageTotals t;
   std::error_code ec;
   std::vector<std::uint8_t> reached, entries;
+  std::vector<std::pair<double, std::size_t>> points;
   for (const auto& e : fs::directory_iterator(dir, ec)) {
     if (e.path().extension() != ".txt") continue;
     std::ifstream f(e.path(), std::ios::binary);
@@ -148,11 +150,15 @@ CoverageTotals merge_coverage_records(const std::string& dir) {
       t.modules = r.modules;
     }
     t.dropped = std::max(t.dropped, r.dropped);
+    points.insert(points.end(), r.timeline.begin(), r.timeline.end());
     if (reached.size() < r.reached.size()) reached.resize(r.reached.size(), 0);
     for (std::size_t i = 0; i < r.reached.size(); ++i) reached[i] |= r.reached[i];
     if (entries.size() < r.entries.size()) entries.resize(r.entries.size(), 0);
     for (std::size_t i = 0; i < r.entries.size(); ++i) entries[i] |= r.entries[i];
   }
+  std::sort(points.begin(), points.end());
+  for (const auto& [when, n] : points)
+    if (t.timeline.empty() || n > t.timeline.back().second) t.timeline.emplace_back(when, n);
   for (std::size_t i = 0; i < reached.size(); ++i) t.reached += reached[i] != 0;
   for (std::size_t i = 0; i < entries.size(); ++i) {
     t.function_entries += entries[i] != 0;

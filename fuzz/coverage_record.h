@@ -52,6 +52,9 @@ struct CoverageTotals {
   bool seen = false;
   std::size_t counters = 0, reached = 0, function_entries = 0, functions_entered = 0, dropped = 0;
   std::vector<std::string> modules;
+  // (seconds since the epoch, the most counters any process had reached by
+  // then), in time order.
+  std::vector<std::pair<double, std::size_t>> timeline;
 };
 
 std::string format_coverage_record(const CoverageRecord& r);
