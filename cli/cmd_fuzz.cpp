@@ -5,7 +5,8 @@
 //   vgc fuzz TARGET [--time S] [--jobs N] [--impl plugin:PATH] [--seed N]
 //                   [--baseline FILE] [--empty-corpus] [--stop-at-first]
 //   vgc fuzz differential --impl exec:CMD|verse:HOST[:PORT] [--timeout S]
-//                   [--verse-bone-form F] [--restart CMD] ...
+//                   [--verse-bone-form F] [--restart CMD]
+//                   [--impl-coverage guide|observe|off] ...
 //                                      a live implementation, through the
 //                                      adapters certify uses
 //   vgc fuzz wire --impl verse:HOST[:PORT] [--time S] [--seed N] [--restart CMD]
@@ -73,6 +74,10 @@ int run_wire(const FuzzArgs& a) {
   }
   if (c.jobs != 1 || !c.baseline.empty() || c.empty_corpus) {
     say(stderr, "vgc fuzz wire: one host, one campaign: --jobs, --baseline and --empty-corpus do not apply\n");
+    return 2;
+  }
+  if (c.impl_coverage != "guide") {
+    say(stderr, "vgc fuzz wire: --impl-coverage is for vgc fuzz differential --impl exec:CMD\n");
     return 2;
   }
   fuzz::WireFuzzOptions o;
@@ -248,6 +253,10 @@ void add_fuzz(CLI::App& app, int* exit_code) {
   sub->add_option("--restart", o.restart,
                   "verse: a shell command that starts a fresh host (and returns once it listens); run before a "
                   "crash or hang is confirmed on a fresh instance. Without it such findings are reported unconfirmed");
+  sub->add_option("--impl-coverage", o.impl_coverage,
+                  "exec: an implementation built with vgc's coverage runtime: guide (default; its edges steer "
+                  "libFuzzer), guide-counts (edges and hit counts), observe (counted, not steering) or off")
+      ->check(CLI::IsMember({"guide", "guide-counts", "observe", "off"}));
   sub->add_option("--seed", o.seed, "libFuzzer seed (default 1)")
       ->transform(whole_number(0, UINT_MAX, "the libFuzzer seed"));
   sub->add_option("--max-len", o.max_len, "Longest input in bytes (libFuzzer -max_len, default 1024)")

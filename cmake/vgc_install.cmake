@@ -4,6 +4,8 @@
 #
 #   bin/vgc                                  the program
 #   include/vgc/vgc_plugin.h                 the plugin ABI header
+#   lib/vgc/libvgc_coverage.a, vgc_coverage.o  the coverage runtime for implementations (runtime/)
+#   include/vgc/vgc_coverage_shm.h           its shared memory layout
 #   share/doc/vgc/README.md, docs/*.md       the documentation
 #   lib/cmake/vgc/vgcConfig.cmake, vgcConfigVersion.cmake, vgcTargets*.cmake,
 #                vgcCertification.cmake      the CMake package
@@ -18,9 +20,13 @@ target_include_directories(vgc_plugin_header INTERFACE
 set_target_properties(vgc_plugin_header PROPERTIES EXPORT_NAME plugin_header)
 add_library(vgc::plugin_header ALIAS vgc_plugin_header)
 
-# Not the arch-dependent libdir: the package holds no library, and
-# lib/cmake/<name>/ is searched under every prefix.
+# Not the arch-dependent libdir: lib/cmake/<name>/ is searched under every
+# prefix, and the one library (lib/vgc/, the coverage runtime) is linked by
+# path (-L<prefix>/lib/vgc, or vgc::coverage).
 set(VGC_INSTALL_CMAKEDIR lib/cmake/vgc)
+
+# The coverage runtime is installed beside the program: building vgc builds it.
+add_dependencies(vgc vgc_coverage)
 
 install(TARGETS vgc vgc_plugin_header EXPORT vgc_targets
   RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})

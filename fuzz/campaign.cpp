@@ -32,6 +32,7 @@
 #include "display_text.h"
 #include "program_command.h"
 #include "exec_implementation.h"
+#include "coverage_record.h"
 #include "live_implementation.h"
 #include "minimize_finding.h"
 #include "minimize_input.h"
@@ -391,7 +392,8 @@ struct ImplementationChoice {
 
 bool is_implementation_variable(const std::string& v) {
   for (const char* n : {"VGC_FUZZ_PLUGIN=", "VGC_FUZZ_IMPL=", "VGC_FUZZ_TIMEOUT=", "VGC_FUZZ_VERSE_BONE_FORM=",
-                        "VGC_FUZZ_RESTART=", "VGC_FUZZ_BASELINE="})
+                        "VGC_FUZZ_RESTART=", "VGC_FUZZ_BASELINE=", "VGC_FUZZ_IMPL_COVERAGE=",
+                        "VGC_FUZZ_IMPL_COVERAGE_DIR=", "VGC_COVERAGE_SHM="})
     if (v.rfind(n, 0) == 0) return true;
   return false;
 }
@@ -399,6 +401,16 @@ bool is_implementation_variable(const std::string& v) {
 bool choose_implementation(const CampaignOptions& o, const std::string& name, bool property,
                            ImplementationChoice* out) {
   const bool live = o.impl.rfind("exec:", 0) == 0 || o.impl.rfind("verse:", 0) == 0;
+  if (o.impl_coverage != "guide" && o.impl_coverage != "guide-counts" && o.impl_coverage != "observe" &&
+      o.impl_coverage != "off") {
+    fmt::print(stderr, "vgc fuzz: --impl-coverage takes guide, guide-counts, observe or off, not '{}'\n",
+               o.impl_coverage);
+    return false;
+  }
+  if (o.impl_coverage != "guide" && o.impl.rfind("exec:", 0) != 0) {
+    fmt::print(stderr, "vgc fuzz: --impl-coverage is for --impl exec:CMD (a program vgc starts)\n");
+    return false;
+  }
   if (!live && (o.call_timeout_s > 0 || !o.verse_bone_form.empty() || !o.restart.empty())) {
     fmt::print(stderr, "vgc fuzz: --timeout, --verse-bone-form and --restart are for --impl exec:CMD or verse:HOST\n");
     return false;
@@ -419,6 +431,9 @@ bool choose_implementation(const CampaignOptions& o, const std::string& name, bo
     if (o.call_timeout_s > 0) out->env.push_back(fmt::format("VGC_FUZZ_TIMEOUT={}", o.call_timeout_s));
     if (!o.verse_bone_form.empty()) out->env.push_back("VGC_FUZZ_VERSE_BONE_FORM=" + o.verse_bone_form);
     if (!o.restart.empty()) out->env.push_back("VGC_FUZZ_RESTART=" + o.restart);
+    // The implementation's own coverage (live_coverage.h; exec: only).
+    if (o.impl_coverage != "guide" && o.impl.rfind("exec:", 0) == 0)
+      out->env.push_back("VGC_FUZZ_IMPL_COVERAGE=" + o.impl_coverage);
     // Known deviations do not stop libFuzzer (live_implementation.h).
     if (!o.baseline.empty()) out->env.push_back("VGC_FUZZ_BASELINE=" + fs::absolute(o.baseline).string());
     return true;
@@ -782,9 +797,17 @@ void run_libfuzzer(CampaignRun* r) {
       last_print = now;
     }
   };
-  r->fuzzed = run_streaming(argv, r->env_add, deadline, on_line, stop_now, o.cpu_time_s);
+  // An exec: implementation's coverage records go to the run's directory
+  // (for the fuzzing only: a re-run of a saved input adds nothing to them).
+  std::vector<std::string> env = r->env_add;
+  if (r->impl.live.rfind("exec:", 0) == 0 && o.impl_coverage != "off") {
+    std::error_code ec;
+    fs::create_directories(r->dir / "implementation_coverage", ec);
+    env.push_back("VGC_FUZZ_IMPL_COVERAGE_DIR=" + (r->dir / "implementation_coverage").string());
+  }
+  r->fuzzed = run_streaming(argv, env, deadline, on_line, stop_now, o.cpu_time_s);
   if (live_rounds(*r))
-    r->fuzzed = run_more_rounds(argv, r->env_add, deadline, on_line, o, t0, r->fuzzed, &p, &r->execs_before, &log);
+    r->fuzzed = run_more_rounds(argv, env, deadline, on_line, o, t0, r->fuzzed, &p, &r->execs_before, &log);
   const RunResult& rr = r->fuzzed;
   if (rr.killed) log << "vgc fuzz: still running " << o.time_s + grace << " s after the start: process group killed\n";
   log.close();
@@ -1096,6 +1119,29 @@ void count_corpus_and_speed(CampaignRun* r) {
   s.exec_per_s_mean = fuzz_wall > 0 ? static_cast<double>(s.executions) / fuzz_wall : 0.0;
 }
 
+// The implementation's own coverage, from the records of the run's
+// processes (coverage_record.h).
+void count_implementation_coverage(CampaignRun* r) {
+  CampaignSummary& s = r->s;
+  if (r->impl.live.rfind("verse:", 0) == 0) s.impl_coverage_mode = "wire";
+  if (r->impl.live.rfind("exec:", 0) != 0) return;
+  s.impl_coverage_mode = r->o.impl_coverage;
+  if (r->o.impl_coverage == "off") return;
+  const CoverageTotals t = merge_coverage_records((r->dir / "implementation_coverage").string());
+  s.impl_coverage_seen = t.seen;
+  s.impl_counters = t.counters;
+  s.impl_counters_reached = t.reached;
+  s.impl_function_entries = t.function_entries;
+  s.impl_functions_entered = t.functions_entered;
+  s.impl_counters_dropped = t.dropped;
+  s.impl_modules = t.modules;
+  // The records' clock (the epoch) on the campaign's (seconds since its start).
+  const double now_epoch =
+      std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count();
+  const double start_epoch = now_epoch - std::chrono::duration<double>(clock::now() - r->t0).count();
+  for (const auto& [when, n] : t.timeline) s.impl_timeline.emplace_back(std::max(0.0, when - start_epoch), n);
+}
+
 // summary.json and summary.md (each written whole or not at all: a
 // temporary file, then renamed) and report.html. Returns 0, or 2.
 int write_campaign_reports(CampaignRun* r) {
@@ -1118,6 +1164,13 @@ int write_campaign_reports(CampaignRun* r) {
   page.executions = s.executions, page.exec_per_s_last = s.exec_per_s_last, page.exec_per_s_mean = s.exec_per_s_mean;
   page.coverage = s.cov, page.features = s.ft, page.corpus_files = s.corpus_files, page.corpus_bytes = s.corpus_bytes;
   page.seed_files = s.seed_files, page.crash_inputs = s.crash_inputs, page.samples = std::move(r->samples);
+  if (!s.impl_coverage_mode.empty()) page.implementation_coverage = implementation_coverage_line(s);
+  for (const auto& [t, n] : s.impl_timeline) {
+    CampaignSample p;
+    p.seconds = t;
+    p.coverage = static_cast<long long>(n);
+    page.implementation_samples.push_back(p);
+  }
   for (const CampaignCrash& c : s.crashes) {
     CampaignFinding f;
     f.signature = c.signature, f.also = c.also, f.inputs = c.inputs, f.counterexample = c.counterexample;
@@ -1145,6 +1198,7 @@ int run_campaign(const CampaignOptions& o, CampaignSummary* out) {
   write_findings(&r, unique);
   group_by_clause(&r);
   count_corpus_and_speed(&r);
+  count_implementation_coverage(&r);
   if (int rc = write_campaign_reports(&r)) return rc;
   const bool ran_nothing = r.progress.execs == 0 && r.s.crash_inputs == 0;
   if (out) *out = r.s;
@@ -1211,6 +1265,18 @@ std::string summary_json(const CampaignSummary& s) {
             {"exec_per_s_last", s.exec_per_s_last},
             {"exec_per_s_mean", s.exec_per_s_mean},
             {"coverage", {{"cov", s.cov}, {"ft", s.ft}}},
+            {"implementation_coverage",
+             s.impl_coverage_mode.empty()
+                 ? json(nullptr)
+                 : json{{"mode", s.impl_coverage_mode},
+                        {"seen", s.impl_coverage_seen},
+                        {"counters", s.impl_counters},
+                        {"counters_reached", s.impl_counters_reached},
+                        {"function_entries", s.impl_function_entries},
+                        {"functions_entered", s.impl_functions_entered},
+                        {"counters_dropped", s.impl_counters_dropped},
+                        {"modules", s.impl_modules},
+                        {"over_time", s.impl_timeline}}},
             {"corpus", {{"files", s.corpus_files}, {"bytes", s.corpus_bytes}, {"seed_files", s.seed_files}}},
             {"crash_inputs", s.crash_inputs},
             {"crash_inputs_signed", s.crash_inputs_signed},
@@ -1223,6 +1289,26 @@ std::string summary_json(const CampaignSummary& s) {
   // Invalid UTF-8 from an implementation (a crash signature, a message)
   // becomes U+FFFD instead of an exception that loses the summary.
   return j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
+}
+
+std::string implementation_coverage_line(const CampaignSummary& s) {
+  if (s.impl_coverage_mode == "off") return "off (--impl-coverage off)";
+  if (s.impl_coverage_mode == "wire")
+    return "not seen: a host on the Verse wire is not yet given the shared memory (exec: only); libFuzzer was "
+           "guided by vgc's own code only";
+  if (!s.impl_coverage_seen)
+    return "not seen: the implementation was not built with -fsanitize-coverage=inline-8bit-counters and "
+           "-lvgc_coverage (docs/fuzzing.md \"Coverage of the implementation\"); libFuzzer was guided by vgc's "
+           "own code only";
+  std::string line = fmt::format("{} of {} counters reached ({:.1f} %)", s.impl_counters_reached, s.impl_counters,
+                                 s.impl_counters ? 100.0 * s.impl_counters_reached / s.impl_counters : 0.0);
+  if (s.impl_function_entries)
+    line += fmt::format(", {} of {} functions entered", s.impl_functions_entered, s.impl_function_entries);
+  if (s.impl_counters_dropped) line += fmt::format(", {} counters not seen (past the region's size)", s.impl_counters_dropped);
+  line += s.impl_coverage_mode == "guide"          ? "; guiding libFuzzer by edges"
+          : s.impl_coverage_mode == "guide-counts" ? "; guiding libFuzzer by edges and hit counts"
+                                                   : "; counted only (--impl-coverage observe)";
+  return line;
 }
 
 std::string summary_markdown(const CampaignSummary& s) {
@@ -1242,6 +1328,7 @@ std::string summary_markdown(const CampaignSummary& s) {
       s.exec_per_s_last, s.cov, s.ft, s.corpus_files, s.corpus_bytes, s.seed_files,
       s.empty_corpus ? ", started empty" : "", s.crash_inputs, s.crash_inputs_signed, s.crashes.size(),
       s.new_crashes, secs(s.time_to_first_finding_s));
+  if (!s.impl_coverage_mode.empty()) md += "| implementation coverage | " + implementation_coverage_line(s) + " |\n";
   if (!s.baseline.empty()) md += fmt::format("| baseline | {} |\n", s.baseline);
   md += fmt::format("\nCommand: `{}`\n\n", s.command);
   if (s.crashes.empty()) return escape_unprintable(md);

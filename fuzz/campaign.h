@@ -27,6 +27,7 @@
 #include <optional>
 #include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace vgc::fuzz {
@@ -49,6 +50,12 @@ struct CampaignOptions {
   double call_timeout_s = 0;
   std::string verse_bone_form;
   std::string restart;
+  // An exec: implementation's own coverage (fuzz/live_coverage.h): "guide"
+  // (default: its counters are libFuzzer features when it was built with
+  // vgc's coverage runtime: its edges), "guide-counts" (its counters with
+  // hit counts), "observe" (counted for the summary, not guiding: an
+  // unguided campaign measured alike) or "off".
+  std::string impl_coverage = "guide";
   unsigned seed = 1;
   std::size_t max_len = 1024;
   std::string fuzz_build;     // the clang -DVGC_FUZZ=ON build ("" : $VGC_FUZZ_BUILD_DIR or build-fuzz)
@@ -135,6 +142,15 @@ struct CampaignSummary {
   std::vector<CampaignClause> clauses;  // sorted by clause id, "" last
   std::size_t new_crashes = 0;          // crashes whose clause is not in the baseline
   int libfuzzer_exit = 0;
+  // An exec: implementation's own coverage (coverage_record.h), merged over
+  // the run's processes: recorded when the target looked for it (mode
+  // guide or observe), seen when the implementation exported counters.
+  std::string impl_coverage_mode;  // guide, guide-counts, observe, off; wire (not taken); "" when not live
+  bool impl_coverage_seen = false;
+  std::size_t impl_counters = 0, impl_counters_reached = 0, impl_function_entries = 0, impl_functions_entered = 0,
+              impl_counters_dropped = 0;
+  std::vector<std::string> impl_modules;
+  std::vector<std::pair<double, std::size_t>> impl_timeline;  // seconds since the start, counters reached
 };
 
 // Runs the campaign, writes reports/fuzz/<target>/<run>/{summary.json,
@@ -155,6 +171,9 @@ std::string campaign_source_dir(const CampaignOptions& o);
 std::string campaign_fuzz_build_dir(const CampaignOptions& o);
 
 std::string summary_json(const CampaignSummary& s);
+// The summary's "implementation coverage" line: counters reached, or why
+// the implementation's coverage is not seen.
+std::string implementation_coverage_line(const CampaignSummary& s);
 std::string summary_markdown(const CampaignSummary& s);
 
 // A binary stream (reference/node/command_binary.h) as a command file: the

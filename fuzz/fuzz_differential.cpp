@@ -28,6 +28,15 @@
 // `vgc fuzz` runs libFuzzer with -fork and -ignore_crashes, so the
 // campaign goes on with a new job and, for exec:, a new process.
 //
+// Coverage of the implementation (live_coverage.h): an exec: program built
+// with clang's inline 8-bit counters and vgc's coverage runtime maps its
+// counters into shared memory; they are cleared before each input and,
+// after it, folded into g_implementation_counters, an array in libFuzzer's
+// extra-counters section (its edges; with VGC_FUZZ_IMPL_COVERAGE=guide-counts
+// their hit counts), so that an input reaching new code in the
+// implementation is kept as one reaching new code in the reference is.
+// Without such a program nothing is folded and everything is as before.
+//
 // Fast path, exact slow path (conformance/fast_check.h): per input, the
 // answers are compared after every command (the call answered, the line was
 // read, applied or rejected as the reference says) and the snapshot and
@@ -52,14 +61,23 @@
 #include "fast_check.h"
 #include "report_finding.h"
 #include "implementation.h"
+#include "live_coverage.h"
 #include "live_implementation.h"
 #include "plugin_implementation.h"
 #include "reference_plugin_table.h"
 #include "stream_mutator_hooks.h"
 
+// libFuzzer reads every byte of this section after each input as a
+// counter, beside the inline counters of the instrumented code, and
+// clears it before the next (FuzzerExtraCounters.cpp, TracePC::ResetMaps).
+// 64 Ki slots: an implementation with more counters shares slots
+// (coverage_region.h); a larger array costs libFuzzer a scan per input.
+__attribute__((section("__libfuzzer_extra_counters"), used)) std::uint8_t g_implementation_counters[1 << 16];
+
 namespace {
 
 constexpr const char* kTarget = "fuzz_differential";
+std::unique_ptr<vgc::fuzz::LiveCoverage> g_coverage;  // a live exec: implementation's own coverage
 std::unique_ptr<vgc::Implementation> g_sut;
 vgc::fuzz::LiveOptions g_live;  // spec empty: a plugin or the reference, in process
 
@@ -106,7 +124,9 @@ extern "C" int LLVMFuzzerInitialize(int*, char***) {
   std::string error;
   g_live = vgc::fuzz::live_options_from_environment();
   if (!g_live.spec.empty()) {
+    g_coverage = vgc::fuzz::LiveCoverage::for_implementation(g_live.spec, kTarget);
     g_sut = vgc::fuzz::open_live_implementation(g_live, &error);
+    if (g_sut && g_coverage) g_coverage->started();
   } else if (path && *path) {
     vgc::OpenOptions o;
     o.isolate_plugin = false;  // in process: a crash of the plugin is a crash of the fuzzer
@@ -134,6 +154,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     commands.push_back(std::move(c));
   }
   if (!g_live.spec.empty()) remember(commands);
+  if (g_coverage) g_coverage->before_input();
   // A host on the Verse wire is checked step by step from the start: the
   // fast path compares a derived document, which the wire does not carry
   // (RouteLimits), so every input would take the exact path anyway, and
@@ -151,11 +172,13 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const bool tolerated = g_live.tolerated.count(f.clause) > 0 && !is_call_failure(f);
     if (!tolerated) {
       confirm(&f, &commands);
+      if (g_coverage) g_coverage->finish();  // the process ends in report_finding
       fuzz::report_finding(kTarget, fuzz::describe_clause_finding(f), commands);
     }
   }
   // Leave nothing behind (see property_target.cpp): a node that outlives
   // the run makes libFuzzer re-run it as a possible leak.
   g_sut->reset();
+  if (g_coverage) g_coverage->after_input(g_implementation_counters, sizeof g_implementation_counters);
   return 0;
 }

@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """include_graph.py [SOURCE_DIR] — the project's include graph, checked.
 
-The layers are one-way (README "Layout"): reference/node -> reference/geometry
+The layers are one-way (README "Layout"): runtime (the coverage runtime
+linked into implementations, C, standard library only) -> reference/node -> reference/geometry
 -> verse -> conformance -> oracles -> fuzz, bench, cli (the last three side by
 side). A product file may include a project header of its own layer or of a
 lower one, never of a higher one; and no two files may include each other,
@@ -19,6 +20,7 @@ import sys
 from pathlib import Path
 
 LAYERS = [
+    ("runtime",),
     ("reference/node",),
     ("reference/geometry",),
     ("verse",),

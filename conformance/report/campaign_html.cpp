@@ -128,6 +128,7 @@ std::string render_campaign_html(const CampaignReport& r) {
   row("corpus", std::to_string(r.corpus_files) + " files, " + std::to_string(r.corpus_bytes) + " bytes (" +
                     std::to_string(r.seed_files) + " seeds)");
   row("crash inputs", std::to_string(r.crash_inputs) + " (" + std::to_string(r.findings.size()) + " unique)");
+  if (!r.implementation_coverage.empty()) row("implementation coverage", r.implementation_coverage);
   auto cmd = add(body, "p");
   cmd.append_child(pugi::node_pcdata).set_value("Command: ");
   add(cmd, "code", r.command);
@@ -149,6 +150,14 @@ std::string render_campaign_html(const CampaignReport& r) {
     add(body, "p",
         std::to_string(r.samples.size()) + " status lines of libFuzzer, from " + fixed(r.samples.front().seconds, 1) +
             " s to " + fixed(r.samples.back().seconds, 1) + " s.",
+        "note");
+  }
+  if (r.implementation_samples.size() >= 2) {
+    plot(body, thinned(r.implementation_samples), "implementation", "the implementation's own counters reached",
+         "#8e24aa", [](const CampaignSample& s) { return s.coverage; });
+    add(body, "p",
+        "The implementation's counters reached (its own coverage, shared memory): the most any of the run's "
+        "processes had reached by then; the summary's figure is the union at the end.",
         "note");
   }
 

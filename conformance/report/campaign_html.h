@@ -48,6 +48,11 @@ struct CampaignReport {
   std::size_t corpus_files = 0, corpus_bytes = 0, seed_files = 0, crash_inputs = 0;
   std::vector<CampaignSample> samples;  // in time order
   std::vector<CampaignFinding> findings;
+  // A live implementation's own coverage (docs/fuzzing.md "Coverage of the
+  // implementation"): the summary's line ("" : no row), and the counters
+  // reached over time (`coverage` of each sample; plotted from two points).
+  std::string implementation_coverage;
+  std::vector<CampaignSample> implementation_samples;
 };
 
 // The page. Plots are drawn when there are at least two samples (else a

@@ -16,7 +16,14 @@
  * C_HOST_FAULT_UNROTATED_CHILDREN, a child bone's world position ignores its
  * parent's rotation (world_pos = parent's world_pos + pos), which breaks
  * clause BONE-DOWNSTREAM-1 (000 2.6.3: "all bones 'downstream' of it will
- * rotate, too").
+ * rotate, too"). With C_HOST_FAULT_SLOT_TAG_WRAP, an element created in a
+ * slot whose 2-bit reuse tag wraps (the same slot reused a fourth time:
+ * delete and create on it four times over) is never listed, so the vertex
+ * or polygon just set is missing (VERTEX-SET-1, ...). The reference keeps
+ * its elements in maps and has no slots, tags or branch for this; the node
+ * has one per tag value (its reuse statistics): a fault that coverage of
+ * this node, not of the reference, leads to (docs/fuzzing.md "Coverage of
+ * the implementation").
  */
 #include <math.h>
 #include <stdarg.h>
@@ -122,6 +129,9 @@ typedef struct {
   uint32_t* free_slots; /* slot numbers of deleted elements, for reuse */
   size_t free_count, free_capacity;
   uint32_t slots_used; /* slot numbers handed out so far: 0 .. slots_used-1 */
+  uint8_t* tag;        /* tag[slot]: the slot's reuses, 2 bits (the tag of the handles it gives out) */
+  size_t tag_capacity;
+  uint32_t reused[3];  /* reuses that gave a slot tag 1, 2, 3 (statistics) */
 } stack;
 
 typedef struct {
@@ -245,7 +255,30 @@ static uint32_t add_element(ch_node* node, int sn, uint32_t id) {
     s->ids = grow(s->ids, s->capacity, sizeof(uint32_t));
     s->slot = grow(s->slot, s->capacity, sizeof(uint32_t));
   }
-  const uint32_t slot = s->free_count ? s->free_slots[--s->free_count] : s->slots_used++;
+  uint32_t slot;
+  if (s->free_count) { /* the slot of the element deleted last; its tag counts the reuse */
+    slot = s->free_slots[--s->free_count];
+    const uint8_t tag = (uint8_t)((s->tag[slot] + 1) & 3);
+    s->tag[slot] = tag;
+    if (tag == 1)
+      s->reused[0]++;
+    else if (tag == 2)
+      s->reused[1]++;
+    else if (tag == 3)
+      s->reused[2]++;
+    else { /* the tag wrapped: the slot's fourth reuse */
+#ifdef C_HOST_FAULT_SLOT_TAG_WRAP
+      return slot; /* the seeded fault: a handle of tag 0 reads as dead, the element is never listed */
+#endif
+    }
+  } else {
+    slot = s->slots_used++;
+    if (slot >= s->tag_capacity) {
+      s->tag_capacity = s->tag_capacity ? s->tag_capacity * 2 : 16;
+      s->tag = grow(s->tag, s->tag_capacity, 1);
+    }
+    s->tag[slot] = 0;
+  }
   memmove(&s->ids[at + 1], &s->ids[at], (s->count - at) * sizeof(uint32_t));
   memmove(&s->slot[at + 1], &s->slot[at], (s->count - at) * sizeof(uint32_t));
   s->ids[at] = id;
@@ -573,6 +606,7 @@ void ch_node_destroy(ch_node* node) {
     free(node->stacks[s].ids);
     free(node->stacks[s].slot);
     free(node->stacks[s].free_slots);
+    free(node->stacks[s].tag);
   }
   free(node->bones);
   free(node->text);

@@ -454,6 +454,22 @@ TEST(CampaignHtml, CoverageAndCorpusArePlottedOverTimeAndFindingsListed) {
   EXPECT_STREQ(doc.select_node("//h1/span").node().child_value(), "1 FINDING");
 }
 
+TEST(CampaignHtml, TheImplementationsOwnCoverageIsARowAndAPlot) {
+  CampaignReport r;
+  for (int i = 0; i <= 10; ++i) r.samples.push_back({i * 1.0, i * 100LL, 50, 60, 7});
+  const auto without = page_body(render_campaign_html(r));
+  EXPECT_FALSE(without.select_node("//svg[@class='plot implementation']").node());
+  EXPECT_FALSE(without.select_node("//th[.='implementation coverage']").node());
+  r.implementation_coverage = "599 of 941 counters reached (63.7 %), 26 of 27 functions entered; guiding libFuzzer by edges";
+  for (int i = 0; i <= 4; ++i) r.implementation_samples.push_back({i * 2.0, 0, 300 + i * 50LL, 0, 0});
+  const auto doc = page_body(render_campaign_html(r));
+  EXPECT_TRUE(doc.select_node(
+      "//tr[th='implementation coverage']/td[starts-with(., '599 of 941 counters reached')]").node());
+  const auto impl = polyline_points(doc.select_node("//svg[@class='plot implementation']").node());
+  ASSERT_EQ(impl.size(), 5u);
+  EXPECT_LT(impl[4].second, impl[0].second);  // rising (y down)
+}
+
 TEST(CampaignHtml, ALongCampaignIsThinnedToAThousandPointsKeepingTheLast) {
   CampaignReport r;
   for (int i = 0; i < 5000; ++i) r.samples.push_back({i * 0.1, i, i, i, i == 4999 ? 1'000'000 : i});

@@ -45,7 +45,7 @@ check() {  # check DESCRIPTION COMMAND...: run it, report ok or FAIL
   { cat "$tmp/install.log"; echo "FAIL: cmake --install $build --prefix $prefix"; exit 1; }
 for f in bin/vgc include/vgc/vgc_plugin.h share/doc/vgc/README.md share/doc/vgc/docs/certify.md share/doc/vgc/docs/ci.md \
   lib/cmake/vgc/vgcConfig.cmake lib/cmake/vgc/vgcConfigVersion.cmake lib/cmake/vgc/vgcTargets.cmake \
-  lib/cmake/vgc/vgcCertification.cmake; do
+  lib/cmake/vgc/vgcCertification.cmake lib/vgc/libvgc_coverage.a lib/vgc/vgc_coverage.o include/vgc/vgc_coverage_shm.h; do
   check "installed $f" test -f "$prefix/$f"
 done
 check "bin/vgc has no RPATH or RUNPATH" bash -c "! readelf -d '$prefix/bin/vgc' | grep -Eq 'RPATH|RUNPATH'"
