@@ -291,12 +291,12 @@ TEST(VerseRoute, ABroadcastOfARefusedCommandIsItsVerdict) {
   bool named = false;
   for (const ClauseOutcome& co : run.clauses) {
     if (co.clause->id != "VERTEX-DELETE-1") {
-      EXPECT_TRUE(co.status == "pass" || co.status == "not-applicable" || co.status == "not-selected")
+      EXPECT_TRUE(co.status == ClauseStatus::Pass || co.status == ClauseStatus::NotApplicable)
           << co.clause->id << " " << co.status << ": " << (co.finding ? co.finding->message : co.note);
       continue;
     }
     ASSERT_TRUE(co.finding) << co.status << ": " << co.note;
-    named = co.status == "fail";
+    named = co.status == ClauseStatus::Fail;
     EXPECT_NE(co.finding->message.find("the host sent its subscribers `vertex_delete"), std::string::npos)
         << co.finding->message;
   }
@@ -323,12 +323,12 @@ TEST(VerseRoute, ALateSubscriberSeesWhatTheWatchersWereNotTold) {
   for (const ClauseOutcome& co : run.clauses) {
     if (co.clause->id == "LAYER-CREATE-1") {
       ASSERT_TRUE(co.finding) << co.status << ": " << co.note;
-      EXPECT_EQ(co.status, "fail");
+      EXPECT_EQ(co.status, ClauseStatus::Fail);
       EXPECT_EQ(co.finding->message.rfind("late subscriber: ", 0), 0u) << co.finding->message;
       EXPECT_NE(co.finding->message.find("VERTEX_XYZ - 0 -"), std::string::npos) << co.finding->message;
       program = co.program;
     } else if (co.clause->id != "LAYER-RECREATE-1") {  // a re-typed XYZ layer: the same deviation, IMPL.-DEFINED
-      EXPECT_TRUE(co.status == "pass" || co.status == "not-applicable")
+      EXPECT_TRUE(co.status == ClauseStatus::Pass || co.status == ClauseStatus::NotApplicable)
           << co.clause->id << " " << co.status << ": " << (co.finding ? co.finding->message : co.note);
     }
   }
@@ -355,12 +355,12 @@ TEST(VerseRoute, ASubscriptionInTwoFormatsIsFound) {
   bool named = false;
   for (const ClauseOutcome& co : run.clauses) {
     if (co.clause->id != "LAYER-SUBSCRIBE-1") {
-      EXPECT_TRUE(co.status == "pass" || co.status == "not-applicable")
+      EXPECT_TRUE(co.status == ClauseStatus::Pass || co.status == ClauseStatus::NotApplicable)
           << co.clause->id << " " << co.status << ": " << (co.finding ? co.finding->message : co.note);
       continue;
     }
     ASSERT_TRUE(co.finding) << co.status << ": " << co.note;
-    named = co.status == "fail";
+    named = co.status == ClauseStatus::Fail;
     EXPECT_NE(co.finding->message.find("a REAL32 value after its REAL64 subscription"), std::string::npos)
         << co.finding->message;
   }
