@@ -17,6 +17,7 @@
 #include "document_digest.h"
 #include "faulty_node.h"
 #include "snapshot.h"
+#include "running_host.h"
 #include "verse_client.h"
 #include "verse_host.h"
 #include "wire_pack.h"
@@ -66,23 +67,6 @@ class FaultyDigestNode : public HostedNode {
   faults::FaultyNode node_;
   Node reference_;
   bool honest_;
-};
-
-struct RunningHost {
-  Host host;
-  std::atomic<bool> stop{false};
-  std::thread thread;
-  explicit RunningHost(HostOptions o = {}) {
-    o.address = "127.0.0.1";
-    o.port = 0;
-    const Status st = host.open(o);
-    EXPECT_TRUE(st.ok()) << st.to_string();
-    thread = std::thread([this] { (void)host.run(stop); });
-  }
-  ~RunningHost() {
-    stop = true;
-    thread.join();
-  }
 };
 
 std::vector<int> faults_of(const std::string& list) {

@@ -10,6 +10,7 @@
 #include <chrono>
 #include <thread>
 
+#include "running_host.h"
 #include "verse_client.h"
 #include "verse_host.h"
 #include "wire_endpoint.h"
@@ -18,24 +19,6 @@ namespace vgc::verse {
 namespace {
 
 constexpr double kWait = 10.0;  // seconds; loopback answers in milliseconds
-
-struct RunningHost {
-  Host host;
-  std::atomic<bool> stop{false};
-  std::thread thread;
-  RunningHost() {
-    HostOptions o;
-    o.address = "127.0.0.1";
-    o.port = 0;
-    const Status st = host.open(o);
-    EXPECT_TRUE(st.ok()) << st.to_string();
-    thread = std::thread([this] { (void)host.run(stop); });
-  }
-  ~RunningHost() {
-    stop = true;
-    thread.join();
-  }
-};
 
 // A session with a node, subscribed to it and to its vertices.
 struct Client {

@@ -11,6 +11,7 @@
 #include <thread>
 
 #include "faulty_node.h"
+#include "running_host.h"
 #include "verse_client.h"
 #include "verse_host.h"
 #include "wire_login.h"
@@ -35,24 +36,6 @@ class FaultyHostedNode : public HostedNode {
 
  private:
   faults::FaultyNode node_;
-};
-
-// A host on 127.0.0.1:<any free port>, served by a thread until destroyed.
-struct RunningHost {
-  Host host;
-  std::atomic<bool> stop{false};
-  std::thread thread;
-  explicit RunningHost(HostOptions o = {}) {
-    o.address = "127.0.0.1";
-    o.port = 0;
-    const Status st = host.open(o);
-    EXPECT_TRUE(st.ok()) << st.to_string();
-    thread = std::thread([this] { (void)host.run(stop); });
-  }
-  ~RunningHost() {
-    stop = true;
-    thread.join();
-  }
 };
 
 template <class T>
