@@ -52,19 +52,27 @@ std::string print_program(const Program& program) {
 
 namespace {
 
-// "#! history KIND": the program reproduces a finding that depends on the
-// implementation's history. Returns false with *error set on a malformed one.
-bool parse_history_directive(const std::vector<std::pair<std::string, std::size_t>>& t, std::string_view line,
-                             std::size_t line_number, std::size_t last_command, Program* out, TextError* error) {
-  if (!out->history_kind.empty()) {
-    set_error(error, line_number, 1, "a second history directive");
+// A one-per-file directive after the last command: false with *error set
+// when it is the second one (`seen`) or comes before a command.
+bool placed_once(const char* name, bool seen, std::size_t line_number, std::size_t last_command, TextError* error) {
+  if (seen) {
+    set_error(error, line_number, 1, std::string("a second ") + name + " directive");
     return false;
   }
   if (line_number < last_command) {
     set_error(error, line_number, 1,
-              "the history directive must follow the last command (line " + std::to_string(last_command) + ")");
+              std::string("the ") + name + " directive must follow the last command (line " +
+                  std::to_string(last_command) + ")");
     return false;
   }
+  return true;
+}
+
+// "#! history KIND": the program reproduces a finding that depends on the
+// implementation's history. Returns false with *error set on a malformed one.
+bool parse_history_directive(const std::vector<std::pair<std::string, std::size_t>>& t, std::string_view line,
+                             std::size_t line_number, std::size_t last_command, Program* out, TextError* error) {
+  if (!placed_once("history", !out->history_kind.empty(), line_number, last_command, error)) return false;
   static const char* const kinds[] = {"crash", "timeout", "protocol-error", "wrong-answer"};
   if (t.size() != 2 || std::find(std::begin(kinds), std::end(kinds), t[1].first) == std::end(kinds)) {
     set_error(error, line_number, t.size() < 2 ? line.size() + 1 : t[1].second,
@@ -78,15 +86,7 @@ bool parse_history_directive(const std::vector<std::pair<std::string, std::size_
 // "#! mesh": the program is a user's mesh as `vgc certify --mesh` judged it.
 bool parse_mesh_directive(const std::vector<std::pair<std::string, std::size_t>>& t, std::size_t line_number,
                           std::size_t last_command, Program* out, TextError* error) {
-  if (out->mesh) {
-    set_error(error, line_number, 1, "a second mesh directive");
-    return false;
-  }
-  if (line_number < last_command) {
-    set_error(error, line_number, 1,
-              "the mesh directive must follow the last command (line " + std::to_string(last_command) + ")");
-    return false;
-  }
+  if (!placed_once("mesh", out->mesh, line_number, last_command, error)) return false;
   if (t.size() != 1) {
     set_error(error, line_number, t[1].second, "expected \"#! mesh\" alone on its line");
     return false;
