@@ -895,37 +895,34 @@ bool shrinks_as_program(const CampaignRun& r, const CampaignCrash& c) {
   return command_stream && !c.clause.empty();
 }
 
-// A raw-bytes finding's input minimized with libFuzzer's -minimize_crash
-// (minimize_input.h) into minimized/, kept only when a fresh run signs it
-// with the group's key. Each group gets an equal share of what is left of
-// the signing budget (at least 5 s). On success the group's smallest input
-// becomes the minimized one (with the target's printed block of it), and
-// *bytes its contents.
-void minimize_raw_input(CampaignRun* r, const std::string& key, CrashGroup& g, std::size_t groups_left,
-                        CampaignCrash* c, std::string* bytes) {
-  const auto now = clock::now();
-  if (now >= r->sign_until) {
-    c->minimize_note = "not minimized: the signing budget was spent";
-    return;
-  }
-  const auto share = (r->sign_until - now) / static_cast<long>(std::max<std::size_t>(1, groups_left));
-  const auto until = std::min(r->sign_until, now + std::max<clock::duration>(share, std::chrono::seconds(5)));
+// A raw-bytes finding's input minimized with libFuzzer's crash-minimizing
+// steps (minimize_input.h) into minimized/, kept only when a fresh run signs
+// it with the group's key. The minimization is bounded by steps, mutations
+// and CPU seconds, seeded by the campaign's seed, so the same finding
+// minimizes to the same bytes on an idle or a loaded machine; it is not cut
+// by the signing budget (a wall-clock share of which used to leave it
+// larger under load). Its wall guard (10 min) only stops a stuck step. On
+// success the group's smallest input becomes the minimized one (with the
+// target's printed block of it), and *bytes its contents.
+void minimize_raw_input(CampaignRun* r, const std::string& key, CrashGroup& g, CampaignCrash* c,
+                        std::string* bytes) {
   std::error_code ec;
   fs::create_directories(r->dir / "minimized", ec);
   const fs::path rep = c->input;
   const fs::path out = r->dir / "minimized" / rep.filename();
   std::string output;
+  MinimizeLimits limits;
+  limits.seed = r->o.seed;
+  limits.cpu_seconds = 60;
   const MinimizedInput m = minimize_input(
       env_prefix(r->target_env) + shell_quote(r->binary.string()), rep.string(), out.string(),
       [&](const std::string& candidate) {
         output = rerun_input(*r, candidate);
         return crash_signature(output).key == key;
       },
-      until);
-  if (!m.kept) {
-    c->minimize_note = m.note;
-    return;
-  }
+      limits, clock::now() + std::chrono::minutes(10));
+  c->minimize_note = m.note;
+  if (!m.kept) return;
   c->minimized_input = m.file;
   c->input_bytes = m.before;
   c->minimized_bytes = m.after;
@@ -1069,7 +1066,7 @@ void write_findings(CampaignRun* r, std::map<std::string, CrashGroup>& unique) {
     CampaignCrash c = describe_crash(*r, key, g);
     std::string bytes;
     read_file(c.input, &bytes);
-    if (!shrinks_as_program(*r, c)) minimize_raw_input(r, key, g, unique.size() - k, &c, &bytes);
+    if (!shrinks_as_program(*r, c)) minimize_raw_input(r, key, g, &c, &bytes);
     ++k;
     const char* ext = r->name == "text" ? "txt" : r->mesh ? "mesh.txt" : r->name == "verse_packet" ? "packet.txt" : "vgc";
     c.counterexample = (r->cex / fmt::format("crash-{}{}.{}", k, c.clause.empty() ? "" : "-" + c.clause, ext)).string();
@@ -1234,7 +1231,8 @@ std::string summary_json(const CampaignSummary& s) {
                                          : json{{"input", c.minimized_input},
                                                 {"from_bytes", c.input_bytes},
                                                 {"to_bytes", c.minimized_bytes},
-                                                {"by", "libFuzzer -minimize_crash"}}},
+                                                {"by", "libFuzzer -minimize_crash_internal_step"},
+                                                {"stopped", c.minimize_note}}},
                        {"minimize_note", c.minimize_note}});
   json clauses = json::array();
   for (const CampaignClause& g : s.clauses)
@@ -1346,8 +1344,8 @@ std::string summary_markdown(const CampaignSummary& s) {
       md += fmt::format("  - counterexample: `{}`\n  - replay: `{}`\n  - replay the input: `{}`\n", c.counterexample,
                         c.replay, c.replay_fuzzer);
       if (!c.minimized_input.empty())
-        md += fmt::format("  - input minimized from {} to {} bytes (libFuzzer -minimize_crash): `{}`\n", c.input_bytes,
-                          c.minimized_bytes, c.minimized_input);
+        md += fmt::format("  - input minimized from {} to {} bytes (libFuzzer's minimizing steps; {}): `{}`\n",
+                          c.input_bytes, c.minimized_bytes, c.minimize_note, c.minimized_input);
       else if (!c.minimize_note.empty())
         md += fmt::format("  - input not minimized: {}\n", c.minimize_note);
       if (!c.confirmation.empty()) md += fmt::format("  - {}\n", c.confirmation);
