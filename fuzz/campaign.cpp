@@ -36,6 +36,7 @@
 #include "live_implementation.h"
 #include "minimize_finding.h"
 #include "minimize_input.h"
+#include "sign_budget.h"
 #include "process_cpu.h"
 
 namespace vgc::fuzz {
@@ -549,12 +550,11 @@ struct CampaignRun {
   CampaignSummary s;
   clock::time_point t0;
   fs::file_time_type sys0;
-  clock::time_point sign_until;          // the budget of signing, minimizing and replaying crashes
+  SignBudget sign;                       // the budget of signing, minimizing and replaying crashes
   Progress progress;
   std::vector<CampaignSample> samples;   // for report.html's plots
   RunResult fuzzed;
   long long execs_before = 0;            // live rounds: executions of the rounds before the last
-  clock::time_point sign_inputs_until;   // re-running crash inputs stops here (sign_crash_inputs)
 };
 
 // The crash inputs of one signature.
@@ -837,14 +837,17 @@ std::map<std::string, CrashGroup> sign_crash_inputs(CampaignRun* r) {
   for (const fs::path& f : saved)
     if (auto t = seconds_since(f, r->sys0); t && (!s.time_to_first_finding_s || *t < *s.time_to_first_finding_s))
       s.time_to_first_finding_s = t;
-  r->sign_until = clock::now() + std::chrono::duration_cast<clock::duration>(
-                                     std::chrono::duration<double>(std::max(10.0, r->o.time_s / 10)));
+  r->sign = SignBudget::starting_now(r->o.time_s);
   // A live implementation costs a process or a login per input re-run:
   // its inputs get half the budget, so that the unique findings are still
   // minimized and replayed on a fresh instance in the other half.
-  r->sign_inputs_until = r->impl.live.empty() ? r->sign_until : clock::now() + (r->sign_until - clock::now()) / 2;
+  const bool live = !r->impl.live.empty();
   for (const fs::path& f : saved) {
-    if (s.crash_inputs_signed >= 200 || clock::now() >= r->sign_inputs_until) break;
+    if (s.crash_inputs_signed >= 200) break;
+    if (live ? r->sign.half_spent() : r->sign.spent()) {
+      s.signing_stopped = r->sign.wall_guard_reached() ? "the wall guard" : "the CPU budget";
+      break;
+    }
     ++s.crash_inputs_signed;
     const std::string output = rerun_input(*r, f);
     CrashSignature sig = crash_signature(output);
@@ -996,13 +999,13 @@ void write_program_counterexample(const CampaignRun& r, const CrashGroup& g, con
   // instance without the user's restart command.
   const bool wire = r.impl.live.rfind("verse:", 0) == 0;
   const bool confirmable = !call_failure || !wire || !o.restart.empty();
-  if (!c->clause.empty() && clock::now() < r.sign_until && !(call_failure && wire)) {
+  if (!c->clause.empty() && !r.sign.spent() && !(call_failure && wire)) {
     // Minimized as certify shrinks, before it is written (minimize_finding.h);
     // a crash stays a crash (an exec: program crashed is restarted by the replay).
     OpenOptions open;
     if (o.call_timeout_s > 0) open.timeout_seconds = o.call_timeout_s;
     if (!o.verse_bone_form.empty()) open.verse_bone_form = o.verse_bone_form;
-    const Minimized min = minimize_finding(body, c->clause, impl_spec, r.sign_until, 200, status, open);
+    const Minimized min = minimize_finding(body, c->clause, impl_spec, r.sign.wall_guard, 200, status, open);
     if (min.reproduced && min.after < min.before)
       body = fmt::format("# minimized from {} to {} commands ({} replays); the input replays the original\n",
                          min.before, min.after, min.replays) + min.text;
@@ -1015,7 +1018,7 @@ void write_program_counterexample(const CampaignRun& r, const CrashGroup& g, con
                              g.files.front().string() + "\n# replay: " + c->replay + "\n" + body);
   };
   write_cex();
-  if (replayable && confirmable && fs::exists(vgc) && clock::now() < r.sign_until) {
+  if (replayable && confirmable && fs::exists(vgc) && !r.sign.spent()) {
     // Which clause does it replay to? (`vgc replay` exits 1 naming it.)
     // For a crash or hang of a live implementation this is the
     // confirmation on a fresh instance: `vgc replay` starts a new exec:
@@ -1278,6 +1281,7 @@ std::string summary_json(const CampaignSummary& s) {
             {"corpus", {{"files", s.corpus_files}, {"bytes", s.corpus_bytes}, {"seed_files", s.seed_files}}},
             {"crash_inputs", s.crash_inputs},
             {"crash_inputs_signed", s.crash_inputs_signed},
+            {"signing_stopped_by", s.signing_stopped},
             {"time_to_first_finding_s", opt(s.time_to_first_finding_s)},
             {"new_crashes", s.new_crashes},
             {"crashes", crashes},
@@ -1316,7 +1320,7 @@ std::string summary_markdown(const CampaignSummary& s) {
       "| | |\n|---|---|\n| implementation | {} |\n| seed, jobs, time | {}, {}, {} s (wall {:.0f} s{}) |\n"
       "| CPU | {:.0f} s |\n"
       "| executions | {} |\n| exec/s | {:.0f} mean, {} last reported |\n| coverage | cov {}, ft {} |\n"
-      "| corpus | {} files, {} bytes ({} seeds{}) |\n| crash inputs | {} ({} re-run and signed; {} unique, {} new) |\n"
+      "| corpus | {} files, {} bytes ({} seeds{}) |\n| crash inputs | {} ({} re-run and signed{}; {} unique, {} new) |\n"
       "| time to first finding | {} |\n",
       s.target, s.run, s.implementation, s.seed, s.jobs, s.time_s, s.wall_s,
       s.killed_at_deadline ? "; libFuzzer overran and was killed"
@@ -1324,7 +1328,8 @@ std::string summary_markdown(const CampaignSummary& s) {
                            : "",
       s.cpu_s, s.executions, s.exec_per_s_mean,
       s.exec_per_s_last, s.cov, s.ft, s.corpus_files, s.corpus_bytes, s.seed_files,
-      s.empty_corpus ? ", started empty" : "", s.crash_inputs, s.crash_inputs_signed, s.crashes.size(),
+      s.empty_corpus ? ", started empty" : "", s.crash_inputs, s.crash_inputs_signed,
+      s.signing_stopped.empty() ? "" : ", stopped by " + s.signing_stopped, s.crashes.size(),
       s.new_crashes, secs(s.time_to_first_finding_s));
   if (!s.impl_coverage_mode.empty()) md += "| implementation coverage | " + implementation_coverage_line(s) + " |\n";
   if (!s.baseline.empty()) md += fmt::format("| baseline | {} |\n", s.baseline);

@@ -137,6 +137,7 @@ struct CampaignSummary {
   double exec_per_s_mean = 0;
   std::size_t corpus_files = 0, corpus_bytes = 0, seed_files = 0;
   std::size_t crash_inputs = 0, crash_inputs_signed = 0;  // saved, and re-run to sign them
+  std::string signing_stopped;  // "" or what stopped the signing early ("the CPU budget", "the wall guard")
   std::optional<double> time_to_first_finding_s;
   std::vector<CampaignCrash> crashes;
   std::vector<CampaignClause> clauses;  // sorted by clause id, "" last
