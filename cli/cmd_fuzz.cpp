@@ -76,8 +76,8 @@ int run_wire(const FuzzArgs& a) {
     say(stderr, "vgc fuzz wire: one host, one campaign: --jobs, --baseline and --empty-corpus do not apply\n");
     return 2;
   }
-  if (c.impl_coverage != "guide") {
-    say(stderr, "vgc fuzz wire: --impl-coverage is for vgc fuzz differential --impl exec:CMD\n");
+  if (c.impl_coverage != "guide" || c.coverage_report) {
+    say(stderr, "vgc fuzz wire: --impl-coverage and --coverage-report are for vgc fuzz differential --impl exec:CMD\n");
     return 2;
   }
   fuzz::WireFuzzOptions o;
@@ -97,9 +97,10 @@ int run_wire(const FuzzArgs& a) {
 // per-target times.
 int run_all(const FuzzArgs& a) {
   const fuzz::CampaignOptions& c = a.campaign;
-  if (!c.target.empty() || !c.impl.empty() || !c.baseline.empty() || c.empty_corpus || c.stop_at_first) {
+  if (!c.target.empty() || !c.impl.empty() || !c.baseline.empty() || c.empty_corpus || c.stop_at_first ||
+      c.coverage_report) {
     fmt::print(stderr, "vgc fuzz --all: runs every target on the reference from its committed corpus; a target, "
-                       "--impl, --baseline, --empty-corpus and --stop-at-first are for one campaign\n");
+                       "--impl, --baseline, --empty-corpus, --stop-at-first and --coverage-report are for one campaign\n");
     return 2;
   }
   fuzz::SoakOptions o;
@@ -257,6 +258,9 @@ void add_fuzz(CLI::App& app, int* exit_code) {
                   "exec: an implementation built with vgc's coverage runtime: guide (default; its edges steer "
                   "libFuzzer), guide-counts (edges and hit counts), observe (counted, not steering) or off")
       ->check(CLI::IsMember({"guide", "guide-counts", "observe", "off"}));
+  sub->add_flag("--coverage-report", o.coverage_report,
+                "exec: with an implementation built with vgc's coverage runtime and a PC table: name each of its "
+                "functions (llvm-symbolizer) and write which no input entered (implementation_functions.md)");
   sub->add_option("--seed", o.seed, "libFuzzer seed (default 1)")
       ->transform(whole_number(0, UINT_MAX, "the libFuzzer seed"));
   sub->add_option("--max-len", o.max_len, "Longest input in bytes (libFuzzer -max_len, default 1024)")

@@ -37,6 +37,7 @@
 #include "minimize_finding.h"
 #include "minimize_input.h"
 #include "sign_budget.h"
+#include "symbolize_functions.h"
 #include "process_cpu.h"
 
 namespace vgc::fuzz {
@@ -410,6 +411,11 @@ bool choose_implementation(const CampaignOptions& o, const std::string& name, bo
   }
   if (o.impl_coverage != "guide" && o.impl.rfind("exec:", 0) != 0) {
     fmt::print(stderr, "vgc fuzz: --impl-coverage is for --impl exec:CMD (a program vgc starts)\n");
+    return false;
+  }
+  if (o.coverage_report && (o.impl.rfind("exec:", 0) != 0 || o.impl_coverage == "off")) {
+    fmt::print(stderr, "vgc fuzz: --coverage-report is for --impl exec:CMD with its coverage on (not "
+                       "--impl-coverage off)\n");
     return false;
   }
   if (!live && (o.call_timeout_s > 0 || !o.verse_bone_form.empty() || !o.restart.empty())) {
@@ -1119,6 +1125,39 @@ void count_corpus_and_speed(CampaignRun* r) {
   s.exec_per_s_mean = fuzz_wall > 0 ? static_cast<double>(s.executions) / fuzz_wall : 0.0;
 }
 
+// --coverage-report: the implementation's functions named
+// (symbolize_functions.h), implementation_functions.md written, the ones
+// never entered kept for the summary.
+void write_function_report(CampaignRun* r, const CoverageTotals& t) {
+  CampaignSummary& s = r->s;
+  if (!t.seen) {
+    s.coverage_report_note = "no report: the implementation's coverage was not seen";
+    return;
+  }
+  if (t.functions.empty()) {
+    s.coverage_report_note = "no report: the implementation has no PC table (build it with "
+                             "-fsanitize-coverage=inline-8bit-counters,pc-table)";
+    return;
+  }
+  std::string note;
+  const std::vector<NamedFunction> named = symbolize_functions(t.functions, &note);
+  const fs::path file = r->dir / "implementation_functions.md";
+  if (!write_file(file, format_function_report(named, note))) {
+    s.coverage_report_note = "cannot write " + file.string();
+    return;
+  }
+  s.coverage_report = file.string();
+  std::vector<const NamedFunction*> never;
+  for (const NamedFunction& f : named)
+    if (!f.entered) never.push_back(&f);
+  std::sort(never.begin(), never.end(), [](const NamedFunction* a, const NamedFunction* b) { return place_before(*a, *b); });
+  s.functions_never_entered_count = never.size();
+  for (std::size_t i = 0; i < never.size() && i < 200; ++i)
+    s.functions_never_entered.push_back(never[i]->name +
+                                        (never[i]->location.empty() ? "" : " (" + never[i]->location + ")"));
+  if (!note.empty()) s.coverage_report_note = note;
+}
+
 // The implementation's own coverage, from the records of the run's
 // processes (coverage_record.h).
 void count_implementation_coverage(CampaignRun* r) {
@@ -1140,6 +1179,7 @@ void count_implementation_coverage(CampaignRun* r) {
       std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count();
   const double start_epoch = now_epoch - std::chrono::duration<double>(clock::now() - r->t0).count();
   for (const auto& [when, n] : t.timeline) s.impl_timeline.emplace_back(std::max(0.0, when - start_epoch), n);
+  if (r->o.coverage_report) write_function_report(r, t);
 }
 
 // summary.json and summary.md (each written whole or not at all: a
@@ -1277,7 +1317,11 @@ std::string summary_json(const CampaignSummary& s) {
                         {"functions_entered", s.impl_functions_entered},
                         {"counters_dropped", s.impl_counters_dropped},
                         {"modules", s.impl_modules},
-                        {"over_time", s.impl_timeline}}},
+                        {"over_time", s.impl_timeline},
+                        {"coverage_report", s.coverage_report.empty() ? json(nullptr) : json(s.coverage_report)},
+                        {"coverage_report_note", s.coverage_report_note},
+                        {"functions_never_entered_count", s.functions_never_entered_count},
+                        {"functions_never_entered", s.functions_never_entered}}},
             {"corpus", {{"files", s.corpus_files}, {"bytes", s.corpus_bytes}, {"seed_files", s.seed_files}}},
             {"crash_inputs", s.crash_inputs},
             {"crash_inputs_signed", s.crash_inputs_signed},
@@ -1332,6 +1376,11 @@ std::string summary_markdown(const CampaignSummary& s) {
       s.signing_stopped.empty() ? "" : ", stopped by " + s.signing_stopped, s.crashes.size(),
       s.new_crashes, secs(s.time_to_first_finding_s));
   if (!s.impl_coverage_mode.empty()) md += "| implementation coverage | " + implementation_coverage_line(s) + " |\n";
+  if (!s.coverage_report.empty())
+    md += fmt::format("| functions never entered | {} (every function, named: `{}`) |\n",
+                      s.functions_never_entered_count, s.coverage_report);
+  else if (!s.coverage_report_note.empty())
+    md += "| functions never entered | " + s.coverage_report_note + " |\n";
   if (!s.baseline.empty()) md += fmt::format("| baseline | {} |\n", s.baseline);
   md += fmt::format("\nCommand: `{}`\n\n", s.command);
   if (s.crashes.empty()) return escape_unprintable(md);

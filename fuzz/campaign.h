@@ -56,6 +56,10 @@ struct CampaignOptions {
   // hit counts), "observe" (counted for the summary, not guiding: an
   // unguided campaign measured alike) or "off".
   std::string impl_coverage = "guide";
+  // With an implementation whose coverage is seen and that has a PC table:
+  // name every one of its functions and write which no input entered
+  // (implementation_functions.md; symbolize_functions.h).
+  bool coverage_report = false;
   unsigned seed = 1;
   std::size_t max_len = 1024;
   std::string fuzz_build;     // the clang -DVGC_FUZZ=ON build ("" : $VGC_FUZZ_BUILD_DIR or build-fuzz)
@@ -152,6 +156,10 @@ struct CampaignSummary {
               impl_counters_dropped = 0;
   std::vector<std::string> impl_modules;
   std::vector<std::pair<double, std::size_t>> impl_timeline;  // seconds since the start, counters reached
+  // --coverage-report: the file written ("" when none), or why none was.
+  std::string coverage_report, coverage_report_note;
+  std::vector<std::string> functions_never_entered;  // "name (file:line)", at most 200, by location
+  std::size_t functions_never_entered_count = 0;
 };
 
 // Runs the campaign, writes reports/fuzz/<target>/<run>/{summary.json,

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 
 namespace vgc::fuzz {
@@ -49,6 +50,11 @@ bool parse_size(const std::string& s, std::size_t* out) {
 
 }  // namespace
 
+std::string module_path(const std::string& module_line) {
+  const auto paren = module_line.rfind(" (");
+  return paren == std::string::npos ? module_line : module_line.substr(0, paren);
+}
+
 std::string format_coverage_record(const CoverageRecord& r) {
   std::string out = "vgc-implementation-coverage 1\n";
   out += "mode " + r.mode + "\n";
@@ -64,6 +70,11 @@ std::string format_coverage_record(const CoverageRecord& r) {
   }
   if (!r.reached.empty()) out += "reached " + to_hex_bits(r.reached) + "\n";
   if (!r.entries.empty()) out += "entries " + to_hex_bits(r.entries) + "\n";
+  char hex[16];
+  for (const CoverageRecord::Function& f : r.functions) {
+    std::snprintf(hex, sizeof hex, "%x", f.offset);
+    out += "function " + std::to_string(f.index) + " " + std::to_string(f.module) + " " + hex + "\n";
+  }
   return out;
 }
 
@@ -100,6 +111,16 @@ bool parse_coverage_record(const std::string& text, CoverageRecord* out, std::st
       ok = sp != std::string::npos && pr.ec == std::errc() && pr.ptr == ts.data() + ts.size() &&
            parse_size(value.substr(sp + 1), &n);
       if (ok) r.timeline.emplace_back(t, n);
+    } else if (key == "function") {
+      std::istringstream fields(value);
+      std::string index, module, offset;
+      CoverageRecord::Function f;
+      ok = bool(fields >> index >> module >> offset) && parse_size(index, &f.index) && parse_size(module, &f.module);
+      if (ok) {
+        const auto pr = std::from_chars(offset.data(), offset.data() + offset.size(), f.offset, 16);
+        ok = pr.ec == std::errc() && pr.ptr == offset.data() + offset.size() && r.functions.size() < 65536;
+      }
+      if (ok) r.functions.push_back(f);
     } else if (key == "reached") reached_hex = value;
     else if (key == "entries") entries_hex = value;
     if (!ok) {
@@ -132,6 +153,7 @@ CoverageTotals merge_coverage_records(const std::string& dir) {
   CoverageTotals t;
   std::error_code ec;
   std::vector<std::uint8_t> reached, entries;
+  std::map<std::size_t, ImplementationFunction> functions;  // by counter
   std::vector<std::pair<double, std::size_t>> points;
   for (const auto& e : fs::directory_iterator(dir, ec)) {
     if (e.path().extension() != ".txt") continue;
@@ -155,6 +177,8 @@ CoverageTotals merge_coverage_records(const std::string& dir) {
     for (std::size_t i = 0; i < r.reached.size(); ++i) reached[i] |= r.reached[i];
     if (entries.size() < r.entries.size()) entries.resize(r.entries.size(), 0);
     for (std::size_t i = 0; i < r.entries.size(); ++i) entries[i] |= r.entries[i];
+    for (const CoverageRecord::Function& f : r.functions)
+      if (f.module < r.modules.size()) functions.try_emplace(f.index, ImplementationFunction{module_path(r.modules[f.module]), f.offset, false});
   }
   std::sort(points.begin(), points.end());
   for (const auto& [when, n] : points)
@@ -163,6 +187,10 @@ CoverageTotals merge_coverage_records(const std::string& dir) {
   for (std::size_t i = 0; i < entries.size(); ++i) {
     t.function_entries += entries[i] != 0;
     t.functions_entered += entries[i] != 0 && i < reached.size() && reached[i];
+  }
+  for (auto& [index, f] : functions) {
+    f.entered = index < reached.size() && reached[index];
+    t.functions.push_back(std::move(f));
   }
   return t;
 }

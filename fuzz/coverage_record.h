@@ -23,6 +23,9 @@
 //   timeline UNIX_TIME REACHED      (when this process's count grew; at most 200 lines)
 //   reached HEX                     (bit i of the map: counter i reached)
 //   entries HEX                     (bit i: counter i is a function's entry)
+//   function INDEX MODULE OFFSET    (a function's entry counter, its module's number among the module
+//                                    lines, its PC minus the module's load address in hex; at most
+//                                    65,536 lines: for --coverage-report)
 #pragma once
 
 #include <cstddef>
@@ -41,6 +44,20 @@ struct CoverageRecord {
   std::vector<std::pair<double, std::size_t>> timeline;  // seconds since the epoch, counters reached by then
   std::vector<std::uint8_t> reached;  // one byte per counter, 1 = reached
   std::vector<std::uint8_t> entries;  // one byte per counter, 1 = a function's entry
+  struct Function {
+    std::size_t index = 0;
+    std::size_t module = 0;
+    std::uint32_t offset = 0;
+  };
+  std::vector<Function> functions;  // the entries whose PC is known
+};
+
+// A function of the implementation, for --coverage-report: where its code
+// is and whether any input entered it.
+struct ImplementationFunction {
+  std::string module;         // the module's file
+  std::uint32_t offset = 0;   // PC minus the module's load address
+  bool entered = false;
 };
 
 // The campaign's view: every record of a run merged (counters reached by
@@ -55,7 +72,11 @@ struct CoverageTotals {
   // (seconds since the epoch, the most counters any process had reached by
   // then), in time order.
   std::vector<std::pair<double, std::size_t>> timeline;
+  std::vector<ImplementationFunction> functions;  // in counter order
 };
+
+// The file of a module line ("PATH (N counters, PC table)" -> "PATH").
+std::string module_path(const std::string& module_line);
 
 std::string format_coverage_record(const CoverageRecord& r);
 // false and *error for anything that is not a record of this form.

@@ -58,12 +58,14 @@ std::unique_ptr<CoverageRegion> CoverageRegion::create(std::size_t max_counters,
     return nullptr;
   }
   r->fd_ = fd;
-  // Header, a flag byte per counter, then the blocks: every counter, and
+  // Header, a flag byte per counter, an entry's PC offset per counter, then
+  // the blocks: every counter, and
   // two pages per module for the neighbours that share the counters' pages.
   const std::size_t header = round_up(VGC_COVERAGE_HEADER_BYTES, page);
   const std::size_t flags = round_up(max_counters, page);
+  const std::size_t pcs = round_up(max_counters * 4, page);
   const std::size_t blocks = round_up(max_counters, page) + 2 * page * VGC_COVERAGE_MAX_MODULES;
-  r->size_ = header + flags + blocks;
+  r->size_ = header + flags + pcs + blocks;
   if (ftruncate(fd, static_cast<off_t>(r->size_)) != 0) {
     *error = "cannot size the shared memory " + r->name_ + ": " + std::strerror(errno);
     return nullptr;  // the destructor unlinks it
@@ -76,12 +78,13 @@ std::unique_ptr<CoverageRegion> CoverageRegion::create(std::size_t max_counters,
   r->base_ = static_cast<std::uint8_t*>(p);
   r->header_ = reinterpret_cast<vgc_coverage_header*>(p);
   vgc_coverage_header& h = *r->header_;
-  h.version = 1;
+  h.version = VGC_COVERAGE_VERSION;
   h.page_size = static_cast<std::uint32_t>(page);
   h.max_counters = static_cast<std::uint32_t>(max_counters);
   h.max_modules = VGC_COVERAGE_MAX_MODULES;
   h.flags_offset = header;
-  h.blocks_offset = header + flags;
+  h.pcs_offset = header + flags;
+  h.blocks_offset = header + flags + pcs;
   h.region_size = r->size_;
   std::memcpy(h.magic, VGC_COVERAGE_MAGIC, 8);  // last: the runtime checks it first
   r->reached_.assign(max_counters, 0);
@@ -184,6 +187,31 @@ std::size_t CoverageRegion::functions_entered() const {
   std::size_t k = 0;
   for (std::size_t i = 0; i < n; ++i) k += flags[i] && reached_[i];
   return k;
+}
+
+}  // namespace vgc::fuzz
+
+namespace vgc::fuzz {
+
+std::vector<FunctionEntry> CoverageRegion::function_entry_list() const {
+  std::vector<FunctionEntry> out;
+  const std::uint32_t n = std::min<std::uint32_t>(__atomic_load_n(&header_->modules, __ATOMIC_ACQUIRE),
+                                                  VGC_COVERAGE_MAX_MODULES);
+  const std::uint8_t* flags = base_ + header_->flags_offset;
+  for (std::uint32_t i = 0; i < n; ++i) {
+    const vgc_coverage_module& m = header_->module[i];
+    if (!m.has_pcs) continue;
+    for (std::size_t k = 0; k < m.counters; ++k) {
+      const std::size_t index = std::size_t{m.first_index} + k;
+      if (index >= reached_.size() || !flags[index]) continue;
+      std::uint32_t pc;
+      std::memcpy(&pc, base_ + header_->pcs_offset + 4 * index, 4);
+      if (pc == VGC_COVERAGE_NO_PC) continue;
+      out.push_back({index, i, pc});
+      if (out.size() >= kMaxFunctionEntries) return out;
+    }
+  }
+  return out;
 }
 
 }  // namespace vgc::fuzz

@@ -42,6 +42,18 @@ struct vgc_coverage_header;
 
 namespace vgc::fuzz {
 
+// A function's entry counter, and where its code is: `offset` from the
+// load address of module `module` (modules()' order), which
+// symbolize_functions.h turns into a name and a source line.
+struct FunctionEntry {
+  std::size_t index = 0;     // the counter
+  std::uint32_t module = 0;  // modules()[module]
+  std::uint32_t offset = 0;  // PC minus the module's load address
+};
+
+// At most this many function entries are listed (a record stays small).
+inline constexpr std::size_t kMaxFunctionEntries = 65536;
+
 class CoverageRegion {
  public:
   // Creates the region /vgc-coverage-<pid> (a stale one of a dead process
@@ -76,6 +88,9 @@ class CoverageRegion {
   std::size_t functions_entered() const;
   const std::vector<std::uint8_t>& reached_map() const { return reached_; }  // one byte per counter, 1 = reached
   std::vector<std::uint8_t> entry_map() const;                              // 1 = a function's entry
+  // The function entries whose PC the runtime gave (a PC table), in counter
+  // order, at most kMaxFunctionEntries.
+  std::vector<FunctionEntry> function_entry_list() const;
 
  private:
   CoverageRegion() = default;

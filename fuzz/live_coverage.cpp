@@ -102,7 +102,11 @@ void LiveCoverage::write_record() {
     record_.reached.assign(region_->reached_map().begin(), region_->reached_map().begin() + record_.counters);
     record_.entries = region_->entry_map();
     record_.entries.resize(record_.counters, 0);
+    record_.functions.clear();
+    for (const FunctionEntry& f : region_->function_entry_list())
+      if (f.index < record_.counters) record_.functions.push_back({f.index, f.module, f.offset});
   } else {
+    record_.functions.clear();
     record_.counters = 0;
     record_.reached.clear();
     record_.entries.clear();

@@ -139,12 +139,12 @@ static void attach(void) {
   }
   struct vgc_coverage_header* hdr = (struct vgc_coverage_header*)h;
   const long page = sysconf(_SC_PAGESIZE);
-  if (memcmp(hdr->magic, VGC_COVERAGE_MAGIC, 8) != 0 || hdr->version != 1 || hdr->page_size != (uint32_t)page ||
+  if (memcmp(hdr->magic, VGC_COVERAGE_MAGIC, 8) != 0 || hdr->version != VGC_COVERAGE_VERSION || hdr->page_size != (uint32_t)page ||
       hdr->region_size > (uint64_t)st.st_size || hdr->max_modules > VGC_COVERAGE_MAX_MODULES ||
       hdr->blocks_offset % (uint64_t)page != 0) {
     munmap(h, VGC_COVERAGE_HEADER_BYTES);
     close(fd);
-    say("the shared memory ", path, " was not made by this vgc (layout version 1): the coverage is not shown");
+    say("the shared memory ", path, " was not made by this vgc (layout version 2): the coverage is not shown");
     return;
   }
   /* One owner: a live process of another pid keeps it (this process is
@@ -251,11 +251,24 @@ VGC_HIDDEN void __sanitizer_cov_pcs_init(const uintptr_t* beg, const uintptr_t* 
     uint8_t* flags = (uint8_t*)mmap(NULL, hdr->max_counters, PROT_READ | PROT_WRITE, MAP_SHARED, g_fd,
                                     (off_t)hdr->flags_offset);
     if (flags == MAP_FAILED) return;
+    /* The entries' PCs as offsets from the module's load address. */
+    const size_t pcs_len = (size_t)hdr->max_counters * 4;
+    uint32_t* pcs = (uint32_t*)mmap(NULL, pcs_len, PROT_READ | PROT_WRITE, MAP_SHARED, g_fd, (off_t)hdr->pcs_offset);
+    Dl_info info;
+    const uintptr_t base =
+        dladdr && n > 0 && dladdr((const void*)beg[0], &info) && info.dli_fbase ? (uintptr_t)info.dli_fbase : 0;
     uint32_t entries = 0;
     for (uint64_t k = 0; k < n; ++k) {
-      flags[m->first_index + k] = (uint8_t)(beg[2 * k + 1] & 1);
-      entries += (uint32_t)(beg[2 * k + 1] & 1);
+      const uint8_t entry = (uint8_t)(beg[2 * k + 1] & 1);
+      flags[m->first_index + k] = entry;
+      entries += entry;
+      if (pcs != MAP_FAILED) {
+        const uintptr_t pc = beg[2 * k];
+        const int known = entry && base != 0 && pc >= base && pc - base < VGC_COVERAGE_NO_PC;
+        pcs[m->first_index + k] = known ? (uint32_t)(pc - base) : VGC_COVERAGE_NO_PC;
+      }
     }
+    if (pcs != MAP_FAILED) munmap(pcs, pcs_len);
     munmap(flags, hdr->max_counters);
     m->has_pcs = 1;
     hdr->function_entries += entries;

@@ -9,7 +9,9 @@
  * (__sanitizer_cov_8bit_counters_init(start, stop) once per module,
  * __sanitizer_cov_pcs_init(beg, end): one {PC, flags} pair per counter,
  * flags bit 0 = the block is a function's entry); docs/fuzzing.md
- * "Coverage of the implementation".
+ * "Coverage of the implementation". Layout version 2 adds the entries'
+ * PCs, as offsets from their module's load address, so that vgc can name
+ * the functions no input entered (`vgc fuzz --coverage-report`).
  *
  * Rationale: the counters are plain bytes the compiled code increments in
  * place, in a section of each module (__sancov_cntrs); the process does
@@ -36,6 +38,8 @@
 #define VGC_COVERAGE_ENV "VGC_COVERAGE_SHM"
 #define VGC_COVERAGE_MAX_MODULES 30  /* the header fits one 4 KiB page */
 #define VGC_COVERAGE_HEADER_BYTES 4096u /* the header area; block offsets are multiples of the system page */
+#define VGC_COVERAGE_VERSION 2
+#define VGC_COVERAGE_NO_PC 0xFFFFFFFFu
 
 struct vgc_coverage_module {
   uint64_t block_offset;   /* where the module's pages are in the region (a multiple of the page size) */
@@ -48,11 +52,13 @@ struct vgc_coverage_module {
 
 struct vgc_coverage_header {
   char magic[8];           /* VGC_COVERAGE_MAGIC: written by vgc */
-  uint32_t version;        /* 1 */
+  uint32_t version;        /* VGC_COVERAGE_VERSION */
   uint32_t page_size;      /* the system page size vgc saw */
   uint32_t max_counters;   /* capacity of the flags area and of the blocks (vgc) */
   uint32_t max_modules;    /* <= VGC_COVERAGE_MAX_MODULES (vgc) */
   uint64_t flags_offset;   /* a byte per counter: 1 function entry, 0 not (or no PC table) */
+  uint64_t pcs_offset;     /* 4 bytes per counter (native order): a function entry's PC minus its module's
+                            * load address (dladdr's dli_fbase), VGC_COVERAGE_NO_PC for any other counter */
   uint64_t blocks_offset;  /* start of the blocks area */
   uint64_t region_size;    /* the whole region */
   /* Written by the runtime. owner_pid: the process whose counters are

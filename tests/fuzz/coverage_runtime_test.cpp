@@ -183,6 +183,7 @@ TEST(CoverageRecord, RoundTripAndMerge) {
   r.timeline = {{1795777945.5, 3}, {1795777947.0, 4}};
   r.reached = {1, 0, 0, 1, 0, 1, 0, 0, 1};
   r.entries = {1, 0, 0, 0, 1, 0, 0, 0, 0};
+  r.functions = {{0, 0, 0x1a30}, {4, 0, 0x2f00}};  // the two entries' PCs (--coverage-report)
   const std::string text = vgc::fuzz::format_coverage_record(r);
   vgc::fuzz::CoverageRecord back;
   std::string error;
@@ -191,7 +192,11 @@ TEST(CoverageRecord, RoundTripAndMerge) {
   EXPECT_EQ(back.entries, r.entries);
   EXPECT_EQ(back.modules, r.modules);
   EXPECT_EQ(back.timeline.size(), 2u);
+  ASSERT_EQ(back.functions.size(), 2u);
+  EXPECT_EQ(back.functions[1].index, 4u);
+  EXPECT_EQ(back.functions[1].offset, 0x2f00u);
   EXPECT_EQ(vgc::fuzz::format_coverage_record(back), text);
+  EXPECT_FALSE(vgc::fuzz::parse_coverage_record("vgc-implementation-coverage 1\nfunction 4 0 zz\n", &back, &error));
   // Bad records are refused, not guessed at.
   EXPECT_FALSE(vgc::fuzz::parse_coverage_record("vgc-implementation-coverage 2\n", &back, &error));
   EXPECT_FALSE(vgc::fuzz::parse_coverage_record(
@@ -211,6 +216,12 @@ TEST(CoverageRecord, RoundTripAndMerge) {
   EXPECT_EQ(t.reached, 5u);
   EXPECT_EQ(t.function_entries, 2u);
   EXPECT_EQ(t.functions_entered, 1u);
+  // Each function once, with its module's file and whether any process entered it.
+  ASSERT_EQ(t.functions.size(), 2u);
+  EXPECT_EQ(t.functions[0].module, "/x/libhost.so");
+  EXPECT_TRUE(t.functions[0].entered);    // counter 0: reached by the first process
+  EXPECT_FALSE(t.functions[1].entered);   // counter 4: by neither
+  EXPECT_EQ(t.functions[1].offset, 0x2f00u);
 }
 
 }  // namespace
