@@ -1205,6 +1205,9 @@ int write_campaign_reports(CampaignRun* r) {
   page.coverage = s.cov, page.features = s.ft, page.corpus_files = s.corpus_files, page.corpus_bytes = s.corpus_bytes;
   page.seed_files = s.seed_files, page.crash_inputs = s.crash_inputs, page.samples = std::move(r->samples);
   if (!s.impl_coverage_mode.empty()) page.implementation_coverage = implementation_coverage_line(s);
+  page.function_report = s.coverage_report;
+  page.functions_never_entered = s.functions_never_entered;
+  page.functions_never_entered_count = s.functions_never_entered_count;
   for (const auto& [t, n] : s.impl_timeline) {
     CampaignSample p;
     p.seconds = t;

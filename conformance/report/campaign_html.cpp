@@ -161,6 +161,21 @@ std::string render_campaign_html(const CampaignReport& r) {
         "note");
   }
 
+  if (!r.function_report.empty()) {
+    add(body, "h2", "The implementation's functions no input entered");
+    auto p = add(body, "p");
+    p.append_child(pugi::node_pcdata)
+        .set_value((std::to_string(r.functions_never_entered_count) + " never entered" +
+                    (r.functions_never_entered_count > r.functions_never_entered.size()
+                         ? " (the first " + std::to_string(r.functions_never_entered.size()) + " by place below)"
+                         : "") +
+                    "; every function, entered or not, in ")
+                       .c_str());
+    add(p, "code", r.function_report);
+    auto ul = add(body, "ul", {}, "functions");
+    for (const std::string& f : r.functions_never_entered) add(ul, "li", f);
+  }
+
   add(body, "h2", found ? "Findings" : "No findings");
   for (const auto& f : r.findings) {
     auto sec = add(body, "section", {}, "finding");

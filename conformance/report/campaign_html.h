@@ -53,6 +53,12 @@ struct CampaignReport {
   // reached over time (`coverage` of each sample; plotted from two points).
   std::string implementation_coverage;
   std::vector<CampaignSample> implementation_samples;
+  // --coverage-report: the implementation's functions no input entered
+  // ("name (file:line)", by place, at most 200), how many there are in
+  // all, and the file that lists every function ("" : no such section).
+  std::vector<std::string> functions_never_entered;
+  std::size_t functions_never_entered_count = 0;
+  std::string function_report;
 };
 
 // The page. Plots are drawn when there are at least two samples (else a

@@ -76,5 +76,8 @@ assert len(names) == len(set(names)), "a function named twice: %s" % sorted(n fo
 unnamed = [l for l in text.splitlines() if l.startswith("- `") and "+0x" in l]
 assert not unnamed, "functions not named: %s" % unnamed[:5]
 assert "functions never entered" in md, "summary.md does not say how many functions were never entered"
+html = open(sys.argv[1].replace("summary.json", "report.html")).read()
+assert "no input entered" in html and all(n.split(" (")[0] in html for n in ic["functions_never_entered"]), \
+    "report.html does not list the functions never entered"
 print("live_coverage_guides: %d of %d functions never entered, every one named (%s)" % (never, ic["function_entries"], report))
 PY
