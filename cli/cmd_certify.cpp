@@ -456,10 +456,10 @@ void add(CLI::App& app, int* exit_code) {
   auto* max_size = sub->add_option("--max-size", o->max_size, "RapidCheck size: longest command sequences")
                        ->capture_default_str()
                        ->transform(whole_number(1, kMaxSize, "commands (the RapidCheck size)"));
-  auto* budget = sub->add_option("--budget", o->budget,
-                                 "Wall-time limit in seconds; a run cut short is 'incomplete' (exit 2)")
-                     ->capture_default_str()
-                     ->transform(seconds("for the whole run"));
+  sub->add_option("--budget", o->budget,
+                  "CPU seconds of vgc and the implementation it started (a wall-clock guard stops at 10x); a run cut short is 'incomplete' (exit 2)")
+      ->capture_default_str()
+      ->transform(seconds("for the whole run"));
   sub->add_option("--timeout", o->timeout, "Seconds an out-of-process implementation has per answer")
       ->capture_default_str()
       ->transform(seconds("per answer"));

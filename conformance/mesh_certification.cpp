@@ -1,5 +1,6 @@
 // mesh_certification.cpp — see mesh_certification.h.
 #include "mesh_certification.h"
+#include "run_budget.h"
 
 #include <algorithm>
 #include <chrono>
@@ -180,17 +181,11 @@ std::vector<Planned> plan_checks(const MeshProgram& mesh, const MeshCertifyOptio
   return out;
 }
 
-std::string budget_text(double seconds) {
-  std::ostringstream out;
-  out << seconds;
-  return out.str();
-}
-
-// Why the run must stop now ("" to go on): a cancel signal, or the budget.
-std::string stop_reason(const MeshCertifyOptions& options, Clock::time_point t0) {
+// Why the run must stop now ("" to go on): a cancel signal, or the budget
+// (run_budget.h: CPU seconds, with a wall-clock guard).
+std::string stop_reason(RunBudget& budget) {
   if (cancel_signal()) return std::string("cancelled by ") + cancel_signal_name();
-  if (options.budget_seconds > 0 && since(t0) > options.budget_seconds)
-    return "the budget (--budget " + budget_text(options.budget_seconds) + ") ran out";
+  if (budget.spent()) return budget.why();
   return "";
 }
 
@@ -199,8 +194,7 @@ std::string stop_reason(const MeshCertifyOptions& options, Clock::time_point t0)
 // a stop the thread is left running with its own copy of the model
 // (*abandoned): the caller must not return through `sut`.
 void run_one_check(const Planned& p, const CapabilityCheck& check, const std::shared_ptr<const Node>& model,
-                   Implementation& sut, const MeshProgram& mesh, const MeshCertifyOptions& options,
-                   Clock::time_point t0, MeshCheckOutcome* o, MeshCertification* out) {
+                   Implementation& sut, const MeshProgram& mesh, RunBudget& budget, MeshCheckOutcome* o, MeshCertification* out) {
   const auto t = Clock::now();
   const CapabilityRequest request{p.capability, p.level == 0 ? 1 : p.level, std::nullopt};
   sut.expect_answer_bytes(expected_answer_bytes(p.capability, p.level, mesh));
@@ -210,7 +204,7 @@ void run_one_check(const Planned& p, const CapabilityCheck& check, const std::sh
     result->set_value(run_capability_check(check, *model, sut, request));
   }).detach();
   while (done.wait_for(std::chrono::milliseconds(50)) != std::future_status::ready) {
-    const std::string why = stop_reason(options, t0);
+    const std::string why = stop_reason(budget);
     if (why.empty()) continue;
     o->status = MeshCheckStatus::Stopped;
     o->note = why + " during this check";
@@ -243,7 +237,8 @@ MeshCertification certify_mesh(const MeshProgram& mesh, Implementation& sut, con
   out.commands = mesh.program.commands.size();
   auto model = std::make_shared<Node>();
   const auto t0 = Clock::now();
-  out.build_failure = build(mesh, sut, model.get(), [&] { return stop_reason(options, t0); }, &out.stopped_why);
+  RunBudget budget(options.budget_seconds);
+  out.build_failure = build(mesh, sut, model.get(), [&] { return stop_reason(budget); }, &out.stopped_why);
   out.build_seconds = since(t0);
   if (out.build_failure || !out.stopped_why.empty()) return out;
   out.built = true;
@@ -261,12 +256,12 @@ MeshCertification certify_mesh(const MeshProgram& mesh, Implementation& sut, con
     } else if (!check || (!check->check && !check->check_drawn)) {
       o.status = MeshCheckStatus::NoOracle;
       o.note = "this vgc has no oracle linked for \"" + std::string(p.capability) + "\"";
-    } else if (!out.stopped_why.empty() || !(o.note = stop_reason(options, t0)).empty()) {
+    } else if (!out.stopped_why.empty() || !(o.note = stop_reason(budget)).empty()) {
       o.status = MeshCheckStatus::Stopped;
       if (out.stopped_why.empty()) out.stopped_why = o.note;
       o.note = out.stopped_why + " before this check";
     } else {
-      run_one_check(p, *check, model, sut, mesh, options, t0, &o, &out);
+      run_one_check(p, *check, model, sut, mesh, budget, &o, &out);
     }
     out.checks.push_back(std::move(o));
   }

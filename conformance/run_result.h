@@ -47,7 +47,7 @@ struct RunSettings {
   std::uint64_t seed = 1;
   int cases = 100;               // cases per property
   int max_size = 40;             // RapidCheck size: command sequences grow up to about this length
-  double budget_seconds = 120;   // wall time for the whole run
+  double budget_seconds = 120;   // CPU seconds of vgc and the implementation (run_budget.h), wall guard 10x
   std::string clause_glob = "*"; // which clauses (fnmatch pattern, comma-separated alternatives)
   int shard_index = 0;           // this run's shard, 0-based
   int shard_count = 1;

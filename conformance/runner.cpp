@@ -17,6 +17,7 @@
 #include "capability.h"
 #include "clause_status.h"
 #include "costly_class.h"
+#include "run_budget.h"
 #include "exercised_clauses.h"
 #include "command_text.h"
 #include "confirm_finding.h"
@@ -178,10 +179,13 @@ int shard_cases(int all, int index, int count) {
   return all / count + (index < all % count ? 1 : 0);
 }
 
-// The budget ran out, or the run was cancelled (cancel.h): either way no
-// further case runs and the case under way is not judged.
+// The budget ran out (CPU seconds, or its wall-clock guard: run_budget.h),
+// or the run was cancelled (cancel.h): either way no further case runs and
+// the case under way is not judged.
+thread_local RunBudget* g_budget = nullptr;  // the run's --budget (run_budget.h), set by run_certification
+
 bool past_deadline() {
-  if (Clock::now() < g_context->deadline && !cancel_signal()) return false;
+  if (Clock::now() < g_context->deadline && !cancel_signal() && !(g_budget && g_budget->spent())) return false;
   g_context->deadline_hit = true;
   return true;
 }
@@ -891,7 +895,9 @@ int confirm_notes(CaseContext& ctx, Clock::time_point deadline, PropertyOutcome*
 std::string stop_note_of(const CaseContext& ctx, const std::string& rapidcheck_note) {
   const std::string ran = std::to_string(ctx.cases_done) + " of " + std::to_string(ctx.target) + " cases";
   if (ctx.deadline_hit && cancel_signal()) return std::string("cancelled by ") + cancel_signal_name() + " after " + ran;
-  if (ctx.deadline_hit) return "the budget ran out after " + ran + "; raise --budget";
+  if (ctx.deadline_hit)
+    return (g_budget && g_budget->spent() ? g_budget->why() : std::string("the budget ran out")) + " after " + ran +
+           "; raise --budget";
   if (ctx.dominated) {
     std::set<std::string> hits;
     for (const auto& [clause, pf] : ctx.tolerated_seen) hits.insert(clause);
@@ -1166,8 +1172,14 @@ RunResult run_certification(Implementation& implementation, const RunOptions& o)
   run.options = o;
   for (std::size_t i = 1; i < kRuleCount; ++i) run.rule_uses[std::string(rule_name(static_cast<Rule>(i)))] = 0;
   const auto start = Clock::now();
-  const auto deadline = start + std::chrono::duration_cast<Clock::duration>(
-                                    std::chrono::duration<double>(o.budget_seconds));
+  // --budget counts CPU seconds (run_budget.h); the deadline every wait
+  // is cut at is its wall-clock guard.
+  RunBudget budget(o.budget_seconds);
+  g_budget = &budget;
+  struct Unset {
+    ~Unset() { g_budget = nullptr; }
+  } unset;
+  const auto deadline = budget.wall_guard();
   const RouteLimits limits = sut.limits();
   run.preflight = preflight(sut);
 
