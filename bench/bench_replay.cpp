@@ -22,6 +22,7 @@
 #include "command_text.h"
 #include "implementation.h"
 #include "program_text.h"
+#include "route.h"
 #include "runner.h"
 
 namespace {
@@ -103,7 +104,9 @@ int main(int argc, char** argv) {
     }
     for (const std::string& route : {std::string("reference"), std::string("exec")}) {
       if (routes.find(route) == std::string::npos) continue;
-      const std::string spec = route == "reference" ? "reference" : "exec:" + vgc + " serve";
+      const std::string spec =
+          route == "reference" ? vgc::route_spec(vgc::RouteKind::Reference, "")
+                               : vgc::route_spec(vgc::RouteKind::Exec, vgc + " serve");
       std::vector<double> runs;
       bool agreed = true;
       for (int r = 0; r < repeats; ++r) {

@@ -205,7 +205,9 @@ def judge_mutant(args, index, source, workdir):
     rc, report, secs, tail = certify(args.vgc, program, 1, None, None, os.path.join(d, "seed1"), args.timeout,
                                      args.budget)
     row = {"index": index, "kind": site.kind, "line": site.line, "detail": site.detail, "seconds": round(secs, 1)}
-    started = not any("cannot start" in line for line in tail)
+    # A program that no longer starts (no `vgc-exec 1 NAME` answer to
+    # ?hello) leaves no report: vgc could not begin the run.
+    started = report is not None and not any("cannot start" in line or "vgc-exec 1" in line for line in tail)
     if rc == 1 or (rc == 2 and failing_clauses(report)):  # a finding kills it, cut short by the budget or not
         first = failing_clauses(report)
         row.update(outcome="killed", by=first[0]["id"] if first else "?")
@@ -287,6 +289,8 @@ def main():
     ap.add_argument("--source", default=os.path.join(ROOT, "tests", "exec_python", "vgc_node.py"))
     ap.add_argument("--out", default=os.path.join("reports", "mutation"))
     ap.add_argument("--sample", type=int, default=0, help="certify N mutants spread evenly over all (0: all)")
+    ap.add_argument("--sample-offset", type=int, default=0,
+                    help="with --sample: start the even spread this many mutants later (a second, disjoint sample)")
     ap.add_argument("--only", default="", help="comma-separated mutant numbers")
     ap.add_argument("--jobs", type=int, default=2)
     ap.add_argument("--timeout", type=float, default=3, help="certify --timeout for each mutant")
@@ -326,7 +330,9 @@ def main():
             ap.error("--only: mutants are numbered 0 to %d" % (len(sites) - 1))
     elif args.sample and args.sample < len(sites):
         step = len(sites) / args.sample
-        chosen = sorted({int(i * step) for i in range(args.sample)})
+        if not 0 <= args.sample_offset < step:
+            ap.error("--sample-offset: give 0 to %d for --sample %d" % (int(step) - 1, args.sample))
+        chosen = sorted({int(i * step) + args.sample_offset for i in range(args.sample)})
     else:
         chosen = list(range(len(sites)))
     started = datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%dT%H:%M:%SZ")

@@ -51,14 +51,11 @@ namespace {
 constexpr std::uint64_t kMaxSize = 100000;
 
 struct Options {
-  std::string impl = "reference";
+  ImplOptions impl;  // --impl and its family (open_impl.h)
   std::uint64_t seed = 1;
   int cases = 200;
   int max_size = 50;
   double budget = 300;
-  double timeout = 5;
-  double start_timeout = 60;  // --start-timeout
-  std::string verse_bone_form = "auto";  // --verse-bone-form
   std::string clauses = "*";
   std::string baseline;
   std::string shard = "1/1";
@@ -185,17 +182,18 @@ void install_cancel_handlers() {
 }
 
 std::string rerun_command(const Options& o) {
-  std::string c = vgc_environment_prefix() + program_command() + " certify --impl " + shell_quote(o.impl) + " --seed " +
-                  std::to_string(o.seed) + " --cases " + std::to_string(o.cases) + " --budget " +
-                  fmt::format("{:g}", o.budget);
+  std::string c = vgc_environment_prefix() + program_command() + " certify --impl " +
+                  shell_quote(o.impl.route.spec) + " --seed " + std::to_string(o.seed) + " --cases " +
+                  std::to_string(o.cases) + " --budget " + fmt::format("{:g}", o.budget);
   if (o.max_size != 50) c += " --max-size " + std::to_string(o.max_size);
   if (o.clauses != "*") c += " --clauses " + shell_quote(o.clauses);
   if (o.shard != "1/1") c += " --shard " + o.shard;
   if (!o.baseline.empty()) c += " --baseline " + shell_quote(o.baseline);
   if (o.strict) c += " --strict";
-  if (o.timeout != 5) c += " --timeout " + fmt::format("{:g}", o.timeout);
-  if (o.start_timeout != 60) c += " --start-timeout " + fmt::format("{:g}", o.start_timeout);
-  if (o.verse_bone_form != "auto") c += " --verse-bone-form " + o.verse_bone_form;
+  if (o.impl.timeout != 5) c += " --timeout " + fmt::format("{:g}", o.impl.timeout);
+  if (o.impl.start_timeout != 60) c += " --start-timeout " + fmt::format("{:g}", o.impl.start_timeout);
+  if (o.impl.verse_bone_form != "auto") c += " --verse-bone-form " + o.impl.verse_bone_form;
+  if (!o.impl.restart.empty()) c += " --restart " + shell_quote(o.impl.restart);
   return c;
 }
 
@@ -212,8 +210,8 @@ int run_mesh(const Options& o) {
     return usage(fmt::format("--levels is {}: give 1 to 4 subdivision levels (default 2)", o.levels));
   if (!(o.budget > 0))
     return usage(fmt::format("--budget is {:g}: give a positive number of seconds (default 300)", o.budget));
-  if (!(o.timeout > 0))
-    return usage(fmt::format("--timeout is {:g}: give a positive number of seconds (default 5)", o.timeout));
+  if (!(o.impl.timeout > 0))
+    return usage(fmt::format("--timeout is {:g}: give a positive number of seconds (default 5)", o.impl.timeout));
   if (const std::string bad = unmatched_pattern(o.clauses); !bad.empty())
     return usage("--clauses pattern '" + bad + "' matches no clause id: `vgc clauses` lists them; with --mesh the "
                  "checks are MESH-CLASSIFY-1, NORMALS-SPLIT-1, SUBD-CATMARK-1 and LOOP-TRIANGLE-1");
@@ -233,10 +231,10 @@ int run_mesh(const Options& o) {
     say(stderr, "vgc certify: --triangulate split {} faces of more than 4 corners into triangles\n",
         mesh.split_faces);
   install_cancel_handlers();
-  auto sut = open_impl_or_report("certify", o.impl, {o.timeout, o.start_timeout}, o.verse_bone_form);
+  auto sut = open_impl_or_report("certify", o.impl);
   if (!sut) return 2;
   register_oracle_checks();
-  say(stderr, "vgc certify: {} on {} ({} vertices, {} triangles, {} quads; up to level {})\n", o.impl,
+  say(stderr, "vgc certify: {} on {} ({} vertices, {} triangles, {} quads; up to level {})\n", o.impl.route.spec,
       one_line_text(o.mesh),
       mesh.vertices, mesh.triangles, mesh.quads, o.levels);
   const auto t0 = std::chrono::steady_clock::now();
@@ -249,13 +247,13 @@ int run_mesh(const Options& o) {
   const RunResult run = mesh_run_result(r, mesh, sut->name(),
                                         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
   ReportContext ctx;
-  ctx.implementation_spec = o.impl;
+  ctx.implementation_spec = o.impl.route.spec;
   ctx.started = started;
   ctx.command_line = vgc_environment_prefix() + program_command() + " certify --mesh " + shell_quote(o.mesh) +
-                     " --impl " + shell_quote(o.impl) + " --levels " + std::to_string(o.levels) +
+                     " --impl " + shell_quote(o.impl.route.spec) + " --levels " + std::to_string(o.levels) +
                      (o.triangulate ? " --triangulate" : "") + (o.clauses != "*" ? " --clauses " + shell_quote(o.clauses) : "") +
                      " --budget " + fmt::format("{:g}", o.budget) +
-                     (o.timeout != 5 ? " --timeout " + fmt::format("{:g}", o.timeout) : "");
+                     (o.impl.timeout != 5 ? " --timeout " + fmt::format("{:g}", o.impl.timeout) : "");
   const Verdict verdict = judge(run, nullptr, o.strict);
   std::string werror;
   if (!claim_run_dir(o.reports, run, &ctx, &werror) || !write_report(o.reports, run, verdict, ctx, &werror)) {
@@ -291,7 +289,8 @@ int run_mesh(const Options& o) {
   const char* verdict_name = verdict.name == "not-conformant" ? "not conformant"
                              : verdict.name == "incomplete"  ? "incomplete"
                                                              : "conformant";
-  say("{}: {} on {} ({})\n", o.impl, verdict_name, one_line_text(o.mesh), counts.empty() ? "no check run" : counts);
+  say("{}: {} on {} ({})\n", o.impl.route.spec, verdict_name, one_line_text(o.mesh),
+      counts.empty() ? "no check run" : counts);
   if (verdict.new_failures.empty() && !checks_judged)
     say("  only the storage of the mesh was judged: the implementation claims none of manifold, subdivision, "
         "normals, loop (docs/adapters.md section 5)\n");
@@ -320,7 +319,7 @@ void print_findings(const RunResult& result, const ReportContext& ctx, const Opt
                                                                : clause_status_name(co.status);
     say("  {:<8} {:<24} {}\n", tag, co.clause->id, co.finding->message);
     say("           replay: {}\n",
-        replay_command((std::filesystem::path(ctx.run_dir) / counterexample_path(co)).string(), o.impl));
+        replay_command((std::filesystem::path(ctx.run_dir) / counterexample_path(co)).string(), o.impl.route.spec));
   }
 }
 
@@ -354,15 +353,18 @@ int run(const Options& o) {
   }
   install_cancel_handlers();
   std::unique_ptr<Implementation> sut =
-      open_impl_or_report("certify", o.impl, {o.timeout, o.start_timeout}, o.verse_bone_form);
+      open_impl_or_report("certify", o.impl);
   if (!sut && !cancel_signal()) return 2;
   if (!sut)  // cancelled while it started: the report says that nothing was judged
     sut = std::make_unique<UnstartedImplementation>(
-        o.impl, std::string("not started: the run was cancelled by ") + cancel_signal_name() + " while it started");
+        o.impl.route.spec,
+        std::string("not started: the run was cancelled by ") + cancel_signal_name() + " while it started");
 
   ReportContext ctx;
-  ctx.implementation_spec = o.impl;
-  if (o.impl.rfind("verse:", 0) == 0) ctx.implementation_identity = sut->identity();  // host, release, bone form
+  ctx.implementation_spec = o.impl.route.spec;
+  // A route whose implementation declares a profile at its start says what
+  // it found (a Verse host: its release and the bone form it speaks).
+  if (o.impl.route.traits().declares_bone_form) ctx.implementation_identity = sut->identity();
   ctx.merge_identity = sut->merge_identity();
   ctx.command_line = rerun_command(o);
   ctx.started = utc_now();
@@ -370,8 +372,8 @@ int run(const Options& o) {
     ctx.baseline = &baseline;
     ctx.baseline_path = o.baseline;
   }
-  say(stderr, "vgc certify: {} (seed {}, {} cases per property, budget {:g} s, shard {})\n", o.impl, o.seed,
-             o.cases, o.budget, o.shard);
+  say(stderr, "vgc certify: {} (seed {}, {} cases per property, budget {:g} s, shard {})\n", o.impl.route.spec,
+      o.seed, o.cases, o.budget, o.shard);
   if (!ctx.implementation_identity.empty()) say(stderr, "vgc certify: {}\n", ctx.implementation_identity);
 
   ProgressLine line(!o.quiet);
@@ -416,7 +418,7 @@ int run(const Options& o) {
     if (status == "pass") passed = n;
     else tally += fmt::format(", {} {}", n, status);
   }
-  say("{}: {} ({} of {} clauses pass{}; {:.1f} s)\n", o.impl, verdict.name, passed, result.clauses.size(),
+  say("{}: {} ({} of {} clauses pass{}; {:.1f} s)\n", o.impl.route.spec, verdict.name, passed, result.clauses.size(),
              tally, result.seconds);
   if (result.preflight)
     say("  the implementation could not show a fresh node: {}: {}\n", result.preflight->clause,
@@ -446,7 +448,8 @@ int run(const Options& o) {
 void add(CLI::App& app, int* exit_code) {
   auto o = std::make_shared<Options>();
   auto* sub = app.add_subcommand("certify", "Certify an implementation of the geometry node against the spec");
-  sub->add_option("--impl", o->impl, "reference | exec:CMD | plugin:PATH | verse:HOST[:PORT]")->capture_default_str();
+  add_impl_options(sub, &o->impl, kTimeout | kStartTimeout | kBoneForm | kRestart,
+                   "reference | exec:CMD | plugin:PATH | verse:HOST[:PORT]");
   auto* seed = sub->add_option("--seed", o->seed, "Seed; the same seed gives the same cases and verdicts")
                    ->capture_default_str()
                    ->transform(whole_number(0, UINT64_MAX, "the run's seed"));
@@ -457,23 +460,10 @@ void add(CLI::App& app, int* exit_code) {
                        ->capture_default_str()
                        ->transform(whole_number(1, kMaxSize, "commands (the RapidCheck size)"));
   sub->add_option("--budget", o->budget,
-                  "CPU seconds of vgc and the implementation it started (a wall-clock guard stops at 10x); a run cut short is 'incomplete' (exit 2)")
+                  "CPU seconds of vgc and the implementation it started (a wall-clock guard stops at 10x); a run cut "
+                  "short is 'incomplete' (exit 2)")
       ->capture_default_str()
       ->transform(seconds("for the whole run"));
-  sub->add_option("--timeout", o->timeout, "Seconds an out-of-process implementation has per answer")
-      ->capture_default_str()
-      ->transform(seconds("per answer"));
-  sub->add_option("--start-timeout", o->start_timeout,
-                  "Seconds an out-of-process implementation has to start (exec: and plugin: the ?hello answer, "
-                  "verse: the login), each time it is started")
-      ->capture_default_str()
-      ->transform(seconds("to start"));
-  auto* bone_form = sub->add_option("--verse-bone-form", o->verse_bone_form,
-                                    "verse: the bone_create form to speak: auto (the form the host answers a probe "
-                                    "in), spec (Verse spec 2.6.3) or r6 (r6's last release; docs/verse_wire.md "
-                                    "section 4)")
-                        ->check(CLI::IsMember({"auto", "spec", "r6"}))
-                        ->capture_default_str();
   sub->add_option("--clauses", o->clauses, "Clause ids to check: comma-separated glob patterns")->capture_default_str();
   auto* baseline = sub->add_option("--baseline", o->baseline, "File of known deviations: CLAUSE-ID reason, one per line");
   sub->add_option("--shard", o->shard, "Run shard I of N (1-based); shards together give the full verdicts")
@@ -496,9 +486,9 @@ void add(CLI::App& app, int* exit_code) {
   for (CLI::Option* generated : {seed, cases, max_size, baseline}) generated->excludes(mesh);
   sub->add_flag("--strict", o->strict,
                 "Also gate on IMPLEMENTATION-DEFINED clauses (the suite's reading of points the spec leaves open)");
-  sub->callback([o, exit_code, bone_form] {
-    if (bone_form->count() && o->impl.rfind("verse:", 0) != 0) {
-      *exit_code = usage("--verse-bone-form is for --impl verse:HOST[:PORT] only; --impl is '" + o->impl + "'");
+  sub->callback([o, exit_code] {
+    if (const std::string misuse = impl_options_misuse(o->impl); !misuse.empty()) {
+      *exit_code = usage(misuse);
       return;
     }
     // Each per-check and verdict line reaches a pipe or a CI log as it is

@@ -42,6 +42,7 @@
 #include "wire_fuzz.h"
 #include "command_binary.h"
 #include "command_text.h"
+#include "open_impl.h"
 #include "option_values.h"
 #include "progress_line.h"
 #include "read_file.h"
@@ -53,6 +54,7 @@ namespace {
 
 struct FuzzArgs {
   fuzz::CampaignOptions campaign;
+  ImplOptions impl;  // --impl and its family (open_impl.h), passed to the campaign as given
   std::string to_text, to_binary, output;
   bool all = false;
   bool cpu_time = false;                  // --cpu-time
@@ -81,7 +83,7 @@ int run_wire(const FuzzArgs& a) {
     return 2;
   }
   fuzz::WireFuzzOptions o;
-  o.impl = c.impl;
+  if (c.impl) o.impl = *c.impl;
   o.time_s = c.time_s;
   o.seed = c.seed;
   o.max_inputs = a.max_inputs;
@@ -97,7 +99,7 @@ int run_wire(const FuzzArgs& a) {
 // per-target times.
 int run_all(const FuzzArgs& a) {
   const fuzz::CampaignOptions& c = a.campaign;
-  if (!c.target.empty() || !c.impl.empty() || !c.baseline.empty() || c.empty_corpus || c.stop_at_first ||
+  if (!c.target.empty() || c.impl || !c.baseline.empty() || c.empty_corpus || c.stop_at_first ||
       c.coverage_report) {
     fmt::print(stderr, "vgc fuzz --all: runs every target on the reference from its committed corpus; a target, "
                        "--impl, --baseline, --empty-corpus, --stop-at-first and --coverage-report are for one campaign\n");
@@ -242,18 +244,9 @@ void add_fuzz(CLI::App& app, int* exit_code) {
   sub->add_option("--targets", a->only, "With --all: only these targets (comma-separated)")->delimiter(',');
   sub->add_option("--work-corpus", a->work_corpus,
                   "With --all: the work corpus directory (default reports/fuzz/work-corpus)");
-  sub->add_option("--impl", o.impl,
-                  "differential, property_<group>: the implementation under test, plugin:PATH; differential also "
-                  "exec:CMD or verse:[NAME@]HOST[:PORT], a running implementation (docs/fuzzing.md)");
-  sub->add_option("--timeout", o.call_timeout_s,
-                  "exec:/verse: seconds the implementation has per answer (default 5); longer is a hang (timeout)")
-      ->transform(seconds("per answer"));
-  sub->add_option("--verse-bone-form", o.verse_bone_form,
-                  "verse: the bone_create form to speak: auto (default), spec or r6 (docs/verse_wire.md section 4)")
-      ->check(CLI::IsMember({"auto", "spec", "r6"}));
-  sub->add_option("--restart", o.restart,
-                  "verse: a shell command that starts a fresh host (and returns once it listens); run before a "
-                  "crash or hang is confirmed on a fresh instance. Without it such findings are reported unconfirmed");
+  add_impl_options(sub, &a->impl, kTimeout | kBoneForm | kRestart,
+                   "differential, property_<group>: the implementation under test, plugin:PATH; differential also "
+                   "exec:CMD or verse:[NAME@]HOST[:PORT], a running implementation (docs/fuzzing.md)");
   sub->add_option("--impl-coverage", o.impl_coverage,
                   "exec: an implementation built with vgc's coverage runtime: guide (default; its edges steer "
                   "libFuzzer), guide-counts (edges and hit counts), observe (counted, not steering) or off")
@@ -280,7 +273,15 @@ void add_fuzz(CLI::App& app, int* exit_code) {
   sub->add_option("--to-text", a->to_text, "Print the binary stream FILE as a command file");
   sub->add_option("--to-binary", a->to_binary, "Encode the command file FILE as a binary stream (-o OUT)");
   sub->add_option("-o,--output", a->output, "Output file of --to-text / --to-binary");
-  sub->callback([a, exit_code] { *exit_code = run_fuzz(*a); });
+  sub->callback([a, exit_code] {
+    // The family's values as the campaign takes them: only what was given.
+    fuzz::CampaignOptions& c = a->campaign;
+    if (a->impl.impl_given) c.impl = a->impl.route;
+    if (a->impl.timeout_given) c.call_timeout_s = a->impl.timeout;
+    if (a->impl.bone_form_given) c.verse_bone_form = a->impl.verse_bone_form;
+    c.restart = a->impl.restart;
+    *exit_code = run_fuzz(*a);
+  });
 }
 
 const Subcommand kFuzz{add_fuzz};

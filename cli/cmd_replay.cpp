@@ -42,25 +42,22 @@ namespace {
 
 struct Options {
   std::string file;
-  std::string impl = "reference";
-  double timeout = 5;
-  double start_timeout = 60;  // --start-timeout
-  std::string verse_bone_form = "auto";  // --verse-bone-form
+  ImplOptions impl;  // --impl and its family (open_impl.h)
   bool strict = false;  // as certify --strict: IMPLEMENTATION-DEFINED readings gate
   bool wire = false;    // the file is a `vgc fuzz wire` transcript (fuzz/wire_fuzz.h)
 };
 
 int run(const Options& o) {
   if (o.wire) {
-    if (o.impl.rfind("verse:", 0) != 0) {
+    if (o.impl.route.kind != RouteKind::Verse) {
       say(stderr, "vgc replay --wire: a wire transcript is sent to a Verse host: --impl verse:HOST[:PORT]\n");
       return 2;
     }
     fuzz::WireFuzzOptions w;
-    w.impl = o.impl;
-    w.timeout_s = o.timeout;
-    w.login_timeout_s = o.start_timeout;
-    if (o.verse_bone_form != "auto") w.verse_bone_form = o.verse_bone_form;
+    w.impl = o.impl.route;
+    w.timeout_s = o.impl.timeout;
+    w.login_timeout_s = o.impl.start_timeout;
+    if (o.impl.verse_bone_form != "auto") w.verse_bone_form = o.impl.verse_bone_form;
     return fuzz::replay_wire_transcript(o.file, w);
   }
   std::string text;
@@ -79,7 +76,7 @@ int run(const Options& o) {
     say(stderr, "{}:{}:{}: error: {}\n", o.file, error.line, error.column, error.message);
     return 2;
   }
-  auto sut = open_impl_or_report("replay", o.impl, {o.timeout, o.start_timeout}, o.verse_bone_form);
+  auto sut = open_impl_or_report("replay", o.impl);
   if (!sut) return 2;
   register_oracle_checks();  // as certify: the oracles judge the capability checks
   // A user's mesh is judged as certify --mesh judged it (same requests).
@@ -102,17 +99,17 @@ int run(const Options& o) {
     if (should_not_met)
       say("{}: agrees with the reference on all {} commands of {} but for {} SHOULD clause(s) not met "
                  "(above; the verdict stands)\n",
-                 o.impl, program.commands.size(), o.file, should_not_met);
+                 o.impl.route.spec, program.commands.size(), o.file, should_not_met);
     else
-      say("{}: agrees with the reference on all {} commands of {}\n", o.impl, program.commands.size(),
+      say("{}: agrees with the reference on all {} commands of {}\n", o.impl.route.spec, program.commands.size(),
                  o.file);
     if (!program.request) return 0;
     if (!r.not_judged.empty()) {
       say("{}:{}: cannot repeat the capability check: {}\n", o.file, directive_line, r.not_judged);
       return 2;
     }
-    say("{}: passes the check of capability \"{}\" (variant {}) of {}\n", o.impl, program.request->capability,
-               program.request->variant, capability_clauses(program.request->capability));
+    say("{}: passes the check of capability \"{}\" (variant {}) of {}\n", o.impl.route.spec,
+        program.request->capability, program.request->variant, capability_clauses(program.request->capability));
     return 0;
   }
   const Clause* clause = find_clause(r.failure->clause);
@@ -159,28 +156,17 @@ void add(CLI::App& app, int* exit_code) {
   auto o = std::make_shared<Options>();
   auto* sub = app.add_subcommand("replay", "Replay a counterexample command file against an implementation");
   sub->add_option("file", o->file, "Command file (a counterexample from reports/, or any command file)")->required();
-  sub->add_option("--impl", o->impl, "reference | exec:CMD | plugin:PATH | verse:HOST[:PORT]")->capture_default_str();
-  sub->add_option("--timeout", o->timeout, "Seconds an out-of-process implementation has per answer")
-      ->capture_default_str()
-      ->transform(seconds("per answer"));
-  sub->add_option("--start-timeout", o->start_timeout,
-                  "Seconds an out-of-process implementation has to start (its ?hello answer, a Verse login)")
-      ->capture_default_str()
-      ->transform(seconds("to start"));
-  auto* bone_form = sub->add_option("--verse-bone-form", o->verse_bone_form,
-                  "verse: the bone_create form to speak: auto (the form the host answers a probe in), spec "
-                  "(Verse spec 2.6.3) or r6 (r6's last release; docs/verse_wire.md section 4)")
-      ->check(CLI::IsMember({"auto", "spec", "r6"}))
-      ->capture_default_str();
+  add_impl_options(sub, &o->impl, kTimeout | kStartTimeout | kBoneForm,
+                   "reference | exec:CMD | plugin:PATH | verse:HOST[:PORT]");
   sub->add_flag("--wire", o->wire,
                 "FILE is a `vgc fuzz wire` transcript: send its packets again to a fresh node of --impl "
                 "verse:HOST and check the host answers and holds what it acknowledged (exit 1 when not)");
   sub->add_flag("--strict", o->strict,
                 "Say the verdict as certify --strict would (IMPLEMENTATION-DEFINED readings gate); the exit "
                 "code is the same");
-  sub->callback([o, exit_code, bone_form] {
-    if (bone_form->count() && o->impl.rfind("verse:", 0) != 0) {
-      say(stderr, "vgc replay: --verse-bone-form is for --impl verse:HOST[:PORT] only; --impl is '{}'\n", o->impl);
+  sub->callback([o, exit_code] {
+    if (const std::string misuse = impl_options_misuse(o->impl); !misuse.empty()) {
+      say(stderr, "vgc replay: {}\n", misuse);
       *exit_code = 2;
       return;
     }

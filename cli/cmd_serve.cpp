@@ -38,6 +38,8 @@
 #include "capability_documents.h"
 #include "command_text.h"
 #include "implementation.h"
+#include "open_impl.h"
+#include "route.h"
 #include "subcommand.h"
 #include "verse_host.h"
 
@@ -45,7 +47,7 @@ namespace vgc::cli {
 namespace {
 
 struct ServeOptions {
-  std::string impl = "reference";
+  ImplOptions impl;  // --impl (open_impl.h); a plugin is loaded in this process
   bool done = false;  // answer every command "done" (verdict not reported)
   std::string verse;  // [ADDR:]PORT: serve as a Verse host instead
   bool like_r6 = false;  // --like-r6: reuse node ids, read and send bone_create in r6's form, strictly
@@ -113,13 +115,13 @@ int run_verse(const ServeOptions& o) {
   }
   OpenOptions options;
   options.isolate_plugin = false;
-  if (!open_implementation(o.impl, options, &error)) {  // fail now, not at the first node_create
+  if (!open_route(o.impl.route, options, &error)) {  // fail now, not at the first node_create
     fmt::print(stderr, "vgc serve: {}\n", error);
     return 2;
   }
-  const std::string spec = o.impl;
-  h.make_node = [spec, options](std::string* err) -> std::unique_ptr<verse::HostedNode> {
-    std::unique_ptr<Implementation> impl = open_implementation(spec, options, err);
+  const Route route = o.impl.route;
+  h.make_node = [route, options](std::string* err) -> std::unique_ptr<verse::HostedNode> {
+    std::unique_ptr<Implementation> impl = open_route(route, options, err);
     if (!impl) return nullptr;
     return std::make_unique<ImplementationNode>(std::move(impl));
   };
@@ -210,7 +212,7 @@ int run_serve(const ServeOptions& o) {
   OpenOptions options;
   options.isolate_plugin = false;  // we are the isolation
   std::string error;
-  std::unique_ptr<Implementation> impl = open_implementation(o.impl, options, &error);
+  std::unique_ptr<Implementation> impl = open_route(o.impl.route, options, &error);
   if (!impl) {
     fmt::print(stderr, "vgc serve: {}\n", error);
     return 2;
@@ -228,7 +230,7 @@ void add_serve(CLI::App& app, int* exit_code) {
   auto opts = std::make_shared<ServeOptions>();
   CLI::App* sub = app.add_subcommand(
       "serve", "Serve a node over the exec protocol on stdin/stdout (docs/adapters.md)");
-  sub->add_option("--impl", opts->impl, "What to serve: reference (default) or plugin:PATH (loaded in this process)");
+  add_impl_options(sub, &opts->impl, 0, "What to serve: reference (default) or plugin:PATH (loaded in this process)");
   auto* done = sub->add_flag("--done", opts->done,
                 "Answer every command \"done\" (processed, verdict not reported), as a host on the Verse wire "
                 "reports nothing (docs/adapters.md)");

@@ -17,28 +17,16 @@
 #include <string>
 #include <utility>
 
-#include "implementation.h"
+#include "forwarding_implementation.h"
 
 namespace vgc::cli {
 
-class UnstartedImplementation final : public Implementation {
+// Forwards to nothing: every call fails as a crash with `why`, sending
+// nothing (forwarding_implementation.h).
+class UnstartedImplementation final : public ForwardingImplementation {
  public:
-  UnstartedImplementation(std::string name, std::string why) : name_(std::move(name)), why_(std::move(why)) {}
-  std::string name() const override { return name_; }
-  Answer reset() override { return failed(); }
-  Answer apply(const Command&) override { return failed(); }
-  Document snapshot() override { return {CallStatus::Crash, {}, why_}; }
-  Document derived() override { return {CallStatus::Crash, {}, why_}; }
-
- private:
-  Answer failed() const {
-    Answer a;
-    a.status = CallStatus::Crash;
-    a.detail = why_;
-    return a;
-  }
-  std::string name_;
-  std::string why_;
+  UnstartedImplementation(std::string name, std::string why)
+      : ForwardingImplementation(nullptr, std::move(name), std::move(why)) {}
 };
 
 }  // namespace vgc::cli

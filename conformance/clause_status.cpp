@@ -6,6 +6,7 @@
 #include "attribution.h"
 #include "confirm_finding.h"
 #include "property.h"
+#include "route_limit_clauses.h"
 
 namespace vgc {
 namespace {
@@ -84,8 +85,8 @@ std::optional<ClauseDecision> decided_by_reach(const ClauseEvidence& e) {
 }  // namespace
 
 std::string route_limit_of(std::string_view clause_id, const RouteLimits& limits) {
-  if (auto it = limits.clauses.find(std::string(clause_id)); it != limits.clauses.end())
-    return "not judgeable over " + limits.route + ": " + it->second;
+  if (const std::string why = route_cannot_judge(clause_id, limits); !why.empty())
+    return "not judgeable over " + limits.route + ": " + why;
   const auto& derived = derived_only_clauses();
   if (!limits.derived && std::find(derived.begin(), derived.end(), clause_id) != derived.end())
     return "not judgeable over " + limits.route + ": only the derived document (bone world poses) decides it, and " +

@@ -29,6 +29,7 @@
 #include <string>
 #include <vector>
 
+#include "forwarding_implementation.h"
 #include "implementation.h"
 #include "program.h"
 
@@ -38,24 +39,13 @@ namespace vgc {
 // the instance running now since it started, one list per case (a case
 // starts at each reset()); a new instance (Implementation::instance())
 // starts a new history.
-class HistoryRecorder final : public Implementation {
+class HistoryRecorder final : public ForwardingImplementation {
  public:
-  explicit HistoryRecorder(Implementation& sut) : sut_(sut), instance_(sut.instance()) {}
-  std::string name() const override { return sut_.name(); }
-  std::string identity() const override { return sut_.identity(); }
-  RouteLimits limits() const override { return sut_.limits(); }
+  explicit HistoryRecorder(Implementation& sut)
+      : ForwardingImplementation(&sut), sut_(sut), instance_(sut.instance()) {}
   Answer reset() override;
   Answer restart() override;
-  std::uint64_t instance() const override { return sut_.instance(); }
   Answer apply(const Command& c) override;
-  Document snapshot() override { return sut_.snapshot(); }
-  Document derived() override { return sut_.derived(); }
-  Document request(const std::string& line) override { return sut_.request(line); }
-  bool offers_digest() override { return sut_.offers_digest(); }
-  DigestAnswer digest() override { return sut_.digest(); }
-  bool offers_late_view() override { return sut_.offers_late_view(); }
-  void use_late_view(bool on) override { sut_.use_late_view(on); }
-  std::string late_view_wrong_format() override { return sut_.late_view_wrong_format(); }
 
   // The commands since the running instance started, case by case.
   const std::vector<std::vector<Command>>& history() const { return history_; }

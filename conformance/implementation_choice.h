@@ -19,10 +19,12 @@
 // clause's own level (an IMPLEMENTATION-DEFINED reading or a SHOULD), never
 // as a failure of another clause. check_step does this when its caller
 // passes follow_choices (a caller that starts the next step from the model
-// check_step returns); run_certification and replay_program do not yet, so
-// there a different pick stays a failure at the id clause. Not covered: a pick whose id changes the
-// verdict (a bone whose picked id would close a cycle in one choice and not
-// in the other), and the other visible choice the spec leaves, whether a
+// check_step returns): run_certification and replay_program (so `vgc
+// replay` and fuzz_differential too) do, through ProgramChecker, so there a
+// different pick is the note, not a failure at the id clause. Not covered:
+// a pick whose id changes the verdict (a bone whose picked id would close a
+// cycle in one choice and not in the other), and the other visible choice
+// the spec leaves, whether a
 // deleted vertex's polygons go with it (POLY-VERTEX-DELETE-1), which the
 // model cannot represent (its polygons always name live vertices).
 #pragma once

@@ -34,6 +34,7 @@
 #include "exec_implementation.h"
 #include "coverage_record.h"
 #include "live_implementation.h"
+#include "restartable_host.h"
 #include "minimize_finding.h"
 #include "minimize_input.h"
 #include "sign_budget.h"
@@ -387,9 +388,13 @@ std::optional<double> seconds_since(const fs::path& f, fs::file_time_type start)
 // VGC_FUZZ_RESTART) for a live one (fuzz/live_implementation.h).
 struct ImplementationChoice {
   std::string plugin;             // absolute path, or ""
-  std::string live;               // exec:CMD or verse:..., or ""
+  std::optional<Route> live;      // exec:CMD or verse:..., or none
   std::vector<std::string> env;   // NAME=value
-  std::string spec() const { return !live.empty() ? live : plugin.empty() ? "reference" : "plugin:" + plugin; }
+  std::string spec() const {
+    return live ? live->spec : plugin.empty() ? "reference" : route_spec(RouteKind::Plugin, plugin);
+  }
+  // Whether the live implementation is of `kind`.
+  bool live_on(RouteKind kind) const { return live && live->kind == kind; }
 };
 
 bool is_implementation_variable(const std::string& v) {
@@ -402,18 +407,19 @@ bool is_implementation_variable(const std::string& v) {
 
 bool choose_implementation(const CampaignOptions& o, const std::string& name, bool property,
                            ImplementationChoice* out) {
-  const bool live = o.impl.rfind("exec:", 0) == 0 || o.impl.rfind("verse:", 0) == 0;
+  const bool live = o.impl && !o.impl->traits().in_process;
+  const bool exec = o.impl && o.impl->kind == RouteKind::Exec;
   if (o.impl_coverage != "guide" && o.impl_coverage != "guide-counts" && o.impl_coverage != "observe" &&
       o.impl_coverage != "off") {
     fmt::print(stderr, "vgc fuzz: --impl-coverage takes guide, guide-counts, observe or off, not '{}'\n",
                o.impl_coverage);
     return false;
   }
-  if (o.impl_coverage != "guide" && o.impl.rfind("exec:", 0) != 0) {
+  if (o.impl_coverage != "guide" && !exec) {
     fmt::print(stderr, "vgc fuzz: --impl-coverage is for --impl exec:CMD (a program vgc starts)\n");
     return false;
   }
-  if (o.coverage_report && (o.impl.rfind("exec:", 0) != 0 || o.impl_coverage == "off")) {
+  if (o.coverage_report && (!exec || o.impl_coverage == "off")) {
     fmt::print(stderr, "vgc fuzz: --coverage-report is for --impl exec:CMD with its coverage on (not "
                        "--impl-coverage off)\n");
     return false;
@@ -422,36 +428,36 @@ bool choose_implementation(const CampaignOptions& o, const std::string& name, bo
     fmt::print(stderr, "vgc fuzz: --timeout, --verse-bone-form and --restart are for --impl exec:CMD or verse:HOST\n");
     return false;
   }
-  if (!o.restart.empty() && o.impl.rfind("verse:", 0) != 0) {
+  if (!o.restart.empty() && o.impl->traits().restartable) {
     fmt::print(stderr, "vgc fuzz: --restart is for --impl verse:HOST (an exec: program is restarted by vgc)\n");
     return false;
   }
-  if (o.impl.empty() || o.impl == "reference") return true;
+  if (!o.impl || o.impl->kind == RouteKind::Reference) return true;
   if (live) {
     if (name != "differential") {
       fmt::print(stderr, "vgc fuzz: --impl {} (a live implementation) is for the differential target only\n",
-                 o.impl.substr(0, o.impl.find(':')) + ":...");
+                 o.impl->form());
       return false;
     }
     out->live = o.impl;
-    out->env.push_back("VGC_FUZZ_IMPL=" + o.impl);
+    out->env.push_back("VGC_FUZZ_IMPL=" + o.impl->spec);
     if (o.call_timeout_s > 0) out->env.push_back(fmt::format("VGC_FUZZ_TIMEOUT={}", o.call_timeout_s));
     if (!o.verse_bone_form.empty()) out->env.push_back("VGC_FUZZ_VERSE_BONE_FORM=" + o.verse_bone_form);
     if (!o.restart.empty()) out->env.push_back("VGC_FUZZ_RESTART=" + o.restart);
     // The implementation's own coverage (live_coverage.h; exec: only).
-    if (o.impl_coverage != "guide" && o.impl.rfind("exec:", 0) == 0)
+    if (o.impl_coverage != "guide" && exec)
       out->env.push_back("VGC_FUZZ_IMPL_COVERAGE=" + o.impl_coverage);
     // Known deviations do not stop libFuzzer (live_implementation.h).
     if (!o.baseline.empty()) out->env.push_back("VGC_FUZZ_BASELINE=" + fs::absolute(o.baseline).string());
     return true;
   }
-  if ((name != "differential" && !property) || o.impl.rfind("plugin:", 0) != 0) {
+  if ((name != "differential" && !property) || o.impl->kind != RouteKind::Plugin) {
     fmt::print(stderr,
                "vgc fuzz: --impl takes plugin:PATH (or reference) for the differential and property targets, or "
                "exec:CMD / verse:HOST[:PORT] for the differential target\n");
     return false;
   }
-  out->plugin = fs::absolute(o.impl.substr(7)).string();
+  out->plugin = fs::absolute(o.impl->target).string();
   if (!fs::exists(out->plugin)) {
     fmt::print(stderr, "vgc fuzz: no such plugin {}: give --impl plugin:PATH the path of your plugin's shared library\n",
                out->plugin);
@@ -585,7 +591,7 @@ std::optional<std::string> printed_block(const CampaignRun& r, const std::string
 std::string rerun_input(const CampaignRun& r, const fs::path& f) {
   // A live implementation's input also starts it (a process, a login) and
   // confirms a crash on a fresh instance inside the target: more time.
-  return run_capture(std::string(r.impl.live.empty() ? "timeout 5" : "timeout 60") + " env " +
+  return run_capture(std::string(!r.impl.live ? "timeout 5" : "timeout 60") + " env " +
                      env_prefix(r.target_env) + shell_quote(r.binary.string()) + " " + shell_quote(f.string()) +
                      " 2>&1");
 }
@@ -708,7 +714,7 @@ int claim_run_directory(CampaignRun* r) {
 // spent (a fork-mode job logs in again every few seconds and first re-runs
 // its share of the corpus: 50 instead of 140 exec/s against `vgc serve
 // --verse`; docs/fuzzing.md "Throughput of a live implementation").
-bool live_rounds(const CampaignRun& r) { return !r.impl.live.empty() && r.s.jobs == 1 && !r.o.stop_at_first; }
+bool live_rounds(const CampaignRun& r) { return r.impl.live && r.s.jobs == 1 && !r.o.stop_at_first; }
 
 // libFuzzer's command line. One job stopping at the first finding runs
 // libFuzzer in its plain mode, which stops there by itself (so do the
@@ -729,7 +735,7 @@ std::vector<std::string> libfuzzer_argv(const CampaignRun& r) {
                                    // longer than most campaigns). A live implementation's
                                    // own hangs are bounded by the call time-out and
                                    // confirmed on a fresh instance inside the input: more time.
-                                   r.impl.live.empty() ? "-timeout=10" : "-timeout=120"};
+                                   !r.impl.live ? "-timeout=10" : "-timeout=120"};
   if (!o.stop_at_first && !rounds) argv.insert(argv.begin() + 2, "-ignore_crashes=1");
   // A live implementation runs in its own process: what LeakSanitizer could
   // find in the fuzzer is the adapter's state, which outlives every input
@@ -738,7 +744,7 @@ std::vector<std::string> libfuzzer_argv(const CampaignRun& r) {
   // input and ran a leak scan each time: 27% of the time against `vgc
   // serve --verse`, 206 instead of 1200 exec/s against `vgc serve` over
   // exec (docs/fuzzing.md "Throughput of a live implementation").
-  if (!r.impl.live.empty()) argv.push_back("-detect_leaks=0");
+  if (r.impl.live) argv.push_back("-detect_leaks=0");
   const fs::path dict = r.src / "corpora" / "fuzz" / (r.s.target + ".dict");
   if (fs::exists(dict)) argv.push_back("-dict=" + dict.string());
   argv.push_back(r.corpus.string());
@@ -806,7 +812,7 @@ void run_libfuzzer(CampaignRun* r) {
   // An exec: implementation's coverage records go to the run's directory
   // (for the fuzzing only: a re-run of a saved input adds nothing to them).
   std::vector<std::string> env = r->env_add;
-  if (r->impl.live.rfind("exec:", 0) == 0 && o.impl_coverage != "off") {
+  if (r->impl.live_on(RouteKind::Exec) && o.impl_coverage != "off") {
     std::error_code ec;
     fs::create_directories(r->dir / "implementation_coverage", ec);
     env.push_back("VGC_FUZZ_IMPL_COVERAGE_DIR=" + (r->dir / "implementation_coverage").string());
@@ -847,7 +853,7 @@ std::map<std::string, CrashGroup> sign_crash_inputs(CampaignRun* r) {
   // A live implementation costs a process or a login per input re-run:
   // its inputs get half the budget, so that the unique findings are still
   // minimized and replayed on a fresh instance in the other half.
-  const bool live = !r->impl.live.empty();
+  const bool live = bool(r->impl.live);
   for (const fs::path& f : saved) {
     if (s.crash_inputs_signed >= 200) break;
     if (live ? r->sign.half_spent() : r->sign.spent()) {
@@ -861,7 +867,7 @@ std::map<std::string, CrashGroup> sign_crash_inputs(CampaignRun* r) {
     // again (it depended on the instance's history or on timing; the
     // target's own confirmation says which in fuzzer.log): said so, not
     // "unknown".
-    if (!r->impl.live.empty() && sig.key == "unknown" && output.find("FINDING") == std::string::npos)
+    if (r->impl.live && sig.key == "unknown" && output.find("FINDING") == std::string::npos)
       sig = {"not reproduced", "not reproduced: the input alone, re-run on a fresh instance, showed nothing (the "
                                "finding depended on the implementation's history or timing; its FINDING line is in "
                                "fuzzer.log)"};
@@ -1003,7 +1009,7 @@ void write_program_counterexample(const CampaignRun& r, const CrashGroup& g, con
   const bool call_failure = status == "crash" || status == "timeout";
   // A wire host that crashed or hung cannot be replayed on a fresh
   // instance without the user's restart command.
-  const bool wire = r.impl.live.rfind("verse:", 0) == 0;
+  const bool wire = r.impl.live && !r.impl.live->traits().restartable;
   const bool confirmable = !call_failure || !wire || !o.restart.empty();
   if (!c->clause.empty() && !r.sign.spent() && !(call_failure && wire)) {
     // Minimized as certify shrinks, before it is written (minimize_finding.h);
@@ -1162,8 +1168,8 @@ void write_function_report(CampaignRun* r, const CoverageTotals& t) {
 // processes (coverage_record.h).
 void count_implementation_coverage(CampaignRun* r) {
   CampaignSummary& s = r->s;
-  if (r->impl.live.rfind("verse:", 0) == 0) s.impl_coverage_mode = "wire";
-  if (r->impl.live.rfind("exec:", 0) != 0) return;
+  if (r->impl.live_on(RouteKind::Verse)) s.impl_coverage_mode = "wire";
+  if (!r->impl.live_on(RouteKind::Exec)) return;
   s.impl_coverage_mode = r->o.impl_coverage;
   if (r->o.impl_coverage == "off") return;
   const CoverageTotals t = merge_coverage_records((r->dir / "implementation_coverage").string());

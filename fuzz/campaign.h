@@ -30,6 +30,8 @@
 #include <utility>
 #include <vector>
 
+#include "route.h"
+
 namespace vgc::fuzz {
 
 struct CampaignOptions {
@@ -40,9 +42,11 @@ struct CampaignOptions {
   // a shared machine gets its budget however busy the machine is.
   double cpu_time_s = 0;
   int jobs = 1;               // libFuzzer -fork=N
-  std::string impl;           // "", "reference" or "plugin:PATH" (differential, property_*);
-                              // exec:CMD or verse:HOST[:PORT] (differential: a live implementation,
-                              // fuzz/live_implementation.h)
+  // --impl, read (route.h): none (the reference), "reference" or a plugin
+  // (differential, property_*; loaded into the target's process), or a route
+  // that is not in process, exec:CMD or verse:HOST[:PORT] (differential: a
+  // live implementation, fuzz/live_implementation.h).
+  std::optional<Route> impl;
   // A live implementation (exec:, verse:): seconds per call (0: 5), the
   // bone_create form of a Verse host ("": auto), and for verse: a shell
   // command that starts a fresh host, run before a finding is confirmed

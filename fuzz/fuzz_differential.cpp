@@ -124,13 +124,13 @@ extern "C" int LLVMFuzzerInitialize(int*, char***) {
   std::string error;
   g_live = vgc::fuzz::live_options_from_environment();
   if (!g_live.spec.empty()) {
-    g_coverage = vgc::fuzz::LiveCoverage::for_implementation(g_live.spec, kTarget);
+    if (g_live.route) g_coverage = vgc::fuzz::LiveCoverage::for_implementation(*g_live.route, kTarget);
     g_sut = vgc::fuzz::open_live_implementation(g_live, &error);
     if (g_sut && g_coverage) g_coverage->started();
   } else if (path && *path) {
     vgc::OpenOptions o;
     o.isolate_plugin = false;  // in process: a crash of the plugin is a crash of the fuzzer
-    g_sut = vgc::open_implementation(std::string("plugin:") + path, o, &error);
+    g_sut = vgc::open_implementation(vgc::route_spec(vgc::RouteKind::Plugin, path), o, &error);
   } else {
     g_sut = vgc::PluginImplementation::wrap(vgc::fuzz::reference_plugin_table(vgc::fuzz::PluginFault::None),
                                             "reference-plugin-table", &error);
@@ -155,13 +155,14 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   }
   if (!g_live.spec.empty()) remember(commands);
   if (g_coverage) g_coverage->before_input();
-  // A host on the Verse wire is checked step by step from the start: the
-  // fast path compares a derived document, which the wire does not carry
-  // (RouteLimits), so every input would take the exact path anyway, and
-  // after a host that died in the fast pass there would be no host left to
-  // re-run on (the finding would be the next login's timeout, unattributed).
-  const ReplayResult r = g_live.spec.rfind("verse:", 0) == 0 ? check_program_exact(commands, *g_sut)
-                                                             : check_program_fast(commands, *g_sut).replay;
+  // A route that carries no derived document (a host on the Verse wire) is
+  // checked step by step from the start: the fast path compares a derived
+  // document, which the route does not carry (RouteLimits), so every input
+  // would take the exact path anyway, and after a host that died in the
+  // fast pass there would be no host left to re-run on (the finding would be
+  // the next login's timeout, unattributed).
+  const bool exact = g_live.route && !g_live.route->traits().derived_documents;
+  const ReplayResult r = exact ? check_program_exact(commands, *g_sut) : check_program_fast(commands, *g_sut).replay;
   if (r.failure) {
     const std::size_t upto = r.failed_at < 0 ? 0 : static_cast<std::size_t>(r.failed_at) + 1;
     commands.resize(std::min(upto, commands.size()));

@@ -21,8 +21,8 @@ double unix_now() {
 
 }  // namespace
 
-std::unique_ptr<LiveCoverage> LiveCoverage::for_implementation(const std::string& spec, const char* target) {
-  if (spec.rfind("exec:", 0) != 0) return nullptr;
+std::unique_ptr<LiveCoverage> LiveCoverage::for_implementation(const Route& route, const char* target) {
+  if (route.kind != RouteKind::Exec) return nullptr;
   const char* mode = std::getenv("VGC_FUZZ_IMPL_COVERAGE");
   const std::string m = mode && *mode ? mode : "guide";
   if (m == "off") return nullptr;

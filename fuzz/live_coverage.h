@@ -33,15 +33,17 @@
 
 #include "coverage_record.h"
 #include "coverage_region.h"
+#include "route.h"
 
 namespace vgc::fuzz {
 
 class LiveCoverage {
  public:
-  // For a live implementation's spec: nullptr when it is not exec:, when
+  // For a live implementation's route: nullptr when it is not exec: (a
+  // program vgc starts, with the region in its environment), when
   // VGC_FUZZ_IMPL_COVERAGE=off, or when the region cannot be made (said
   // on stderr). Call before the implementation starts.
-  static std::unique_ptr<LiveCoverage> for_implementation(const std::string& spec, const char* target);
+  static std::unique_ptr<LiveCoverage> for_implementation(const Route& route, const char* target);
   ~LiveCoverage();  // finish()
 
   // After the implementation has started: one line on stderr, what is seen.

@@ -14,20 +14,26 @@
 // VGC_FUZZ_RESTART a shell command that starts a fresh instance of a wire
 // host. A fresh instance of an exec program is a new process (restart());
 // a host on the wire is a server vgc did not start: only the user's restart
-// command can give a fresh one, and without it a crash or hang is reported
-// as not confirmed (LiveOptions::restart empty).
+// command can give a fresh one (restartable_host.h, as for certify), and
+// without it a crash or hang is reported as not confirmed
+// (LiveOptions::restart empty). The spec is read once into a Route
+// (route.h), whose traits decide the rest.
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <set>
 #include <string>
 
 #include "implementation.h"
+#include "route.h"
 
 namespace vgc::fuzz {
 
 struct LiveOptions {
-  std::string spec;             // exec:CMD or verse:[NAME@]HOST[:PORT]
+  std::string spec;             // exec:CMD or verse:[NAME@]HOST[:PORT]; "" none
+  std::optional<Route> route;   // spec, read (nullopt: none, or route_error says why not)
+  std::string route_error;
   double timeout_s = 5;         // per call
   std::string verse_bone_form;  // "" = auto
   std::string restart;          // verse: shell command starting a fresh host; "" none
@@ -39,21 +45,20 @@ struct LiveOptions {
   std::set<std::string> tolerated;
 };
 
-// The options from VGC_FUZZ_IMPL, VGC_FUZZ_TIMEOUT, VGC_FUZZ_VERSE_BONE_FORM
-// and VGC_FUZZ_RESTART; spec empty when VGC_FUZZ_IMPL is unset.
+// The options from VGC_FUZZ_IMPL (read into a Route), VGC_FUZZ_TIMEOUT,
+// VGC_FUZZ_VERSE_BONE_FORM and VGC_FUZZ_RESTART; spec empty when
+// VGC_FUZZ_IMPL is unset.
 LiveOptions live_options_from_environment();
 
-// Opens o.spec (exec: or verse: only). For verse: with a restart command,
-// the implementation's restart() runs it (bounded: 60 s) and logs in to the
-// new host (retried for up to 15 s). nullptr with *error otherwise.
+// Opens o.route (a route that is not in process: exec: or verse:). With a
+// restart command, the implementation's restart() runs it (bounded: 60 s)
+// and logs in to the new host (retried for up to 15 s; restartable_host.h).
+// nullptr with *error otherwise.
 std::unique_ptr<Implementation> open_live_implementation(const LiveOptions& o, std::string* error);
 
-// Whether a finding against `o` can be confirmed on a fresh instance:
-// exec: always (a new process); verse: only with a restart command.
+// Whether a finding against `o` can be confirmed on a fresh instance: on a
+// route vgc restarts by itself (exec: a new process), or with a restart
+// command (verse:).
 bool can_confirm_on_fresh_instance(const LiveOptions& o);
-
-// Runs `command` with /bin/sh -c, at most `limit_s` seconds (then its
-// process group is killed). true when it exited 0; *why otherwise.
-bool run_restart_command(const std::string& command, double limit_s, std::string* why);
 
 }  // namespace vgc::fuzz

@@ -31,6 +31,7 @@
 #include "report_finding.h"
 #include "implementation.h"
 #include "reference_implementation.h"
+#include "route.h"
 
 #if !defined(VGC_FUZZ_PROPERTY) || !defined(VGC_FUZZ_TARGET)
 #error "VGC_FUZZ_PROPERTY must name a property of conformance/property_catalog.cpp, VGC_FUZZ_TARGET the binary"
@@ -53,7 +54,7 @@ void init() {
     vgc::OpenOptions o;
     o.isolate_plugin = false;
     std::string error;
-    g_sut = vgc::open_implementation(std::string("plugin:") + plugin, o, &error);
+    g_sut = vgc::open_implementation(vgc::route_spec(vgc::RouteKind::Plugin, plugin), o, &error);
     if (!g_sut) {
       std::fprintf(stderr, "vgc-fuzz: %s\n", error.c_str());
       std::exit(2);

@@ -23,8 +23,10 @@
 #include "command_text.h"
 #include "display_text.h"
 #include "document_diff.h"
+#include "forwarding_implementation.h"
 #include "snapshot.h"
 #include "live_implementation.h"
+#include "restartable_host.h"
 #include "node.h"
 #include "verse_client.h"
 #include "verse_implementation.h"
@@ -550,19 +552,22 @@ bool login_hostile(Session* s, const WireFuzzOptions& o, std::string* why) {
 std::optional<std::string> open_session(Session* s, const WireFuzzOptions& o) {
   std::string error;
   s->sut = nullptr;
-  s->owner = open_implementation(o.impl, open_options(o), &error);
+  if (o.impl.kind != RouteKind::Verse)
+    return "'" + o.impl.spec + "' is not a Verse host (vgc fuzz wire takes verse:HOST[:PORT])";
+  s->owner = open_route(o.impl, open_options(o), &error);
   if (!s->owner) return error;
   s->sut = dynamic_cast<VerseImplementation*>(s->owner.get());
-  if (!s->sut) return "'" + o.impl + "' is not a Verse host (vgc fuzz wire takes verse:HOST[:PORT])";
-  std::string name;
-  if (!parse_verse_address(o.impl.substr(6), &s->login, &s->host, &s->port, &error)) return error;
+  if (!s->sut) return "'" + o.impl.spec + "' is not a Verse host (vgc fuzz wire takes verse:HOST[:PORT])";
+  s->login = o.impl.login;
+  s->host = o.impl.host;
+  s->port = o.impl.port;
   s->model = Node();
   for (const Command& c : base_program()) {
     Node after;
     const StepResult r = check_step(s->model, c, *s->sut, &after);
     if (r.failure)
       return "the host fails the base program (`" + print_command(c) + "`: " + r.failure->clause + " " +
-             r.failure->message + "): certify it first (vgc certify --impl " + o.impl + ")";
+             r.failure->message + "): certify it first (vgc certify --impl " + o.impl.spec + ")";
     s->model = std::move(after);
   }
   if (!login_hostile(s, o, &error)) return error;
@@ -613,18 +618,10 @@ std::vector<Command> send_input(Session* s, const WireInput& in) {
 // changes nothing through the adapter instead, which waits for the
 // host's round trip and answers `done`; the state is then read and
 // compared as for any command.
-class AlreadySent final : public Implementation {
+class AlreadySent final : public ForwardingImplementation {
  public:
-  explicit AlreadySent(Implementation& sut) : sut_(sut) {}
-  std::string name() const override { return sut_.name(); }
-  RouteLimits limits() const override { return sut_.limits(); }
-  Answer reset() override { return sut_.reset(); }
-  Answer apply(const Command&) override { return sut_.apply(no_op()); }
-  Document snapshot() override { return sut_.snapshot(); }
-  Document derived() override { return sut_.derived(); }
-
- private:
-  Implementation& sut_;
+  explicit AlreadySent(Implementation& sut) : ForwardingImplementation(&sut) {}
+  Answer apply(const Command&) override { return ForwardingImplementation::apply(no_op()); }
 };
 
 struct Outcome {
@@ -789,7 +786,7 @@ std::size_t write_wire_seeds(std::uint64_t seed, std::uint64_t count, const std:
 }
 
 int run_wire_campaign(const WireFuzzOptions& o) {
-  if (o.impl.rfind("verse:", 0) != 0) {
+  if (o.impl.kind != RouteKind::Verse) {
     fmt::print(stderr, "vgc fuzz wire: --impl takes verse:[NAME@]HOST[:PORT] (a running Verse host)\n");
     return 2;
   }
@@ -797,7 +794,7 @@ int run_wire_campaign(const WireFuzzOptions& o) {
   const auto deadline = t0 + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(o.time_s));
   Session s;
   if (auto error = open_session(&s, o)) {
-    fmt::print(stderr, "vgc fuzz wire: {}: {}\n", o.impl, escape_unprintable(*error));
+    fmt::print(stderr, "vgc fuzz wire: {}: {}\n", o.impl.spec, escape_unprintable(*error));
     return 2;
   }
   // The run's directory.
@@ -816,7 +813,7 @@ int run_wire_campaign(const WireFuzzOptions& o) {
     return 2;
   }
   if (!o.quiet)
-    fmt::print(stderr, "vgc fuzz wire: {} for {} s, seed {}; host: {}\n  run: {}\n", o.impl, o.time_s, o.seed,
+    fmt::print(stderr, "vgc fuzz wire: {} for {} s, seed {}; host: {}\n  run: {}\n", o.impl.spec, o.time_s, o.seed,
                s.sut->identity(), dir.string());
 
   std::map<std::string, WireFindingGroup> groups;
@@ -852,7 +849,7 @@ int run_wire_campaign(const WireFuzzOptions& o) {
         const std::string header = fmt::format(
             "# vgc fuzz wire transcript: {} ({}, {}) after input {} of seed {}\n# {}\n# replay: vgc replay --wire {} "
             "--impl {}\n",
-            f.clause, status, in.kind, index, o.seed, f.message, g.transcript_file, o.impl);
+            f.clause, status, in.kind, index, o.seed, f.message, g.transcript_file, o.impl.spec);
         write_text(g.transcript_file, transcript_text(in, header));
         g.confirmation = confirm_wire_finding(o, in, index, f);
         if (!o.quiet) fmt::print(stderr, "vgc fuzz wire: finding after input {}: {} ({}): {}\n", index, f.clause, status,
@@ -912,7 +909,7 @@ int run_wire_campaign(const WireFuzzOptions& o) {
       "# vgc fuzz wire — {}\n\n| | |\n|---|---|\n| host | {} |\n| seed, time | {}, {} s (wall {:.0f} s) |\n"
       "| inputs | {} ({:.1f}/s) |\n| hostile sessions the host ended or forgot | {} (logged in again) |\n"
       "| findings | {} |\n",
-      run, escape_unprintable(s.sut ? s.sut->identity() : o.impl), o.seed, o.time_s, wall, index,
+      run, escape_unprintable(s.sut ? s.sut->identity() : o.impl.spec), o.seed, o.time_s, wall, index,
       wall > 0 ? static_cast<double>(index) / wall : 0.0, hostile_lost, groups.size());
   if (!stopped_because.empty()) md += "| stopped early | " + stopped_because + " |\n";
   md += "\nInputs by kind: ";
@@ -923,14 +920,15 @@ int run_wire_campaign(const WireFuzzOptions& o) {
     md += fmt::format("- **{} ({}, {})** on {} inputs, first input {} after {:.1f} s: {}\n  - transcript: `{}`\n"
                       "  - replay: `vgc replay --wire {} --impl {}`\n  - {}\n",
                       g.clause, c ? clause_level_name(c->level) : "?", g.status, g.count, g.first_input,
-                      g.first_seen_s, g.first_message, g.transcript_file, g.transcript_file, o.impl, g.confirmation);
+                      g.first_seen_s, g.first_message, g.transcript_file, g.transcript_file, o.impl.spec,
+                      g.confirmation);
     findings.push_back({{"clause", g.clause}, {"status", g.status}, {"key", g.key}, {"count", g.count},
                         {"first_input", g.first_input}, {"first_seen_s", g.first_seen_s},
                         {"message", g.first_message}, {"transcript", g.transcript_file},
                         {"confirmation", g.confirmation}});
   }
   nlohmann::json by_kind = kinds;
-  const nlohmann::json j = {{"implementation", o.impl}, {"seed", o.seed}, {"time_s", o.time_s}, {"wall_s", wall},
+  const nlohmann::json j = {{"implementation", o.impl.spec}, {"seed", o.seed}, {"time_s", o.time_s}, {"wall_s", wall},
                             {"inputs", index}, {"inputs_by_kind", by_kind}, {"hostile_sessions_lost", hostile_lost},
                             {"stopped_because", stopped_because}, {"findings", findings}};
   for (const auto& [file, text] :
@@ -966,7 +964,7 @@ int replay_wire_transcript(const std::string& file, const WireFuzzOptions& o) {
   }
   Session s;
   if (auto e = open_session(&s, o)) {
-    fmt::print(stderr, "vgc replay --wire: {}: {}\n", o.impl, escape_unprintable(*e));
+    fmt::print(stderr, "vgc replay --wire: {}: {}\n", o.impl.spec, escape_unprintable(*e));
     return 2;
   }
   const std::vector<Command> applied = send_input(&s, in);
@@ -974,7 +972,7 @@ int replay_wire_transcript(const std::string& file, const WireFuzzOptions& o) {
   if (!out.finding) {
     fmt::print("{}: the host answered after the transcript's input ({}: {}) and its node holds what the reference "
                "says\n",
-               o.impl, in.kind, in.what);
+               o.impl.spec, in.kind, in.what);
     return 0;
   }
   const Clause* c = find_clause(out.finding->clause);

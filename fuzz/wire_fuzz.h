@@ -33,6 +33,7 @@
 #include <vector>
 
 #include "command.h"
+#include "route.h"
 
 namespace vgc::fuzz {
 
@@ -75,7 +76,7 @@ std::string wire_bytes(const std::string& body, std::uint32_t node);
 std::vector<std::string> wire_input_packets(const WireInput& in);
 
 struct WireFuzzOptions {
-  std::string impl;             // verse:[NAME@]HOST[:PORT]
+  Route impl;                   // --impl, read: verse:[NAME@]HOST[:PORT] (another route is refused)
   double time_s = 60;           // wall-clock limit of the inputs
   std::uint64_t seed = 1;
   std::uint64_t max_inputs = 0; // 0: until time_s

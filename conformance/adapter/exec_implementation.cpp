@@ -20,6 +20,7 @@
 #include "capability_documents.h"
 #include "command_text.h"
 #include "number_text.h"
+#include "route.h"
 
 
 namespace vgc {
@@ -96,7 +97,7 @@ std::string shell_quote(const std::string& s) {
 ExecImplementation::ExecImplementation(std::string command, const OpenOptions& options,
                                        std::string display_name)
     : command_(std::move(command)), options_(options), display_name_(std::move(display_name)) {
-  if (display_name_.empty()) display_name_ = "exec:" + command_;
+  if (display_name_.empty()) display_name_ = route_spec(RouteKind::Exec, command_);
   failed_ = CallStatus::Crash;
   failed_detail_ = "not started";
 }

@@ -33,7 +33,7 @@ namespace vgc {
 class ExecImplementation final : public Implementation {
  public:
   // `command` is run with /bin/sh -c. `display_name` is what name() says
-  // ("exec:" + command when empty). Does not start the program: call start().
+  // (route_spec of the exec route to `command` when empty). Does not start the program: call start().
   ExecImplementation(std::string command, const OpenOptions& options, std::string display_name = {});
   ~ExecImplementation() override;  // sends ?quit, then kills what is left and reaps it
   ExecImplementation(const ExecImplementation&) = delete;

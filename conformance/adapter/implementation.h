@@ -85,6 +85,17 @@ struct DigestAnswer {
   std::string detail;  // for a non-Ok status
 };
 
+// A limit of a route, said in the route's words: what it does not carry.
+// Which clauses each keeps from being judged is said in one place, beside
+// the rules' clauses (conformance/route_limit_clauses.h), so an adapter
+// names no clause.
+enum class RouteLimit {
+  NoVerdicts,           // it acknowledges no command and reports no error: no verdicts, no reason codes
+  SubscriptionsUnseen,  // a subscription is the subscriber's own state, and the route shows none
+  NoRequests,           // it carries no optional capability request (docs/adapters.md section 5)
+  BoneRotationUnsent,   // its bone_create carries no rotation (r6's form, docs/verse_wire.md section 4)
+};
+
 // What a route to an implementation cannot show, so that what it cannot
 // show is reported as not judgeable (status `not-applicable`, with why)
 // rather than passed or left unchecked. The exec, plugin and reference
@@ -101,8 +112,13 @@ struct RouteLimits {
   // state of the connection that sent layer_subscribe) is not observable;
   // it is compared as "-" on both sides.
   bool subscriptions = true;
-  // Clauses the route cannot judge at all -> why. Reported `not-applicable`
-  // with the route and the why, unless a finding was made in them.
+  // The route's limits -> why, in the route's words (for the notes). The
+  // clauses they keep from being judged (route_limit_clauses.h) are
+  // reported `not-applicable` with the route and the why, unless a finding
+  // was made in them.
+  std::map<RouteLimit, std::string> cannot;
+  // Clauses the route names itself -> why, reported alike: for a route
+  // made in a test; the adapters say limits instead.
   std::map<std::string, std::string> clauses;
 };
 
@@ -196,7 +212,8 @@ struct OpenOptions {
   std::string verse_bone_form = "auto";
 };
 
-// Opens "reference", "exec:CMD" or "plugin:PATH". Returns nullptr and sets
+// Opens "reference", "exec:CMD", "plugin:PATH" or "verse:[NAME@]HOST[:PORT]"
+// (parse_route, then open_route: route.h). Returns nullptr and sets
 // *error for a malformed spec or one that cannot be started: a program that
 // does not answer ?hello correctly within the timeout, a plugin that cannot
 // be loaded (missing file, missing vgc_plugin_v1, other ABI version).

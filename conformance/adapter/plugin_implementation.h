@@ -18,6 +18,7 @@
 #include <string>
 
 #include "implementation.h"
+#include "route.h"
 #include "vgc_plugin.h"
 
 namespace vgc {
@@ -38,7 +39,7 @@ class PluginImplementation final : public Implementation {
   PluginImplementation(const PluginImplementation&) = delete;
   PluginImplementation& operator=(const PluginImplementation&) = delete;
 
-  std::string name() const override { return "plugin:" + path_; }
+  std::string name() const override { return route_spec(RouteKind::Plugin, path_); }
   std::string identity() const override;
   Answer reset() override;
   Answer apply(const Command& c) override;

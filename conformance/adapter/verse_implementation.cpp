@@ -115,18 +115,15 @@ RouteLimits verse_route_limits() {
   l.derived = false;
   l.why_no_derived = "the Verse wire carries only stored state (no effective creases, no bone world poses)";
   l.subscriptions = false;
-  l.clauses["REASON-1"] =
+  l.cannot[RouteLimit::NoVerdicts] =
       "a Verse host acknowledges nothing and reports no error, so it gives no reason codes (docs/spec_facts.md "
       "section 8)";
-  l.clauses["LAYER-SUBSCRIBE-1"] =
+  l.cannot[RouteLimit::SubscriptionsUnseen] =
       "a subscription is the subscriber's own state; a host broadcasts none, and what it sends the subscriber "
       "is not compared";
-  const char* capability =
+  l.cannot[RouteLimit::NoRequests] =
       "an optional capability asked with a request (docs/adapters.md section 5); the Verse wire has no such "
       "request (no subdivision, classification or normals)";
-  for (const char* id : {"MESH-CLASSIFY-1", "SUBD-CATMARK-1", "NORMALS-SPLIT-1", "LOOP-TRIANGLE-1",
-                         "EDIT-HIERARCHY-1"})
-    l.clauses[id] = capability;
   return l;
 }
 
@@ -186,7 +183,7 @@ VerseImplementation::~VerseImplementation() {
 RouteLimits VerseImplementation::limits() const {
   RouteLimits l = verse_route_limits();
   if (bone_form_known_ && bone_form_ == verse::BoneForm::R6)
-    l.clauses["BONE-VALUE-1"] =
+    l.cannot[RouteLimit::BoneRotationUnsent] =
         "in r6's form of bone_create (the host's; docs/verse_wire.md section 4) a bone carries no rotation, so a "
         "non-finite or zero rotation cannot be sent";
   return l;

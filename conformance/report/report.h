@@ -2,7 +2,8 @@
 // report.html, one replayable counterexample command file per failing
 // clause, and the final mesh of each counterexample that holds one (OBJ).
 //
-// Spec: none (CI practice); docs/reports.md describes every field.
+// Spec: none (CI practice); docs/certify.md "What a run writes"
+// describes every file and field.
 //
 // Rationale: CI reads the JSON and the JUnit XML; a person reads the
 // summary first, at 2 a.m., so it starts with the verdict, then each

@@ -1,4 +1,5 @@
-// report_json.cpp — report.json (docs/reports.md lists every field).
+// report_json.cpp — report.json (docs/certify.md "What a run writes" lists every field;
+// docs/diagnosing.md "report.json fields for diagnosis" says what each tells).
 #include <nlohmann/json.hpp>
 
 #include <filesystem>

@@ -36,6 +36,8 @@
 #include "wire_commands.h"
 #include "implementation.h"
 #include "report.h"
+#include "restartable_host.h"
+#include "route.h"
 #include "runner.h"
 #include "verdict.h"
 #include "verse_implementation.h"
@@ -430,6 +432,53 @@ TEST(VerseRoute, TheReplayLinePrintedForAWireFindingWorksAsPrinted) {
   EXPECT_EQ(WEXITSTATUS(replayed), 1) << line << "\n" << test::read_text(dir + "/replay.out");
   EXPECT_NE(test::read_text(dir + "/replay.out").find("POLY-DELETE-1"), std::string::npos)
       << test::read_text(dir + "/replay.out");
+  std::filesystem::remove_all(dir);
+}
+
+// A host vgc did not start has a fresh instance only through the user's
+// restart command (restartable_host.h, `certify --restart` as `fuzz
+// --restart`): restart() runs it, logs in again and counts the instance;
+// a command that fails leaves every call a crash that says why, sending
+// nothing. (Seen failing with restart() left without the new login: the
+// snapshot after it was a crash "no session".)
+TEST(VerseRoute, ARestartCommandGivesAFreshInstance) {
+  ServedHost host({}, {});
+  ASSERT_NE(host.port(), 0) << "no port in \"" << host.line() << "\"";
+  const std::string dir = ::testing::TempDir() + "vgc-verse-restart";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  std::string error;
+  const std::optional<Route> route = parse_route(host.spec(), &error);
+  ASSERT_TRUE(route) << error;
+  OpenOptions o = test::test_options(5.0);
+  o.start_timeout_seconds = 10;
+  auto sut = open_restartable(*route, o, "touch " + shell_quote(dir + "/restarted"), &error);
+  ASSERT_NE(sut, nullptr) << error;
+  EXPECT_EQ(sut->name(), host.spec());
+  EXPECT_EQ(sut->instance(), 0u);
+  ASSERT_EQ(sut->reset().status, CallStatus::Ok);
+  ASSERT_EQ(sut->apply(cmd::LayerCreate{2, "kept", static_cast<std::uint8_t>(LayerType::VertexUint32), 0, 0}).status,
+            CallStatus::Ok);
+  EXPECT_NE(sut->snapshot().text.find("\"kept\""), std::string::npos);
+
+  const Answer restarted = sut->restart();
+  EXPECT_EQ(restarted.status, CallStatus::Ok) << restarted.detail;
+  EXPECT_TRUE(std::filesystem::exists(dir + "/restarted")) << "the restart command did not run";
+  EXPECT_EQ(sut->instance(), 1u);
+  const Document fresh = sut->snapshot();
+  ASSERT_EQ(fresh.status, CallStatus::Ok) << fresh.detail;
+  EXPECT_EQ(fresh.text.find("\"kept\""), std::string::npos) << "not a fresh node:\n" << fresh.text;
+  EXPECT_FALSE(sut->limits().route.empty()) << "the route's limits are forwarded";
+
+  auto failing = open_restartable(*route, o, "exit 3", &error);
+  ASSERT_NE(failing, nullptr) << error;
+  const Answer a = failing->restart();
+  EXPECT_EQ(a.status, CallStatus::Crash);
+  EXPECT_NE(a.detail.find("the restart command failed (exit 3)"), std::string::npos) << a.detail;
+  const Document after = failing->snapshot();
+  EXPECT_EQ(after.status, CallStatus::Crash);
+  EXPECT_EQ(after.detail, a.detail);
+  EXPECT_EQ(failing->name(), host.spec());
   std::filesystem::remove_all(dir);
 }
 
