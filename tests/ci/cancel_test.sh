@@ -27,6 +27,14 @@ cleanup() {
 trap cleanup EXIT
 fail() { echo "cancel: $*" >&2; exit 1; }
 alive() { kill -0 "$1" 2>/dev/null && [ "$(ps -o stat= -p "$1" | cut -c1)" != Z ]; }
+# within MS: a limit of MS milliseconds on an idle machine, stretched by the
+# load per core when it is over 1 (on 2 cores at load 25 a process gets a
+# twelfth of a core: stopping and writing the report took 3.5 s there,
+# against 0.4-1.1 s at the other moments of the same run). What is bounded
+# is vgc's own work after the signal, not the machine's schedule.
+within() {
+  awk -v ms="$1" -v n="$(nproc)" '{ f = $1 / n; if (f < 1) f = 1; printf "%d", ms * f }' /proc/loadavg
+}
 
 start_run() {  # start_run NAME: a run in the background, $run_pid
   : >"$pids_file"
@@ -51,7 +59,8 @@ for sig in TERM INT; do
   ms=$(( ($(date +%s%N) - t0) / 1000000 ))
   want=$(( 128 + $(kill -l "$sig") ))
   [ "$rc" = "$want" ] || { cat "$tmp/$sig.out" "$tmp/$sig.err" >&2; fail "SIG$sig: exit $rc, expected $want"; }
-  [ "$ms" -lt 3000 ] || fail "SIG$sig: vgc took $ms ms to stop"
+  limit=$(within 3000)
+  [ "$ms" -lt "$limit" ] || fail "SIG$sig: vgc took $ms ms to stop (limit $limit ms at load $(cut -d' ' -f1 /proc/loadavg))"
   report=$tmp/$sig/latest/report.json
   [ -s "$report" ] || { ls -laR "$tmp/$sig" >&2; cat "$tmp/$sig.err" >&2; fail "SIG$sig: no report written"; }
   for f in summary.md report.html junit.xml counterexamples/LAYER-BASE-2.vgc; do
@@ -81,7 +90,9 @@ grep -q "second signal" "$tmp/twice.err" || { cat "$tmp/twice.err" >&2; fail "tw
 expect_cancelled() {
   local name=$1 rc=$2 ms=$3 report=$tmp/$1/latest/report.json
   [ "$rc" = 143 ] || { tail -n 5 "$tmp/$name.err" >&2; fail "$name: exit $rc, expected 143"; }
-  [ "$ms" -lt 2000 ] || fail "$name: vgc took $ms ms to stop"
+  local limit
+  limit=$(within 2000)
+  [ "$ms" -lt "$limit" ] || fail "$name: vgc took $ms ms to stop (limit $limit ms at load $(cut -d' ' -f1 /proc/loadavg))"
   [ -s "$report" ] || { ls -la "$tmp/$name" >&2; tail -n 5 "$tmp/$name.err" >&2; fail "$name: no report written"; }
   python3 - "$report" "$claims" <<'PY' || fail "$name: report.json is wrong (above)"
 import json, sys
