@@ -83,8 +83,8 @@ void add_impl_options(CLI::App* sub, ImplOptions* o, unsigned which, const std::
   if (which & kRestart)
     sub->add_option("--restart", o->restart,
                     "verse: a shell command that starts a fresh host (and returns once it listens); run before a "
-                    "finding is confirmed on a fresh instance. Without it a crash or hang of the host is confirmed "
-                    "on a fresh node of the same host process only (certify) or reported unconfirmed (fuzz)");
+                    "finding is confirmed on a fresh instance. Without it certify confirms a finding on a fresh node of "
+                    "the same host process, and fuzz reports a crash or hang of the host unconfirmed");
 }
 
 std::string impl_options_misuse(const ImplOptions& o) {
