@@ -8,6 +8,7 @@
 
 #include <cstdlib>
 
+#include "confirm_finding.h"
 #include "faulty_implementation.h"
 #include "implementation.h"
 #include "runner.h"
@@ -126,6 +127,41 @@ TEST(FaultKill, FaultsPastTheOldGeneratorsReachFailAtSeedsOneToThree) {
       EXPECT_TRUE(hit) << name << " at seed " << seed << ": found " << found;
       EXPECT_EQ(judge(run, nullptr).exit_code, 1) << name << " at seed " << seed;
     }
+  }
+}
+
+// Issue 27 (blame that isolates): a node that keeps the "pick a free id"
+// sentinel as the layer id (layer_create 0xFFFF stored as layer 65535) made
+// no pick at all: it breaks the create rule (LAYER-CREATE-1, MUST), not the
+// reading of which free id to pick (LAYER-ID-PICK-1, IMPLEMENTATION-DEFINED,
+// where it was blamed before). Found at seeds 1 to 3 as a wrong state of
+// LAYER-CREATE-1, and LAYER-ID-PICK-1 has no finding.
+TEST(FaultKill, ALayerKeptAtThePickSentinelIsTheCreateRuleAtSeedsOneToThree) {
+  const int fault = faults::find_fault("layer-kept-at-pick-id");
+  ASSERT_GT(fault, 0);
+  for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+    faults::FaultyImplementation impl(fault);
+    RunOptions o;
+    o.seed = seed;
+    o.cases = 200;
+    o.max_size = 50;
+    o.budget_seconds = 3600;  // load must not cut a test short; CTest's TIMEOUT guards a hang
+    const RunResult run = run_certification(impl, o);
+    std::string found;
+    bool hit = false, pick_blamed = false;
+    for (const auto& co : run.clauses) {
+      if (!co.finding) continue;
+      found += std::string(co.clause->id) + "(" + clause_status_name(co.status) + ", " +
+               finding_kind(*co.finding) + ") ";
+      if (co.clause->id == std::string_view("LAYER-CREATE-1") && co.status == ClauseStatus::Fail &&
+          co.finding->status == FindingStatus::Fail)
+        hit = co.finding->message.find("sentinel") != std::string::npos;
+      pick_blamed = pick_blamed || co.clause->id == std::string_view("LAYER-ID-PICK-1");
+    }
+    std::printf("layer-kept-at-pick-id seed %llu: %s\n", static_cast<unsigned long long>(seed), found.c_str());
+    EXPECT_TRUE(hit) << "seed " << seed << ": found " << found;
+    EXPECT_FALSE(pick_blamed) << "seed " << seed << ": found " << found;
+    EXPECT_EQ(judge(run, nullptr).exit_code, 1) << "seed " << seed;
   }
 }
 
