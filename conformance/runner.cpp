@@ -996,19 +996,24 @@ void decide_clauses(const RunOptions& o, const RouteLimits& limits, RunResult* r
     e.route_limit = route_limit_of(clause.id, limits);
     e.unreported_verdicts = run->unreported_verdicts;
     int chosen_index = 0;
-    std::vector<std::string> also;  // milder kinds of finding in the clause, shown in the note
+    // Milder kinds of finding in the clause, shown in the note: each kind
+    // once, with every property that found it.
+    std::vector<std::pair<std::string, std::set<std::string>>> also;
+    const auto also_found = [&also](const Finding& f, const std::string& by) {
+      auto it = std::find_if(also.begin(), also.end(), [&](const auto& a) { return a.first == finding_kind(f); });
+      if (it == also.end()) it = also.insert(also.end(), {finding_kind(f), {}});
+      it->second.insert(by);
+    };
     for (std::size_t i = 0; i < run->properties.size(); ++i) {
       const PropertyOutcome& po = run->properties[i];
       if (auto it = po.exercised.find(id); it != po.exercised.end()) e.exercised += it->second;
       if (auto it = po.derived_only.find(id); it != po.derived_only.end()) e.derived_only += it->second;
       auto take = [&](const Finding& f, const Program& p, bool known) {
         if (!prefer_finding(f, p, static_cast<int>(i), co.finding, co.program, chosen_index)) {
-          if (co.finding && finding_kind(f) != finding_kind(*co.finding))
-            also.push_back(finding_kind(f) + " (" + po.id + ")");
+          if (co.finding && finding_kind(f) != finding_kind(*co.finding)) also_found(f, po.id);
           return;
         }
-        if (co.finding && finding_kind(f) != finding_kind(*co.finding))
-          also.push_back(finding_kind(*co.finding) + " (" + co.found_by + ")");
+        if (co.finding && finding_kind(f) != finding_kind(*co.finding)) also_found(*co.finding, co.found_by);
         chosen_index = static_cast<int>(i);
         co.finding = f;
         co.program = p;
@@ -1036,7 +1041,7 @@ void decide_clauses(const RunOptions& o, const RouteLimits& limits, RunResult* r
     co.note = d.note;
     if (!also.empty()) {
       co.note = "the worst kind of finding in this clause is shown; also found:";
-      for (const auto& a : also) co.note += " " + a;
+      for (const auto& [kind, by] : also) co.note += " " + kind + " (" + join(by) + ")";
     }
     run->clauses.push_back(co);
   }

@@ -195,6 +195,35 @@ TEST(FaultKill, TheScalePropertyFailsANodeThatDropsIdsPastItsStorageBoundAtEvery
   }
 }
 
+// Issue 27: a clause whose worst finding is a crash says which milder
+// kinds were also found there, each kind once with every property that
+// found it (the note named "wrong-answer" once per property before).
+TEST(FaultKill, AClauseNoteNamesEachMilderKindOnce) {
+  const auto& info = faults::fault_catalog()[static_cast<std::size_t>(faults::find_fault("destroy-missing-ok-double-free"))];
+  setenv("VGC_FAULT", std::string(info.name).c_str(), 1);
+  OpenOptions open;
+  open.timeout_seconds = 1.0;
+  open.vgc_binary = VGC_BINARY;
+  std::string error;
+  auto impl = open_implementation(std::string("plugin:") + VGC_FAULT_PLUGIN, open, &error);
+  ASSERT_TRUE(impl) << error;
+  // Every property: more than one of them finds the wrong answer.
+  const RunResult run = run_certification(*impl, kill_options());
+  unsetenv("VGC_FAULT");
+  const ClauseOutcome* co = nullptr;
+  for (const auto& c : run.clauses)
+    if (c.clause->id == std::string_view("LAYER-DESTROY-1")) co = &c;
+  ASSERT_TRUE(co && co->finding);
+  std::printf("LAYER-DESTROY-1 %s: %s\n", clause_status_name(co->status), co->note.c_str());
+  EXPECT_EQ(co->status, ClauseStatus::Crash) << co->note;
+  for (const std::string kind : {"wrong-answer", "hidden-state", "timeout", "protocol-error"}) {
+    std::size_t n = 0;
+    for (std::size_t at = co->note.find(kind + " ("); at != std::string::npos; at = co->note.find(kind + " (", at + 1))
+      ++n;
+    EXPECT_LE(n, 1u) << kind << " named " << n << " times: " << co->note;
+  }
+}
+
 TEST(FaultKill, TheUnfaultedWrapperIsConformant) {
   faults::FaultyImplementation impl(0);
   const RunResult run = run_certification(impl, kill_options());
