@@ -18,6 +18,7 @@
 #include "clause_status.h"
 #include "costly_class.h"
 #include "exercised_clauses.h"
+#include "isolate_blame.h"
 #include "command_text.h"
 #include "confirm_finding.h"
 #include "cancel.h"
@@ -92,6 +93,9 @@ struct CaseContext {
   // localized: it cannot be that finding).
   std::map<std::string, Finding> late_shapes;
   std::string sought_late_shape;
+  // Shapes of isolated findings shown to be another finding's again
+  // (isolate_blame.h isolated_shape): set aside when seen again.
+  std::set<std::string> explained_shapes;
   // What the instance had been sent since it started when the round's first
   // call failure happened (confirm_finding.h), the failing case last.
   HistoryRecorder* recorder = nullptr;
@@ -348,8 +352,17 @@ bool fail_case(const Finding& f, std::optional<CapabilityRequest> request = std:
     set_case_aside(f, request);
     return false;
   }
+  if (blame_isolates(f) && g_context->explained_shapes.count(isolated_shape(f))) {
+    g_context->set_aside_case = true;  // another finding's difference again (seen_through_found_clause)
+    return false;
+  }
   auto& sig = g_context->signature;
-  if (sig && (sig->first != f.clause || sig->second != f.status)) return false;
+  // Shrinking keeps a smaller example of the same finding, or one whose
+  // first difference one rule alone explains (isolate_blame.h).
+  if (sig && (!g_context->last_failure ||
+              choose_shrink(*g_context->last_failure, g_context->last_program.commands, f, g_context->trace) ==
+                  ShrinkChoice::Reject))
+    return false;
   if (!confirm_before_shrinking(f, request)) return false;
   sig = std::make_pair(f.clause, f.status);
   g_context->shrinking = true;
@@ -798,6 +811,29 @@ void start_context(CaseContext& ctx, const PropertySpec& spec, Implementation& s
   ctx.property_id = &out->id;
 }
 
+// Whether the shrunk `pf`, which one rule alone explains, shows the same
+// difference without one of its earlier commands, explained there by the
+// rule of a clause the property already found (isolate_blame.h): that
+// finding's again. Replays only the smaller programs the model points to.
+bool seen_through_found_clause(const PropertyFinding& pf, CaseContext& ctx) {
+  if (pf.program.request || !ctx.sut) return false;
+  const auto leave_out = commands_to_leave_out(pf.finding, pf.program.commands, [&ctx](const std::string& clause) {
+    return ctx.tolerated.count(clause) > 0;
+  });
+  for (std::size_t k : leave_out) {
+    Program smaller = pf.program;
+    smaller.commands.erase(smaller.commands.begin() + static_cast<std::ptrdiff_t>(k));
+    const ReplayResult r = replay_program(smaller, *ctx.sut);
+    if (!r.failure || r.failed_at + 1 != static_cast<int>(smaller.commands.size())) continue;
+    if (choose_shrink(pf.finding, pf.program.commands, *r.failure, smaller.commands) == ShrinkChoice::Switch &&
+        is_tolerated(ctx, *r.failure)) {
+      ctx.explained_shapes.insert(isolated_shape(pf.finding));
+      return true;
+    }
+  }
+  return false;
+}
+
 // A round's failure (RapidCheck shrank it): confirmed on a fresh instance,
 // then the property's next finding, its clause tolerated from now on.
 void record_round_failure(const rc::detail::FailureResult& failure, int round, CaseContext& ctx,
@@ -822,6 +858,10 @@ void record_round_failure(const rc::detail::FailureResult& failure, int round, C
       // clause, which shrinking checks on each attempt).
       pf.program = ctx.failure_program;
     }
+  }
+  if (ctx.last_failure && seen_through_found_clause(pf, ctx)) {
+    ++ctx.set_aside;
+    return;
   }
   int& worst = ctx.tolerated[pf.finding.clause];
   worst = std::max(worst, finding_severity(pf.finding));
@@ -979,6 +1019,51 @@ void load_rapidcheck_configuration_quietly() {
     return true;
   }();
   (void)done;
+}
+
+// Findings that several guards explain (isolate_blame.h): each is tried
+// with the other guards' conditions taken away. Where the implementation
+// still deviates, that program is its isolating counterexample; where it
+// then agrees and another finding of the run isolates one of the other
+// guards, the finding is that one's again: left out. Otherwise it stays,
+// "Also explained by" and all.
+void isolate_findings(Implementation& sut, RunResult* run) {
+  std::vector<const Finding*> all;
+  std::vector<std::pair<std::size_t, std::size_t>> where;
+  for (std::size_t i = 0; i < run->properties.size(); ++i)
+    for (std::size_t j = 0; j < run->properties[i].findings.size(); ++j) {
+      all.push_back(&run->properties[i].findings[j].finding);
+      where.emplace_back(i, j);
+    }
+  const std::vector<std::size_t> elsewhere = explained_elsewhere(all);
+  std::vector<std::pair<std::size_t, std::size_t>> drop;
+  for (std::size_t k = 0; k < all.size(); ++k) {
+    PropertyFinding& pf = run->properties[where[k].first].findings[where[k].second];
+    if (pf.tolerated_from_start || pf.program.request || cancel_signal()) continue;
+    bool agrees = false;
+    for (const auto& variant : isolating_variants(pf.finding, pf.program.commands)) {
+      const ReplayResult r = replay_program(Program{variant, std::nullopt}, sut);
+      if (!r.failure) {
+        agrees = true;
+        continue;
+      }
+      if (r.failed_at + 1 == static_cast<int>(variant.size()) && r.failure->clause == pf.finding.clause &&
+          r.failure->status == pf.finding.status && blame_isolates(*r.failure)) {
+        pf.finding = *r.failure;  // the blamed rule alone: its isolating counterexample
+        pf.program = Program{variant, std::nullopt};
+        agrees = false;
+        break;
+      }
+    }
+    if (agrees && blame_isolates(pf.finding) == false &&
+        std::find(elsewhere.begin(), elsewhere.end(), k) != elsewhere.end())
+      drop.push_back(where[k]);
+  }
+  for (auto it = drop.rbegin(); it != drop.rend(); ++it) {
+    PropertyOutcome& p = run->properties[it->first];
+    p.findings.erase(p.findings.begin() + static_cast<std::ptrdiff_t>(it->second));
+    if (p.findings.empty() && p.status == PropertyStatus::Fail) p.status = PropertyStatus::Pass;
+  }
 }
 
 // Per clause: the findings of every property that ran, whoever declared
@@ -1210,6 +1295,7 @@ RunResult run_certification(Implementation& implementation, const RunOptions& o)
   }
 
   run.route = limits.route;
+  isolate_findings(sut, &run);
   decide_clauses(o, limits, &run);
   if (cancel_signal()) run.cancelled_by = cancel_signal_name();
   summarize_run(&run);
