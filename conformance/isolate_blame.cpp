@@ -4,10 +4,12 @@
 #include <algorithm>
 #include <string>
 
+#include "cancel.h"
 #include "command_text.h"
 #include "confirm_finding.h"
 #include "node.h"
 #include "rule_clauses.h"
+#include "runner.h"
 
 namespace vgc {
 namespace {
@@ -153,6 +155,45 @@ std::vector<std::size_t> explained_elsewhere(const std::vector<const Finding*>& 
     if (explained) out.push_back(i);
   }
   return out;
+}
+
+void isolate_findings(Implementation& sut, RunResult* run) {
+  std::vector<const Finding*> all;
+  std::vector<std::pair<std::size_t, std::size_t>> where;
+  for (std::size_t i = 0; i < run->properties.size(); ++i)
+    for (std::size_t j = 0; j < run->properties[i].findings.size(); ++j) {
+      all.push_back(&run->properties[i].findings[j].finding);
+      where.emplace_back(i, j);
+    }
+  const std::vector<std::size_t> elsewhere = explained_elsewhere(all);
+  std::vector<std::pair<std::size_t, std::size_t>> drop;
+  for (std::size_t k = 0; k < all.size(); ++k) {
+    PropertyFinding& pf = run->properties[where[k].first].findings[where[k].second];
+    if (pf.tolerated_from_start || pf.program.request || cancel_signal()) continue;
+    bool agrees = false;
+    for (const auto& variant : isolating_variants(pf.finding, pf.program.commands)) {
+      const ReplayResult r = replay_program(Program{variant, std::nullopt}, sut);
+      if (!r.failure) {
+        agrees = true;
+        continue;
+      }
+      if (r.failed_at + 1 == static_cast<int>(variant.size()) && r.failure->clause == pf.finding.clause &&
+          r.failure->status == pf.finding.status && blame_isolates(*r.failure)) {
+        pf.finding = *r.failure;  // the blamed rule alone: its isolating counterexample
+        pf.program = Program{variant, std::nullopt};
+        agrees = false;
+        break;
+      }
+    }
+    if (agrees && blame_isolates(pf.finding) == false &&
+        std::find(elsewhere.begin(), elsewhere.end(), k) != elsewhere.end())
+      drop.push_back(where[k]);
+  }
+  for (auto it = drop.rbegin(); it != drop.rend(); ++it) {
+    PropertyOutcome& p = run->properties[it->first];
+    p.findings.erase(p.findings.begin() + static_cast<std::ptrdiff_t>(it->second));
+    if (p.findings.empty() && p.status == PropertyStatus::Fail) p.status = PropertyStatus::Pass;
+  }
 }
 
 }  // namespace vgc

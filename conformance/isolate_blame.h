@@ -47,6 +47,8 @@
 
 #include "command.h"
 #include "finding.h"
+#include "implementation.h"
+#include "run_result.h"
 
 namespace vgc {
 
@@ -99,5 +101,10 @@ std::vector<std::vector<Command>> isolating_variants(const Finding& f, const std
 // blamed on the clause of one of the other guards. Their indexes into
 // `findings`.
 std::vector<std::size_t> explained_elsewhere(const std::vector<const Finding*>& findings);
+
+// The runner's last step before it decides the clauses: every finding of
+// `run` that several guards explain, isolated as above (isolating_variants
+// replayed on `sut`, explained_elsewhere), in place.
+void isolate_findings(Implementation& sut, RunResult* run);
 
 }  // namespace vgc

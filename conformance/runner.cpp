@@ -1021,51 +1021,6 @@ void load_rapidcheck_configuration_quietly() {
   (void)done;
 }
 
-// Findings that several guards explain (isolate_blame.h): each is tried
-// with the other guards' conditions taken away. Where the implementation
-// still deviates, that program is its isolating counterexample; where it
-// then agrees and another finding of the run isolates one of the other
-// guards, the finding is that one's again: left out. Otherwise it stays,
-// "Also explained by" and all.
-void isolate_findings(Implementation& sut, RunResult* run) {
-  std::vector<const Finding*> all;
-  std::vector<std::pair<std::size_t, std::size_t>> where;
-  for (std::size_t i = 0; i < run->properties.size(); ++i)
-    for (std::size_t j = 0; j < run->properties[i].findings.size(); ++j) {
-      all.push_back(&run->properties[i].findings[j].finding);
-      where.emplace_back(i, j);
-    }
-  const std::vector<std::size_t> elsewhere = explained_elsewhere(all);
-  std::vector<std::pair<std::size_t, std::size_t>> drop;
-  for (std::size_t k = 0; k < all.size(); ++k) {
-    PropertyFinding& pf = run->properties[where[k].first].findings[where[k].second];
-    if (pf.tolerated_from_start || pf.program.request || cancel_signal()) continue;
-    bool agrees = false;
-    for (const auto& variant : isolating_variants(pf.finding, pf.program.commands)) {
-      const ReplayResult r = replay_program(Program{variant, std::nullopt}, sut);
-      if (!r.failure) {
-        agrees = true;
-        continue;
-      }
-      if (r.failed_at + 1 == static_cast<int>(variant.size()) && r.failure->clause == pf.finding.clause &&
-          r.failure->status == pf.finding.status && blame_isolates(*r.failure)) {
-        pf.finding = *r.failure;  // the blamed rule alone: its isolating counterexample
-        pf.program = Program{variant, std::nullopt};
-        agrees = false;
-        break;
-      }
-    }
-    if (agrees && blame_isolates(pf.finding) == false &&
-        std::find(elsewhere.begin(), elsewhere.end(), k) != elsewhere.end())
-      drop.push_back(where[k]);
-  }
-  for (auto it = drop.rbegin(); it != drop.rend(); ++it) {
-    PropertyOutcome& p = run->properties[it->first];
-    p.findings.erase(p.findings.begin() + static_cast<std::ptrdiff_t>(it->second));
-    if (p.findings.empty() && p.status == PropertyStatus::Fail) p.status = PropertyStatus::Pass;
-  }
-}
-
 // Per clause: the findings of every property that ran, whoever declared
 // it, and the evidence clause_status.h decides its status from.
 void decide_clauses(const RunOptions& o, const RouteLimits& limits, RunResult* run) {
