@@ -91,6 +91,22 @@ std::vector<std::string> quoted_parts(const std::string& line) {
 
 std::string quoted(const std::string& line) { return "\"" + line + "\""; }
 
+// Whether `line` is an element at the "pick a free id" sentinel of its kind
+// (layer and bone 0xFFFF, vertex and polygon 0xFFFFFFFF) and the command
+// asked for a pick of that kind (`trace` has its pick rule): the sentinel
+// kept as the id, no pick made.
+bool kept_pick_sentinel(const std::string& line, const RuleTrace& trace) {
+  const std::string kind = first_word(line);
+  const std::string key = line_key(line);
+  const std::string id = key.substr(kind.size() + 1);  // the snapshot prints the sentinels in hex
+  const bool id16 = id == "0xFFFF" || id == "65535", id32 = id == "0xFFFFFFFF" || id == "4294967295";
+  if (kind == "layer") return trace.has(Rule::LayerIdPick) && id16;
+  if (kind == "bone") return trace.has(Rule::BoneIdPick) && id16;
+  if (kind == "vertex") return trace.has(Rule::VertexIdPick) && id32;
+  if (kind == "polygon") return trace.has(Rule::PolygonIdPick) && id32;
+  return false;
+}
+
 std::string written_by(const std::optional<Written>& w) {
   if (!w || w->rule == Rule::None) return "";
   return " (last written by rule " + std::string(rule_name(w->rule)) +
@@ -199,7 +215,13 @@ Blame blame_snapshot(const Node& before, const Node& after, Reason expected, con
             elsewhere = l;
             break;
           }
-        if (!elsewhere.empty() && !place.empty()) {
+        if (!elsewhere.empty() && !place.empty() && kept_pick_sentinel(elsewhere, trace) && w && w->step == now) {
+          // No pick at all: the implementation kept the "pick a free id"
+          // sentinel as the id. That is no other free id (the pick rule's
+          // reading), but an element at an id it cannot have: the rule
+          // that creates it is broken (docs/spec_facts.md 5).
+          cands.push_back(w->rule);
+        } else if (!elsewhere.empty() && !place.empty()) {
           add(place);
         } else {
           add(place);
@@ -207,8 +229,11 @@ Blame blame_snapshot(const Node& before, const Node& after, Reason expected, con
         }
         what = "The model created " + quoted(e) + written_by(w) + "; the implementation " +
                (elsewhere.empty() ? "has no line `" + ke + "`."
-                                  : "created `" + line_key(elsewhere) + "` instead (" + quoted(elsewhere) + "): the "
-                                        "command asked for `" + ke + "`.");
+                : kept_pick_sentinel(elsewhere, trace)
+                    ? "created `" + line_key(elsewhere) + "` (" + quoted(elsewhere) + "): it kept the \"pick a free "
+                      "id\" sentinel as the id instead of picking one."
+                    : "created `" + line_key(elsewhere) + "` instead (" + quoted(elsewhere) + "): the "
+                      "command asked for `" + ke + "`.");
       }
     }
     if (!o.empty()) {  // the implementation has a line `ko` the model does not

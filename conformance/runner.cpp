@@ -20,6 +20,7 @@
 #include "run_budget.h"
 #include "exercised_clauses.h"
 #include "forwarding_implementation.h"
+#include "isolate_blame.h"
 #include "command_text.h"
 #include "confirm_finding.h"
 #include "cancel.h"
@@ -95,6 +96,9 @@ struct CaseContext {
   // localized: it cannot be that finding).
   std::map<std::string, Finding> late_shapes;
   std::string sought_late_shape;
+  // Shapes of isolated findings shown to be another finding's again
+  // (isolate_blame.h isolated_shape): set aside when seen again.
+  std::set<std::string> explained_shapes;
   // What the instance had been sent since it started when the round's first
   // call failure happened (confirm_finding.h), the failing case last.
   HistoryRecorder* recorder = nullptr;
@@ -354,8 +358,17 @@ bool fail_case(const Finding& f, std::optional<CapabilityRequest> request = std:
     set_case_aside(f, request);
     return false;
   }
+  if (blame_isolates(f) && g_context->explained_shapes.count(isolated_shape(f))) {
+    g_context->set_aside_case = true;  // another finding's difference again (seen_through_found_clause)
+    return false;
+  }
   auto& sig = g_context->signature;
-  if (sig && (sig->first != f.clause || sig->second != f.status)) return false;
+  // Shrinking keeps a smaller example of the same finding, or one whose
+  // first difference one rule alone explains (isolate_blame.h).
+  if (sig && (!g_context->last_failure ||
+              choose_shrink(*g_context->last_failure, g_context->last_program.commands, f, g_context->trace) ==
+                  ShrinkChoice::Reject))
+    return false;
   if (!confirm_before_shrinking(f, request)) return false;
   sig = std::make_pair(f.clause, f.status);
   g_context->shrinking = true;
@@ -790,6 +803,29 @@ void start_context(CaseContext& ctx, const PropertySpec& spec, Implementation& s
   ctx.property_id = &out->id;
 }
 
+// Whether the shrunk `pf`, which one rule alone explains, shows the same
+// difference without one of its earlier commands, explained there by the
+// rule of a clause the property already found (isolate_blame.h): that
+// finding's again. Replays only the smaller programs the model points to.
+bool seen_through_found_clause(const PropertyFinding& pf, CaseContext& ctx) {
+  if (pf.program.request || !ctx.sut) return false;
+  const auto leave_out = commands_to_leave_out(pf.finding, pf.program.commands, [&ctx](const std::string& clause) {
+    return ctx.tolerated.count(clause) > 0;
+  });
+  for (std::size_t k : leave_out) {
+    Program smaller = pf.program;
+    smaller.commands.erase(smaller.commands.begin() + static_cast<std::ptrdiff_t>(k));
+    const ReplayResult r = replay_program(smaller, *ctx.sut);
+    if (!r.failure || r.failed_at + 1 != static_cast<int>(smaller.commands.size())) continue;
+    if (choose_shrink(pf.finding, pf.program.commands, *r.failure, smaller.commands) == ShrinkChoice::Switch &&
+        is_tolerated(ctx, *r.failure)) {
+      ctx.explained_shapes.insert(isolated_shape(pf.finding));
+      return true;
+    }
+  }
+  return false;
+}
+
 // A round's failure (RapidCheck shrank it): confirmed on a fresh instance,
 // then the property's next finding, its clause tolerated from now on.
 void record_round_failure(const rc::detail::FailureResult& failure, int round, CaseContext& ctx,
@@ -814,6 +850,10 @@ void record_round_failure(const rc::detail::FailureResult& failure, int round, C
       // clause, which shrinking checks on each attempt).
       pf.program = ctx.failure_program;
     }
+  }
+  if (ctx.last_failure && seen_through_found_clause(pf, ctx)) {
+    ++ctx.set_aside;
+    return;
   }
   int& worst = ctx.tolerated[pf.finding.clause];
   worst = std::max(worst, finding_severity(pf.finding));
@@ -990,19 +1030,24 @@ void decide_clauses(const RunOptions& o, const RouteLimits& limits, RunResult* r
     e.route_limit = route_limit_of(clause.id, limits);
     e.unreported_verdicts = run->unreported_verdicts;
     int chosen_index = 0;
-    std::vector<std::string> also;  // milder kinds of finding in the clause, shown in the note
+    // Milder kinds of finding in the clause, shown in the note: each kind
+    // once, with every property that found it.
+    std::vector<std::pair<std::string, std::set<std::string>>> also;
+    const auto also_found = [&also](const Finding& f, const std::string& by) {
+      auto it = std::find_if(also.begin(), also.end(), [&](const auto& a) { return a.first == finding_kind(f); });
+      if (it == also.end()) it = also.insert(also.end(), {finding_kind(f), {}});
+      it->second.insert(by);
+    };
     for (std::size_t i = 0; i < run->properties.size(); ++i) {
       const PropertyOutcome& po = run->properties[i];
       if (auto it = po.exercised.find(id); it != po.exercised.end()) e.exercised += it->second;
       if (auto it = po.derived_only.find(id); it != po.derived_only.end()) e.derived_only += it->second;
       auto take = [&](const Finding& f, const Program& p, bool known) {
         if (!prefer_finding(f, p, static_cast<int>(i), co.finding, co.program, chosen_index)) {
-          if (co.finding && finding_kind(f) != finding_kind(*co.finding))
-            also.push_back(finding_kind(f) + " (" + po.id + ")");
+          if (co.finding && finding_kind(f) != finding_kind(*co.finding)) also_found(f, po.id);
           return;
         }
-        if (co.finding && finding_kind(f) != finding_kind(*co.finding))
-          also.push_back(finding_kind(*co.finding) + " (" + co.found_by + ")");
+        if (co.finding && finding_kind(f) != finding_kind(*co.finding)) also_found(*co.finding, co.found_by);
         chosen_index = static_cast<int>(i);
         co.finding = f;
         co.program = p;
@@ -1030,7 +1075,7 @@ void decide_clauses(const RunOptions& o, const RouteLimits& limits, RunResult* r
     co.note = d.note;
     if (!also.empty()) {
       co.note = "the worst kind of finding in this clause is shown; also found:";
-      for (const auto& a : also) co.note += " " + a;
+      for (const auto& [kind, by] : also) co.note += " " + kind + " (" + join(by) + ")";
     }
     run->clauses.push_back(co);
   }
@@ -1205,6 +1250,7 @@ RunResult run_certification(Implementation& implementation, const RunOptions& o)
   }
 
   run.route = limits.route;
+  isolate_findings(sut, &run);
   decide_clauses(o, limits, &run);
   if (cancel_signal()) run.cancelled_by = cancel_signal_name();
   summarize_run(&run);

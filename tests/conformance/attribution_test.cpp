@@ -223,5 +223,42 @@ TEST(Attribution, MovedVertexSlotResetIsTheKeepRuleNotTheDefault) {
   EXPECT_NE(message.find("\"slot 2 0 5\""), std::string::npos) << message;
 }
 
+// Issue 27: a host that keeps the "pick a free id" sentinel as the id
+// (layer_create 0xFFFF stored as layer 65535, bone_create 0xFFFF as bone
+// 65535) made no pick: it is blamed on the create rule (MUST), not on the
+// reading of which free id to pick (LAYER-ID-PICK-1, IMPLEMENTATION-DEFINED;
+// BONE-ID-PICK-1, SHOULD), where it was blamed before.
+TEST(Attribution, AnElementKeptAtThePickSentinelIsTheCreateRule) {
+  OneFault sut;
+  sut.edit_snapshot = [](const std::string& text) {
+    std::string out = text;
+    for (const std::string from : {"layer 2 ", "bone 0 "}) {
+      const std::string to = from == "layer 2 " ? "layer 0xFFFF " : "bone 0xFFFF ";  // as snapshots print them
+      if (const auto at = out.find(from); at != std::string::npos) out.replace(at, from.size(), to);
+    }
+    return out;
+  };
+  std::string message;
+  EXPECT_EQ(first_failure(sut, {"layer_create 0xFFFF \"a\" VERTEX_UINT32 0 0"}, &message), "LAYER-CREATE-1")
+      << message;
+  EXPECT_NE(message.find("rule layer.create (LAYER-CREATE-1, MUST)"), std::string::npos) << message;
+  EXPECT_NE(message.find("kept the \"pick a free id\" sentinel"), std::string::npos) << message;
+  EXPECT_EQ(message.find("LAYER-ID-PICK-1"), std::string::npos) << message;
+
+  sut.edit_snapshot = [](const std::string& text) {
+    std::string out = text;
+    if (const auto at = out.find("bone 0 "); at != std::string::npos) out.replace(at, 7, "bone 0xFFFF ");
+    return out;
+  };
+  EXPECT_EQ(first_failure(sut,
+                          {"layer_create 2 \"w\" VERTEX_REAL 0 0",
+                           "bone_create 0xFFFF \"w\" \"\" 0xFFFF 0 0 0 \"\" 0 0 0 1 \"\""},
+                          &message),
+            "BONE-CREATE-1")
+      << message;
+  EXPECT_NE(message.find("rule bone.create (BONE-CREATE-1, MUST)"), std::string::npos) << message;
+  EXPECT_EQ(message.find("BONE-ID-PICK-1"), std::string::npos) << message;
+}
+
 }  // namespace
 }  // namespace vgc

@@ -8,6 +8,7 @@
 
 #include <cstdlib>
 
+#include "confirm_finding.h"
 #include "faulty_implementation.h"
 #include "implementation.h"
 #include "runner.h"
@@ -129,6 +130,41 @@ TEST(FaultKill, FaultsPastTheOldGeneratorsReachFailAtSeedsOneToThree) {
   }
 }
 
+// Issue 27 (blame that isolates): a node that keeps the "pick a free id"
+// sentinel as the layer id (layer_create 0xFFFF stored as layer 65535) made
+// no pick at all: it breaks the create rule (LAYER-CREATE-1, MUST), not the
+// reading of which free id to pick (LAYER-ID-PICK-1, IMPLEMENTATION-DEFINED,
+// where it was blamed before). Found at seeds 1 to 3 as a wrong state of
+// LAYER-CREATE-1, and LAYER-ID-PICK-1 has no finding.
+TEST(FaultKill, ALayerKeptAtThePickSentinelIsTheCreateRuleAtSeedsOneToThree) {
+  const int fault = faults::find_fault("layer-kept-at-pick-id");
+  ASSERT_GT(fault, 0);
+  for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+    faults::FaultyImplementation impl(fault);
+    RunOptions o;
+    o.seed = seed;
+    o.cases = 200;
+    o.max_size = 50;
+    o.budget_seconds = 3600;  // load must not cut a test short; CTest's TIMEOUT guards a hang
+    const RunResult run = run_certification(impl, o);
+    std::string found;
+    bool hit = false, pick_blamed = false;
+    for (const auto& co : run.clauses) {
+      if (!co.finding) continue;
+      found += std::string(co.clause->id) + "(" + clause_status_name(co.status) + ", " +
+               finding_kind(*co.finding) + ") ";
+      if (co.clause->id == std::string_view("LAYER-CREATE-1") && co.status == ClauseStatus::Fail &&
+          co.finding->status == FindingStatus::Fail)
+        hit = co.finding->message.find("sentinel") != std::string::npos;
+      pick_blamed = pick_blamed || co.clause->id == std::string_view("LAYER-ID-PICK-1");
+    }
+    std::printf("layer-kept-at-pick-id seed %llu: %s\n", static_cast<unsigned long long>(seed), found.c_str());
+    EXPECT_TRUE(hit) << "seed " << seed << ": found " << found;
+    EXPECT_FALSE(pick_blamed) << "seed " << seed << ": found " << found;
+    EXPECT_EQ(judge(run, nullptr).exit_code, 1) << "seed " << seed;
+  }
+}
+
 // The property at scale (storage.scale, scale_mesh.h) fails a node that
 // drops every new vertex and polygon id past its storage bound (the r6
 // host's 4,129 on a fresh node) at every seed: each of its cases builds a
@@ -156,6 +192,35 @@ TEST(FaultKill, TheScalePropertyFailsANodeThatDropsIdsPastItsStorageBoundAtEvery
     }
     EXPECT_TRUE(scale_ran) << "seed " << seed;
     EXPECT_EQ(judge(run, nullptr).exit_code, 1) << "seed " << seed;
+  }
+}
+
+// Issue 27: a clause whose worst finding is a crash says which milder
+// kinds were also found there, each kind once with every property that
+// found it (the note named "wrong-answer" once per property before).
+TEST(FaultKill, AClauseNoteNamesEachMilderKindOnce) {
+  const auto& info = faults::fault_catalog()[static_cast<std::size_t>(faults::find_fault("destroy-missing-ok-double-free"))];
+  setenv("VGC_FAULT", std::string(info.name).c_str(), 1);
+  OpenOptions open;
+  open.timeout_seconds = 1.0;
+  open.vgc_binary = VGC_BINARY;
+  std::string error;
+  auto impl = open_implementation(std::string("plugin:") + VGC_FAULT_PLUGIN, open, &error);
+  ASSERT_TRUE(impl) << error;
+  // Every property: more than one of them finds the wrong answer.
+  const RunResult run = run_certification(*impl, kill_options());
+  unsetenv("VGC_FAULT");
+  const ClauseOutcome* co = nullptr;
+  for (const auto& c : run.clauses)
+    if (c.clause->id == std::string_view("LAYER-DESTROY-1")) co = &c;
+  ASSERT_TRUE(co && co->finding);
+  std::printf("LAYER-DESTROY-1 %s: %s\n", clause_status_name(co->status), co->note.c_str());
+  EXPECT_EQ(co->status, ClauseStatus::Crash) << co->note;
+  for (const std::string kind : {"wrong-answer", "hidden-state", "timeout", "protocol-error"}) {
+    std::size_t n = 0;
+    for (std::size_t at = co->note.find(kind + " ("); at != std::string::npos; at = co->note.find(kind + " (", at + 1))
+      ++n;
+    EXPECT_LE(n, 1u) << kind << " named " << n << " times: " << co->note;
   }
 }
 

@@ -81,6 +81,12 @@ std::vector<FaultInfo> build_catalog() {
        "on a fresh node, whole)"},
       {"vertex-delete-alias-layer-0-only", "VERTEX-DELETE-1", "fail",
        "treats FLT_MAX / DBL_MAX in a coordinate as a delete only on layer 0; elsewhere it is a plain write"},
+      // Issue 27: no pick at all. The "pick a free id" sentinel kept as the
+      // id itself breaks the create rule (a layer at an id no layer can
+      // have: 2 to 0xFFFE), not the reading of which free id to pick.
+      {"layer-kept-at-pick-id", "LAYER-CREATE-1", "fail",
+       "stores layer_create 0xFFFF as layer 65535 (the \"pick a free id\" sentinel kept as the id), and a later "
+       "layer_create 0xFFFF re-creates that layer"},
       // The three MUST bugs of issue 17, each breaking one node rule alone.
       {"moved-vertex-slots-reset", "VERTEX-SET-1", "fail",
        "a moved vertex's slots in the other vertex layers are reset to their defaults", Rule::VertexMoveKeepsSlots},
@@ -295,6 +301,10 @@ FaultyAnswer FaultyNode::apply(const Command& original) {
         break;
       }
   }
+  // layer-kept-at-pick-id
+  if (auto* x = std::get_if<cmd::LayerCreate>(&c); x && is("layer-kept-at-pick-id") && x->layer_id == kNone16 &&
+                                                    !x->name.empty())
+    return answer(keep_layer_at_pick_id(*x));
   // mid-range-ids-dropped: a new vertex or polygon past the bound that the
   // reference would create is answered ok and not stored. The r6 host drops
   // ids more than 4,096 past its storage (4,129 on a fresh node); ids from
@@ -384,6 +394,30 @@ FaultyAnswer FaultyNode::apply(const Command& original) {
     }
   }
   return answer(r);
+}
+
+// The node cannot hold a layer at 0xFFFF by a command (it picks): the layer
+// kept there is moved to a free id that stands in for 0xFFFF, the command
+// applied at that id (creating or re-creating it), and the layer moved back.
+Reason FaultyNode::keep_layer_at_pick_id(cmd::LayerCreate x) {
+  auto& layers = const_cast<std::map<std::uint16_t, Layer>&>(node_.layers());  // test-only: reach into the node's storage
+  std::uint16_t stand_in = 0;
+  for (std::uint32_t id = 2; id < kNone16 && !stand_in; ++id)
+    if (!layers.count(static_cast<std::uint16_t>(id))) stand_in = static_cast<std::uint16_t>(id);
+  if (!stand_in) return Reason::NoFreeId;
+  const auto move = [&layers](std::uint16_t from, std::uint16_t to) {
+    auto n = layers.extract(from);
+    if (n.empty()) return;
+    n.key() = to;
+    n.mapped().id = to;
+    layers.insert(std::move(n));
+  };
+  move(kNone16, stand_in);
+  x.layer_id = stand_in;
+  const Reason r = apply_node(x);
+  move(stand_in, kNone16);
+  node_changed();
+  return r;
 }
 
 namespace {

@@ -82,6 +82,8 @@ class FaultyNode {
   FaultyAnswer apply_breaking(const Command& c, Rule broken);
   std::string rule_fault_snapshot(std::string text) const;
   FaultyAnswer answer(Reason r) const;
+  // layer-kept-at-pick-id: `x` (layer id 0xFFFF) applied to the layer kept at 0xFFFF.
+  Reason keep_layer_at_pick_id(cmd::LayerCreate x);
   // node_.apply, logged (history_) and followed by the digest.
   Reason apply_node(const Command& c, RuleTrace* trace = nullptr);
   // node_ replaced or reached into: the digest is computed again when next asked.
