@@ -173,6 +173,12 @@ Answer VerseImplementation::probe_bone_form() {
 }
 
 VerseImplementation::~VerseImplementation() {
+  if (std::getenv("VGC_VERSE_STATS"))
+    fmt::print(stderr, "verse route: {} commands sent, {} round trips ({:.2f} per command), {} driver logins, {} driver "
+                       "sessions ended by the host\n",
+               commands_sent_, round_trips_,
+               commands_sent_ ? static_cast<double>(round_trips_) / static_cast<double>(commands_sent_) : 0.0,
+               driver_logins_, driver_drops_);
   if (driver_ && !broken_) {
     std::vector<std::uint32_t> ids = pool_.clear();
     if (have_node_) ids.push_back(node_);
@@ -267,6 +273,7 @@ Answer VerseImplementation::connect() {
                                             "\": " + st.to_string() +
                                             (st.code == verse::Status::Code::Timeout ? " (--start-timeout)" : ""));
   }
+  ++driver_logins_;
   driver_avatar_ = driver_->avatar();
   driver_announced_ = driver_dropped_ = desync_risk_ = false;
   // The observer follows the index of avatars (the driver's being destroyed
@@ -390,6 +397,7 @@ Answer VerseImplementation::reset() {
   if (driver_dropped_ && !broken_) {  // seen after the command that caused it was judged
     broken_ = true;
     driver_lost_ = true;
+    ++driver_drops_;
   }
   if (broken_ || !driver_ || !driver_->connected() || !observer_->connected()) return start();
   Answer a = make_node(kFirstCreateSeconds);
@@ -498,6 +506,7 @@ Answer VerseImplementation::settle(const std::string& what) {
                                              ": it dropped the session (r6 does so silently when the rest of a "
                                              "packet it could not decode reads as connect_terminate)");
     driver_lost_ = true;
+    ++driver_drops_;
     return a;
   };
   // The round trip: the driver's name change after its command(s).
@@ -584,6 +593,7 @@ Answer VerseImplementation::apply(const Command& c) {
   }
   if (const verse::Status st = driver_->send_geometry(node_, c); !st.ok())
     return failed(call_status_of(st), "sending `" + print_command(c) + "`: " + st.to_string());
+  ++commands_sent_;
   if (may_desynchronise_r6(c)) desync_risk_ = true;
   first_broadcast_.clear();
   counting_broadcasts_ = true;

@@ -127,6 +127,14 @@ class VerseImplementation final : public Implementation {
   // of on a loaded machine (docs/verse_wire.md "Where the time of a wire
   // run goes"). For tests and profiles.
   std::uint64_t round_trips() const { return round_trips_; }
+  // How many commands apply() sent to the host (not counting those the
+  // wire cannot carry), and how many times a session of the driver was
+  // lost (the host ended it) and logged in again. With round_trips(): the
+  // route's cost per command. With $VGC_VERSE_STATS set, the adapter
+  // prints these on stderr when it ends, one line starting "verse route:"
+  // (docs/verse_wire.md "Where the time of a wire run goes").
+  std::uint64_t commands_sent() const { return commands_sent_; }
+  std::uint64_t driver_logins() const { return driver_logins_; }
 
  private:
   Answer connect();
@@ -201,6 +209,9 @@ class VerseImplementation final : public Implementation {
   bool driver_lost_ = false;  // only the driver's session is gone: connect() keeps the observer
   std::uint64_t barrier_count_ = 0;
   std::uint64_t round_trips_ = 0;
+  std::uint64_t commands_sent_ = 0;   // commands_sent()
+  std::uint64_t driver_logins_ = 0;   // driver_logins(): every login of the driver, the first included
+  std::uint64_t driver_drops_ = 0;    // driver sessions the host ended (seen as such)
   bool ever_connected_ = false;
   std::string silent_since_;  // set when a host that answered before no longer answers a login
   VerseNodeMirror mirror_;
