@@ -56,6 +56,8 @@ class HistoryRecorder final : public Implementation {
   bool offers_late_view() override { return sut_.offers_late_view(); }
   void use_late_view(bool on) override { sut_.use_late_view(on); }
   std::string late_view_wrong_format() override { return sut_.late_view_wrong_format(); }
+  void expect_commands(std::vector<Command> next) override { sut_.expect_commands(std::move(next)); }
+  bool last_apply_batched() const override { return sut_.last_apply_batched(); }
 
   // The commands since the running instance started, case by case.
   const std::vector<std::vector<Command>>& history() const { return history_; }
