@@ -104,6 +104,25 @@ std::optional<WireSlot> slot_of(const Command& c) {
       c);
 }
 
+// The slots a slot write may make the host send a message for: its own,
+// and its element's base slot (layer 0 for a vertex, layer 1 for a
+// polygon), since a write for an element that is not live may create it:
+// r6 takes a VERTEX_XYZ write on any layer for a vertex that is not live as
+// the vertex's creation, writes it into every XYZ layer and sends it as a
+// write of layer 0 (`vs_node_geometry.c` callback_send_g_vertex_set_xyz_*).
+// A later write of that base slot in the same flush replaces r6's unsent
+// message, so two commands of a batch may not share any of these slots.
+std::vector<WireSlot> footprint_of(const Command& c) {
+  const auto own = slot_of(c);
+  if (!own) return {};
+  std::vector<WireSlot> out{*own};
+  const bool vertex = std::visit([](const auto& x) { return HasLayerAndVertex<std::decay_t<decltype(x)>>::value; }, c) ||
+                      std::holds_alternative<cmd::VertexDelete>(c);
+  const WireSlot base{static_cast<std::uint16_t>(vertex ? 0 : 1), own->second};
+  if (base != *own) out.push_back(base);
+  return out;
+}
+
 // Whether a command may share a round trip with others: it writes one
 // slot and, by the spec, nothing else (a delete also removes its element's
 // slots, and a vertex's polygons: it keeps its own round trip), it is no
@@ -727,12 +746,19 @@ Answer VerseImplementation::apply(const Command& c) {
   }
   if (hinted && !batch_off_ && batchable(c)) {
     std::vector<Command> batch{c};
-    std::set<WireSlot> slots{*slot_of(c)};
-    // The commands that follow, while each writes a slot of its own (r6
+    std::set<WireSlot> slots;
+    for (const WireSlot& w : footprint_of(c)) slots.insert(w);
+    // The commands that follow, while each one's slots are its own (r6
     // sends a subscriber one message per address, the last: two commands
-    // writing one slot could not be told apart).
+    // that may write one slot could not be told apart).
+    const auto own_slots = [&slots](const Command& x) {
+      for (const WireSlot& w : footprint_of(x))
+        if (slots.count(w)) return false;
+      return true;
+    };
     while (batch.size() < kMaxBatch && !expected_.empty() && !expected_.front().key.empty() &&
-           batchable(expected_.front().command) && slots.insert(*slot_of(expected_.front().command)).second) {
+           batchable(expected_.front().command) && own_slots(expected_.front().command)) {
+      for (const WireSlot& w : footprint_of(expected_.front().command)) slots.insert(w);
       batch.push_back(expected_.front().command);
       expected_.pop_front();
     }
@@ -785,7 +811,8 @@ Answer VerseImplementation::apply_batch(const std::vector<Command>& batch, bool 
   if (told_apart) {
     std::map<WireSlot, std::size_t> by_slot;
     const std::size_t slotted = tail ? batch.size() - 1 : batch.size();
-    for (std::size_t i = 0; i < slotted; ++i) by_slot[*slot_of(batch[i])] = i;
+    for (std::size_t i = 0; i < slotted; ++i)
+      for (const WireSlot& w : footprint_of(batch[i])) by_slot[w] = i;
     for (std::size_t k = 0; k < captured_.size(); ++k) {
       auto& w = captured_[k];
       const auto* g = std::get_if<verse::wire::Geometry>(&w);

@@ -31,8 +31,9 @@
 // Several commands before one barrier (issue 31): when the caller says
 // which commands come next (expect_commands: the runner's case, a replay),
 // apply() sends the next slot writes (vertex and polygon values, each
-// writing one (layer, element) slot, no two the same slot, none asking the
-// host to pick an id, at most 16) each in a packet of its own, optionally
+// writing one (layer, element) slot, no two the same slot or the same
+// element's base slot (a write may create its element: r6 sends that as a
+// layer-0 write), none asking the host to pick an id, at most 16) each in a packet of its own, optionally
 // ended by one command that is no slot write (a layer, crease or bone
 // command, a delete that cannot touch the batch's slots: may_end_batch),
 // and then one barrier. What the observer received for the node is sorted
