@@ -40,11 +40,35 @@ Node ProgramChecker::rebuild(std::size_t commands) const {
 StepResult ProgramChecker::full_step(const Command& c, std::vector<DerivedChange>* derived_changed) {
   Node after;
   StepResult r = check_step(model_, c, sut_, &after, follow_choices_);
+  if (r.failure && sut_.last_apply_batched() && (!judge_again_ || judge_again_(*r.failure)))
+    r = judge_alone(c, std::move(r), &after);
   if (derived_changed && !r.failure && r.not_judged.empty()) *derived_changed = derived_changes(model_, after);
   if (r.not_judged.empty()) {
     applied_.push_back(r.model_command ? *r.model_command : c);
+    as_sent_.push_back(c);
     model_ = std::move(after);
   }
+  return r;
+}
+
+bool ProgramChecker::send_told(const std::vector<Command>& sent, std::size_t n) {
+  sut_.expect_commands(std::vector<Command>(sent.begin(), sent.begin() + static_cast<std::ptrdiff_t>(n)));
+  bool ok = true;
+  for (std::size_t i = 0; ok && i < n; ++i) ok = sut_.apply(sent[i]).status == CallStatus::Ok;
+  sut_.expect_commands({});
+  return ok;
+}
+
+StepResult ProgramChecker::judge_alone(const Command& c, StepResult batched, Node* after) {
+  // The program so far from a fresh node (told to the implementation, so a
+  // route may send it in batches again: those steps were judged right),
+  // then `c` with nothing told: on its own, one round trip, as a route
+  // without batches judges it.
+  const bool replayed = sut_.reset().status == CallStatus::Ok && send_told(as_sent_, as_sent_.size());
+  if (!replayed) return batched;  // the replay itself failed: the batch's judgement stands
+  Node again;
+  StepResult r = check_step(model_, c, sut_, &again, follow_choices_);
+  *after = std::move(again);
   return r;
 }
 
@@ -179,9 +203,7 @@ std::optional<Localized> ProgramChecker::bisect(const std::vector<Command>& sent
   // Sends the first `n` commands to a fresh implementation; false when a call fails.
   const auto send_prefix = [&](std::size_t n) {
     if (sut_.reset().status != CallStatus::Ok) return false;
-    for (std::size_t i = 0; i < n; ++i)
-      if (sut_.apply(sent[i]).status != CallStatus::Ok) return false;
-    return true;
+    return send_told(sent, n);
   };
   std::size_t lo = agreed, hi = differs;
   while (hi - lo > 1) {
@@ -200,6 +222,7 @@ std::optional<Localized> ProgramChecker::bisect(const std::vector<Command>& sent
   if (!r.failure) return std::nullopt;
   model_ = std::move(after);
   applied_.resize(hi);
+  as_sent_.assign(sent.begin(), sent.begin() + static_cast<std::ptrdiff_t>(hi));
   if (sparse_) sent_.resize(hi);
   return Localized{std::move(r), static_cast<int>(hi - 1)};
 }
@@ -207,8 +230,7 @@ std::optional<Localized> ProgramChecker::bisect(const std::vector<Command>& sent
 std::optional<Localized> ProgramChecker::judge_at(const std::vector<Command>& sent, std::size_t index) {
   if (index >= sent.size() || sent.size() != applied_.size() || sut_.reset().status != CallStatus::Ok)
     return std::nullopt;
-  for (std::size_t i = 0; i < index; ++i)
-    if (sut_.apply(sent[i]).status != CallStatus::Ok) return std::nullopt;
+  if (!send_told(sent, index)) return std::nullopt;
   const Node before = rebuild(index);
   std::optional<Finding> call;
   std::string difference;
@@ -218,6 +240,7 @@ std::optional<Localized> ProgramChecker::judge_at(const std::vector<Command>& se
   if (!r.failure) return std::nullopt;
   model_ = std::move(after);
   applied_.resize(index + 1);
+  as_sent_.assign(sent.begin(), sent.begin() + static_cast<std::ptrdiff_t>(index + 1));
   if (sparse_) sent_.resize(index + 1);
   return Localized{std::move(r), static_cast<int>(index)};
 }
@@ -225,6 +248,7 @@ std::optional<Localized> ProgramChecker::judge_at(const std::vector<Command>& se
 void ProgramChecker::drop_last() {
   if (applied_.empty()) return;
   applied_.pop_back();
+  if (!as_sent_.empty()) as_sent_.pop_back();
   if (sparse_ && !sent_.empty()) sent_.pop_back();
   agreed_ = std::min(agreed_, sent_.size());
   model_ = rebuild(applied_.size());

@@ -59,6 +59,12 @@ class ProgramChecker {
   // reading is not seen on such a route (with ?digest it is).
   void allow_sparse_reading();
 
+  // Which steps judged wrong on an answer from a batch are judged again
+  // alone (judge_alone): by default every one; the runner spares those
+  // whose finding is in a clause already found so (they are taken out or
+  // set aside, and decide nothing).
+  void judge_again_alone(std::function<bool(const Finding&)> which) { judge_again_ = std::move(which); }
+
   // Runs `c` on the model and on the implementation and compares them (as
   // check_step). When derived_changed is not null it receives the derived
   // lines the reference's step changed (for exercised_clauses). A failure
@@ -111,6 +117,17 @@ class ProgramChecker {
  private:
   Node rebuild(std::size_t commands) const;  // a fresh node with the first `commands` of applied_
   StepResult full_step(const Command& c, std::vector<DerivedChange>* derived_changed);
+  // A step judged wrong on an answer from a batch (several commands before
+  // one round trip: Implementation::last_apply_batched) is judged again
+  // from a fresh node that was sent the program so far, with the command
+  // sent on its own (one round trip, nothing told ahead): that judgement
+  // is the step's, so a batch changes no verdict and no blame. `batched`
+  // stands when the replay cannot be made.
+  StepResult judge_alone(const Command& c, StepResult batched, Node* after);
+  // Sends the first `n` of `sent` (the implementation told them ahead, so
+  // a route may batch them); false when a call fails. Nothing is judged:
+  // the caller compares the state after them.
+  bool send_told(const std::vector<Command>& sent, std::size_t n);
   // A step whose answer is as the reference's (or `done`): the documents
   // are read only when due.
   StepResult sparse_step(const Command& c, const Answer& answer, StepResult result);
@@ -136,6 +153,8 @@ class ProgramChecker {
   NodeDigest digest_;
   ChangeLog changes_;
   std::vector<Command> applied_;
+  std::function<bool(const Finding&)> judge_again_;  // empty: every step
+  std::vector<Command> as_sent_;    // full steps: the commands judged, as sent (judge_alone replays them)
   std::string late_shape_;
   std::optional<Finding> late_format_;
 };

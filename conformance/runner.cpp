@@ -46,6 +46,11 @@ struct CaseContext {
   Clock::time_point deadline;
   bool deadline_hit = false;
   std::vector<Command> trace;           // commands of the current case so far
+  // The case's drawn commands (run_drawn_commands) and the index of the
+  // next Step to run among them: what is left of the case is told to the
+  // implementation before each step (Implementation::expect_commands).
+  std::vector<Command> drawn;
+  std::size_t drawn_next = 0;
   // The reference state after trace (checker->model()), and how each
   // command is compared (program_checker.h); a new one per case.
   std::unique_ptr<ProgramChecker> checker;
@@ -263,6 +268,16 @@ bool reach_wanted() {
   return false;
 }
 
+// A case's checker. A step judged wrong on an answer from a batch is judged
+// again on its own (ProgramChecker::judge_again_alone) unless its clause
+// already has a finding of that kind: such a step is only taken out or set
+// aside, which does not decide any clause's status.
+std::unique_ptr<ProgramChecker> case_checker(CaseContext& c) {
+  auto checker = std::make_unique<ProgramChecker>(*c.sut, /*follow_choices=*/true);
+  checker->judge_again_alone([&c](const Finding& f) { return !is_tolerated(c, f); });
+  return checker;
+}
+
 bool take_step_out(const StepResult& r) {
   CaseContext& c = *g_context;
   const Finding& f = *r.failure;
@@ -278,9 +293,14 @@ bool take_step_out(const StepResult& r) {
     // fail_case (its program would no longer show the divergence): a reset
     // or replay that fails sets the case aside here.
     if (c.sut->reset().status != CallStatus::Ok) return c.set_aside_case = true;
-    c.checker = std::make_unique<ProgramChecker>(*c.sut, /*follow_choices=*/true);
+    c.checker = case_checker(c);
+    c.sut->expect_commands(c.trace);  // the replay, told ahead (a route may batch it)
     for (const auto& cmd : c.trace)
-      if (c.checker->step(cmd).failure) return c.set_aside_case = true;
+      if (c.checker->step(cmd).failure) {
+        c.sut->expect_commands({});
+        return c.set_aside_case = true;
+      }
+    c.sut->expect_commands({});
   }
   ++c.taken_out;
   if (!c.shrinking) ++c.steps_taken_out;
@@ -398,6 +418,7 @@ struct Step final : rc::state::Command<Node, Implementation> {
 
   void run(const Node& /*rapidcheck_model*/, Implementation& sut) const override {
     CaseContext& c = *g_context;
+    const std::size_t at = c.drawn_next++;  // this step's index among the drawn commands
     if (c.stop || c.abandoned || c.set_aside_case || c.deadline_hit || past_deadline()) return;
     if (in_costly_class(command, *c.avoided)) return;  // a class that costs a time-out: found once already
     c.trace.push_back(command);
@@ -406,8 +427,18 @@ struct Step final : rc::state::Command<Node, Implementation> {
     // picked), the model follows it (implementation_choice.h) and the rest
     // of the case is still judged.
     (void)sut;  // c.checker holds it
+    // What is left of the case, this command first, is told to the
+    // implementation for this step only (a route may send several commands
+    // before one round trip; replays in between send theirs on their own).
+    if (at < c.drawn.size()) {
+      std::vector<vgc::Command> next;
+      for (std::size_t k = at; k < c.drawn.size(); ++k)
+        if (!in_costly_class(c.drawn[k], *c.avoided)) next.push_back(c.drawn[k]);
+      c.sut->expect_commands(std::move(next));
+    }
     std::vector<DerivedChange> derived_changed;
     StepResult r = c.checker->step(command, &derived_changed);
+    c.sut->expect_commands({});
     if (cancel_signal()) {  // the step may have been cut short: it proves nothing
       c.deadline_hit = true;
       return;
@@ -641,7 +672,7 @@ bool case_runs_here(CaseContext& c, bool counted) {
 
 void reset_case(CaseContext& c) {
   c.trace.clear();
-  c.checker = std::make_unique<ProgramChecker>(*c.sut, /*follow_choices=*/true);
+  c.checker = case_checker(c);
   c.abandoned = false;
   c.set_aside_case = false;
   c.not_judged_case = false;
@@ -689,6 +720,18 @@ void run_drawn_commands(CaseContext& c, Focus focus) {
       return std::shared_ptr<const rc::state::Command<Node, Implementation>>(std::make_shared<Step>(cmd));
     });
   });
+  c.drawn.clear();
+  for (const auto& step : commands)
+    if (const auto* st = dynamic_cast<const Step*>(step.get())) c.drawn.push_back(st->command);
+  c.drawn_next = 0;
+  struct Forget {  // however the case ends (RC_FAIL throws)
+    CaseContext& c;
+    ~Forget() {
+      c.drawn.clear();
+      c.drawn_next = 0;
+    }
+  } forget{c};
+  if (c.drawn.size() != commands.size()) c.drawn.clear();  // not all Steps: no lookahead
   rc::state::runAll(commands, start, *c.sut);
 }
 
@@ -1287,6 +1330,13 @@ ReplayResult replay_program(const Program& program, Implementation& sut) {
   // each of 10^4 commands costs the node's size squared on a route without
   // ?digest.
   if (program.commands.size() >= kScaleMinElements / 2) checker.allow_sparse_reading();
+  // The program is told ahead (a route may send several commands before one
+  // round trip; a step judged wrong on a batch is judged again alone).
+  sut.expect_commands(program.commands);
+  struct Forget {
+    Implementation& sut;
+    ~Forget() { sut.expect_commands({}); }
+  } forget{sut};
   for (std::size_t i = 0; i < program.commands.size(); ++i) {
     StepResult s = checker.step(program.commands[i]);
     for (auto& n : s.notes) r.notes.push_back(n);

@@ -48,6 +48,10 @@ class ForwardingImplementation : public Implementation {
     if (to_) to_->use_late_view(on);
   }
   std::string late_view_wrong_format() override { return to_ ? to_->late_view_wrong_format() : std::string(); }
+  void expect_commands(std::vector<Command> next) override {
+    if (to_) to_->expect_commands(std::move(next));
+  }
+  bool last_apply_batched() const override { return to_ && to_->last_apply_batched(); }
 
  protected:
   // Forwards to `to` (not owned; may be null: see forward_to). `name` is

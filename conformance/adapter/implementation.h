@@ -19,6 +19,7 @@
 #include <memory>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "command.h"
 #include "document_digest.h"
@@ -173,6 +174,20 @@ class Implementation {
   virtual void expect_answer_bytes(std::size_t bytes) { (void)bytes; }
   // The digests of its two documents now; only called when offers_digest().
   virtual DigestAnswer digest() { return {CallStatus::ProtocolError, {}, "not supported"}; }
+  // The commands the next apply() calls will most likely ask for, in
+  // order, the next one first (the runner's case: what is left of it);
+  // replaces the previous list, and an empty list says nothing is known. A
+  // route whose every command costs a round trip (the Verse wire) may send
+  // several of them before one round trip and answer each apply() from
+  // what came back; apply() of another command than the one sent next
+  // puts the implementation back in the state the answered commands made
+  // (docs/verse_wire.md "Several commands before one barrier"). Default:
+  // ignored.
+  virtual void expect_commands(std::vector<Command> next) { (void)next; }
+  // Whether the last apply() was answered from such a batch: a step judged
+  // wrong on it is judged again with the command sent on its own
+  // (ProgramChecker), so a batch never changes a verdict or its blame.
+  virtual bool last_apply_batched() const { return false; }
   // Whether the route can show what a party that starts watching the node
   // now would be sent (the Verse wire: a session that subscribes late),
   // which can differ from what was sent to those that watched it all along

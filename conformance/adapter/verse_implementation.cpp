@@ -7,6 +7,7 @@
 #include <optional>
 #include <set>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 #include <fmt/core.h>
@@ -60,6 +61,118 @@ bool may_desynchronise_r6(const Command& c) {
   if (const auto* b = std::get_if<cmd::BoneCreate>(&c))
     return long_name(b->weight) || long_name(b->reference) || long_name(b->pos_label) || long_name(b->rot_label);
   return false;
+}
+
+// Commands sent before one round trip at most (each in a packet of its own).
+constexpr std::size_t kMaxBatch = 16;
+
+// The slot (layer, element) a command writes, as the host's message to a
+// subscriber addresses it: r6 addresses every element command by its
+// command number, node, layer and element (`v_cmd_buf_set_address_size`,
+// 11 bytes), and a subscriber of one format gets one command number per
+// layer, a delete sharing its set's address. nullopt for every other
+// command (layers, creases, bones, subscriptions).
+using WireSlot = std::pair<std::uint16_t, std::uint32_t>;
+
+template <typename T>
+struct HasLayerAndVertex {
+  template <typename U>
+  static auto test(int) -> decltype(std::declval<U>().layer_id, std::declval<U>().vertex_id, std::true_type{});
+  template <typename>
+  static std::false_type test(...);
+  static constexpr bool value = decltype(test<T>(0))::value;
+};
+template <typename T>
+struct HasLayerAndPolygon {
+  template <typename U>
+  static auto test(int) -> decltype(std::declval<U>().layer_id, std::declval<U>().polygon_id, std::true_type{});
+  template <typename>
+  static std::false_type test(...);
+  static constexpr bool value = decltype(test<T>(0))::value;
+};
+
+std::optional<WireSlot> slot_of(const Command& c) {
+  return std::visit(
+      [](const auto& x) -> std::optional<WireSlot> {
+        using T = std::decay_t<decltype(x)>;
+        if constexpr (std::is_same_v<T, cmd::VertexDelete>) return WireSlot{0, x.vertex_id};
+        else if constexpr (std::is_same_v<T, cmd::PolygonDelete>) return WireSlot{1, x.polygon_id};
+        else if constexpr (HasLayerAndVertex<T>::value) return WireSlot{x.layer_id, x.vertex_id};
+        else if constexpr (HasLayerAndPolygon<T>::value) return WireSlot{x.layer_id, x.polygon_id};
+        else return std::nullopt;
+      },
+      c);
+}
+
+// The slots a slot write may make the host send a message for: its own,
+// and its element's base slot (layer 0 for a vertex, layer 1 for a
+// polygon), since a write for an element that is not live may create it:
+// r6 takes a VERTEX_XYZ write on any layer for a vertex that is not live as
+// the vertex's creation, writes it into every XYZ layer and sends it as a
+// write of layer 0 (`vs_node_geometry.c` callback_send_g_vertex_set_xyz_*).
+// A later write of that base slot in the same flush replaces r6's unsent
+// message, so two commands of a batch may not share any of these slots.
+std::vector<WireSlot> footprint_of(const Command& c) {
+  const auto own = slot_of(c);
+  if (!own) return {};
+  std::vector<WireSlot> out{*own};
+  const bool vertex = std::visit([](const auto& x) { return HasLayerAndVertex<std::decay_t<decltype(x)>>::value; }, c) ||
+                      std::holds_alternative<cmd::VertexDelete>(c);
+  const WireSlot base{static_cast<std::uint16_t>(vertex ? 0 : 1), own->second};
+  if (base != *own) out.push_back(base);
+  return out;
+}
+
+// Whether a command may share a round trip with others: it writes one
+// slot and, by the spec, nothing else (a delete also removes its element's
+// slots, and a vertex's polygons: it keeps its own round trip), it is no
+// alias of a delete as the wire carries it, and r6 does not misread it.
+bool batchable(const Command& c) {
+  if (std::holds_alternative<cmd::VertexDelete>(c) || std::holds_alternative<cmd::PolygonDelete>(c)) return false;
+  const auto slot = slot_of(c);
+  // An element id of 0xFFFFFFFF asks the host to pick one: which slot its
+  // message writes is the host's choice, so it keeps its own round trip.
+  if (!slot || slot->second == 0xFFFFFFFFu || may_desynchronise_r6(c)) return false;
+  return verse::wire_canonical(c).index() == c.index();
+}
+
+// Whether `t` may end a batch of slot writes (`slots`, one per command
+// before it): every message the host sends for the node that is not a
+// write of one of those slots is then `t`'s. So `t` writes none of them
+// (a delete's own slot), and nothing it may cause by the spec lands on
+// them: a layer, crease or bone command sends messages of their own kinds
+// (and the observer's subscription to a new layer, made after the round
+// trip, is `t`'s too, as on its own); a vertex_delete may delete polygons
+// (layer 1 slots), so it ends only a batch that writes none. A command
+// r6 misreads keeps its own round trip; so does an element id the host
+// picks (0xFFFFFFFF: which slot it writes is the host's choice).
+bool may_end_batch(const Command& t, const std::set<WireSlot>& slots) {
+  if (may_desynchronise_r6(t)) return false;
+  const Command c = verse::wire_canonical(t);
+  if (std::holds_alternative<cmd::LayerCreate>(c) || std::holds_alternative<cmd::LayerDestroy>(c) ||
+      std::holds_alternative<cmd::LayerSubscribe>(c) || std::holds_alternative<cmd::LayerUnsubscribe>(c) ||
+      std::holds_alternative<cmd::CreaseSetVertex>(c) || std::holds_alternative<cmd::CreaseSetEdge>(c) ||
+      std::holds_alternative<cmd::BoneCreate>(c) || std::holds_alternative<cmd::BoneDestroy>(c))
+    return true;
+  if (const auto* p = std::get_if<cmd::PolygonDelete>(&c))
+    return p->polygon_id != 0xFFFFFFFFu && !slots.count(WireSlot{1, p->polygon_id});
+  if (const auto* v = std::get_if<cmd::VertexDelete>(&c)) {
+    if (v->vertex_id == 0xFFFFFFFFu || slots.count(WireSlot{0, v->vertex_id})) return false;
+    for (const WireSlot& s : slots)
+      if (s.first == 1) return false;
+    return true;
+  }
+  return false;
+}
+
+// The bytes the wire carries for `c` (on node 0): what apply() is matched
+// with what was sent ahead by. false when the wire cannot carry it.
+bool wire_key(const Command& c, verse::BoneForm form, std::string* key) {
+  verse::wire::Geometry g;
+  g.node_id = 0;
+  g.command = c;
+  key->clear();
+  return verse::encode_command(g, key, form).ok();
 }
 
 CallStatus call_status_of(const verse::Status& s) {
@@ -170,6 +283,15 @@ Answer VerseImplementation::probe_bone_form() {
 }
 
 VerseImplementation::~VerseImplementation() {
+  if (std::getenv("VGC_VERSE_STATS"))
+    fmt::print(stderr, "verse route: {} commands sent, {} round trips ({:.2f} per command), {} driver logins, {} driver "
+                       "sessions ended by the host ({} after a command r6 misreads)\n",
+               commands_sent_, round_trips_,
+               commands_sent_ ? static_cast<double>(round_trips_) / static_cast<double>(commands_sent_) : 0.0,
+               driver_logins_, driver_drops_, driver_drops_known_);
+  if (std::getenv("VGC_VERSE_STATS"))
+    fmt::print(stderr, "verse route: {} batches of {} commands in all, {} sent again one per round trip, {} rebuilt nodes\n",
+               batches_, batched_commands_, batch_fallbacks_, rebuilds_);
   if (driver_ && !broken_) {
     std::vector<std::uint32_t> ids = pool_.clear();
     if (have_node_) ids.push_back(node_);
@@ -264,6 +386,7 @@ Answer VerseImplementation::connect() {
                                             "\": " + st.to_string() +
                                             (st.code == verse::Status::Code::Timeout ? " (--start-timeout)" : ""));
   }
+  ++driver_logins_;
   driver_avatar_ = driver_->avatar();
   driver_announced_ = driver_dropped_ = desync_risk_ = false;
   // The observer follows the index of avatars (the driver's being destroyed
@@ -384,9 +507,15 @@ Answer VerseImplementation::start() {
 }
 
 Answer VerseImplementation::reset() {
+  pending_.clear();  // sent ahead to the node being left
+  since_fresh_.clear();
+  batch_off_ = false;
+  last_batched_ = false;
   if (driver_dropped_ && !broken_) {  // seen after the command that caused it was judged
     broken_ = true;
     driver_lost_ = true;
+    ++driver_drops_;
+    if (desync_risk_) ++driver_drops_known_;
   }
   if (broken_ || !driver_ || !driver_->connected() || !observer_->connected()) return start();
   Answer a = make_node(kFirstCreateSeconds);
@@ -436,9 +565,15 @@ bool VerseImplementation::absorb(const verse::WireCommand& w, std::string* error
   if (!pooled && counting_broadcasts_ && first_broadcast_.empty()) first_broadcast_ = print_command(g->command);
   const bool follow_layers = !pooled || !pool_.settled(g->node_id);
   if (const auto* lc = std::get_if<cmd::LayerCreate>(&g->command); lc && !lc->name.empty() && follow_layers) {
+    // (While a batch settles, mirror_ lacks only the slot writes of the
+    // batch's commands, so its layers are the node's before the batch.)
     const auto it = m.layers().find(lc->layer_id);
     if (it == m.layers().end() || static_cast<std::uint8_t>(it->second.type) != lc->type)
       new_layers_.insert({g->node_id, lc->layer_id});  // new, or re-typed (an r6 host then drops its subscribers)
+  }
+  if (!pooled && capturing_) {  // a batch settling: sorted by command afterwards (apply_batch)
+    captured_.push_back(w);
+    return true;
   }
   if (m.apply(g->command, error)) return true;
   if (!pooled) return false;
@@ -495,6 +630,8 @@ Answer VerseImplementation::settle(const std::string& what) {
                                              ": it dropped the session (r6 does so silently when the rest of a "
                                              "packet it could not decode reads as connect_terminate)");
     driver_lost_ = true;
+    ++driver_drops_;
+    if (desync_risk_) ++driver_drops_known_;
     return a;
   };
   // The round trip: the driver's name change after its command(s).
@@ -554,16 +691,27 @@ Answer VerseImplementation::settle(const std::string& what) {
   }
   if (Answer a = absorb_arrived(what); a.status != CallStatus::Ok) return a;
   counting_broadcasts_ = false;  // what follows answers the observer's own subscriptions
+  capture_mark_ = captured_.size();
   // Layers announced: the observer subscribes and waits for their contents.
   if (Answer a = subscribe_new_layers(node_, deadline, what); a.status != CallStatus::Ok) return a;
   drain_driver();
   return {};
 }
 
+void VerseImplementation::expect_commands(std::vector<Command> next) {
+  expected_.clear();
+  for (auto& c : next) {
+    Expected e{{}, std::move(c)};
+    if (!wire_key(e.command, bone_form_, &e.key)) e.key.clear();  // not sent: never batched
+    expected_.push_back(std::move(e));
+  }
+}
+
 Answer VerseImplementation::apply(const Command& c) {
+  last_batched_ = false;
   if (broken_ || !have_node_)
     return failed(CallStatus::Crash, "the session with the Verse host was lost earlier; reset() logs in again");
-  const std::string what = "after `" + print_command(c) + "`";
+  std::string key;
   {
     // What the wire cannot carry (a name with a NUL inside: Verse strings
     // end at their first NUL) is not sent, and the step is not judged.
@@ -572,15 +720,62 @@ Answer VerseImplementation::apply(const Command& c) {
     g.command = c;
     std::string bytes;
     if (const verse::Status st = verse::encode_command(g, &bytes, bone_form_); !st.ok()) {
+      if (!expected_.empty() && expected_.front().key.empty()) expected_.pop_front();
       Answer a;
       a.not_sent = true;
       a.verdict_reported = false;
       a.detail = "the Verse wire cannot carry it (" + st.detail + ")";
       return a;
     }
+    (void)wire_key(c, bone_form_, &key);
   }
+  const bool hinted = !expected_.empty() && expected_.front().key == key;
+  if (hinted) expected_.pop_front();
+  if (!pending_.empty()) {
+    if (pending_.front().key == key) {  // sent ahead: answered from what came back for it
+      Prepared p = std::move(pending_.front());
+      pending_.pop_front();
+      return answer_from_batch(p.command, p.received, p.counted);
+    }
+    // Another command than the one sent next: the node holds commands
+    // nobody asked for; a fresh one is brought to the answered state.
+    if (Answer a = rebuild(); a.status != CallStatus::Ok) return a;
+  }
+  if (hinted && !batch_off_ && batchable(c)) {
+    std::vector<Command> batch{c};
+    std::set<WireSlot> slots;
+    for (const WireSlot& w : footprint_of(c)) slots.insert(w);
+    // The commands that follow, while each one's slots are its own (r6
+    // sends a subscriber one message per address, the last: two commands
+    // that may write one slot could not be told apart).
+    const auto own_slots = [&slots](const Command& x) {
+      for (const WireSlot& w : footprint_of(x))
+        if (slots.count(w)) return false;
+      return true;
+    };
+    while (batch.size() < kMaxBatch && !expected_.empty() && !expected_.front().key.empty() &&
+           batchable(expected_.front().command) && own_slots(expected_.front().command)) {
+      for (const WireSlot& w : footprint_of(expected_.front().command)) slots.insert(w);
+      batch.push_back(expected_.front().command);
+      expected_.pop_front();
+    }
+    bool tail = false;
+    if (batch.size() < kMaxBatch && !expected_.empty() && !expected_.front().key.empty() &&
+        !batchable(expected_.front().command) && may_end_batch(expected_.front().command, slots)) {
+      batch.push_back(expected_.front().command);
+      expected_.pop_front();
+      tail = true;
+    }
+    if (batch.size() > 1) return apply_batch(batch, tail);
+  }
+  return apply_one(c);
+}
+
+Answer VerseImplementation::apply_one(const Command& c) {
+  const std::string what = "after `" + print_command(c) + "`";
   if (const verse::Status st = driver_->send_geometry(node_, c); !st.ok())
     return failed(call_status_of(st), "sending `" + print_command(c) + "`: " + st.to_string());
+  ++commands_sent_;
   if (may_desynchronise_r6(c)) desync_risk_ = true;
   first_broadcast_.clear();
   counting_broadcasts_ = true;
@@ -589,7 +784,106 @@ Answer VerseImplementation::apply(const Command& c) {
   if (a.status != CallStatus::Ok) return a;
   a.verdict_reported = false;  // `done`: a host acknowledges nothing
   a.broadcast = first_broadcast_;  // ... but what it tells its subscribers is its verdict
+  since_fresh_.push_back(c);
   return a;
+}
+
+Answer VerseImplementation::apply_batch(const std::vector<Command>& batch, bool tail) {
+  for (const Command& c : batch) {
+    if (const verse::Status st = driver_->send_geometry(node_, c); !st.ok())
+      return failed(call_status_of(st), "sending `" + print_command(c) + "`: " + st.to_string());
+    ++commands_sent_;
+  }
+  captured_.clear();
+  capture_mark_ = 0;
+  capturing_ = true;
+  const Answer settled = settle("after `" + print_command(batch.front()) + "` and the " +
+                                std::to_string(batch.size() - 1) + " commands sent after it before one round trip");
+  capturing_ = false;
+  // What the host sent for the node, sorted by the slot each message
+  // writes: each slot is one command's.
+  std::vector<std::vector<verse::WireCommand>> received(batch.size());
+  std::size_t tail_counted = 0;  // the tail's messages before the observer's own subscriptions
+  bool told_apart = settled.status == CallStatus::Ok;
+  if (told_apart) {
+    std::map<WireSlot, std::size_t> by_slot;
+    const std::size_t slotted = tail ? batch.size() - 1 : batch.size();
+    for (std::size_t i = 0; i < slotted; ++i)
+      for (const WireSlot& w : footprint_of(batch[i])) by_slot[w] = i;
+    for (std::size_t k = 0; k < captured_.size(); ++k) {
+      auto& w = captured_[k];
+      const auto* g = std::get_if<verse::wire::Geometry>(&w);
+      const auto slot = g ? slot_of(g->command) : std::nullopt;
+      auto it = slot && k < capture_mark_ ? by_slot.find(*slot) : by_slot.end();
+      if (it == by_slot.end() && tail) {  // the last command's, whatever it is
+        if (k < capture_mark_) ++tail_counted;
+        received.back().push_back(std::move(w));
+        continue;
+      }
+      if (it == by_slot.end()) {
+        told_apart = false;
+        break;
+      }
+      received[it->second].push_back(std::move(w));
+    }
+  }
+  captured_.clear();
+  if (!told_apart) {
+    // A message no command of the batch explains (a host that writes other
+    // slots than the one asked), or a round trip that failed: the batch is
+    // sent again one command per round trip, on a fresh node brought to the
+    // state before it, so each command is answered as on its own.
+    ++batch_fallbacks_;
+    if (Answer a = rebuild(); a.status != CallStatus::Ok) {
+      last_batched_ = true;  // judged again on its own, if the route comes back
+      return settled.status != CallStatus::Ok ? settled : a;
+    }
+    batch_off_ = true;
+    return apply_one(batch.front());
+  }
+  ++batches_;
+  batched_commands_ += batch.size();
+  for (std::size_t i = 1; i < batch.size(); ++i) {
+    const bool last = tail && i + 1 == batch.size();
+    Prepared p{{}, batch[i], std::move(received[i]), 0};
+    p.counted = last ? tail_counted : p.received.size();
+    (void)wire_key(batch[i], bone_form_, &p.key);
+    pending_.push_back(std::move(p));
+  }
+  return answer_from_batch(batch.front(), received.front(), received.front().size());
+}
+
+Answer VerseImplementation::answer_from_batch(const Command& c, const std::vector<verse::WireCommand>& received,
+                                              std::size_t counted) {
+  Answer a;
+  for (std::size_t k = 0; k < received.size(); ++k) {
+    const auto& g = std::get<verse::wire::Geometry>(received[k]);
+    if (a.broadcast.empty() && k < counted) a.broadcast = print_command(g.command);
+    std::string error;
+    if (!mirror_.apply(g.command, &error))
+      return failed(CallStatus::ProtocolError, "after `" + print_command(c) + "`: " + error);
+  }
+  a.verdict_reported = false;  // `done`, as apply_one answers
+  since_fresh_.push_back(c);
+  last_batched_ = true;
+  return a;
+}
+
+Answer VerseImplementation::rebuild() {
+  const std::vector<Command> answered = std::move(since_fresh_);
+  const bool off = batch_off_;
+  ++rebuilds_;
+  Answer a = reset();  // drops pending_
+  batch_off_ = off;
+  if (a.status != CallStatus::Ok) return a;
+  for (const Command& c : answered) {
+    Answer r = apply_one(c);
+    if (r.status != CallStatus::Ok) {
+      r.detail = "sending the commands answered so far again, to a fresh node: " + r.detail;
+      return r;
+    }
+  }
+  return {};
 }
 
 Document VerseImplementation::snapshot() {
@@ -600,6 +894,9 @@ Document VerseImplementation::snapshot() {
 
 Document VerseImplementation::late_snapshot() {
   if (!have_node_) return {CallStatus::Crash, {}, "no node to subscribe to"};
+  if (!pending_.empty()) {  // the host holds commands sent ahead and never asked for
+    if (Answer a = rebuild(); a.status != CallStatus::Ok) return {a.status, {}, a.detail};
+  }
   late_wrong_format_.clear();
   for (int attempt = 0;; ++attempt) {
     if (!ensure_late()) return {CallStatus::Crash, {}, "the late subscriber could not log in"};

@@ -28,6 +28,28 @@
 // answering is a Timeout, bytes that do not parse a ProtocolError, a host
 // that ends the session a Crash, and the next reset() logs in again.
 //
+// Several commands before one barrier (issue 31): when the caller says
+// which commands come next (expect_commands: the runner's case, a replay),
+// apply() sends the next slot writes (vertex and polygon values, each
+// writing one (layer, element) slot, no two the same slot or the same
+// element's base slot (a write may create its element: r6 sends that as a
+// layer-0 write), none asking the host to pick an id, at most 16) each in a packet of its own, optionally
+// ended by one command that is no slot write (a layer, crease or bone
+// command, a delete that cannot touch the batch's slots: may_end_batch),
+// and then one barrier. What the observer received for the node is sorted
+// by the slot each message writes (a message that writes no slot of the
+// others is the ending command's), and each apply() of the batch is
+// answered from its own messages, applied to the mirror only then, so the
+// snapshot after each command is the one a barrier of its own would show.
+// r6 sends a subscriber one message per address (command, node, layer,
+// element) in an order of its own, so this is what it allows: distinct
+// slots keep every message, and the order of messages across slots does
+// not matter. A message no command of the batch explains sends the batch
+// again one command per round trip on a fresh node (and no batch until the
+// next reset); a command r6 misreads (may_desynchronise_r6) always has its
+// own barrier. A step judged wrong on a batched answer is judged again
+// alone (ProgramChecker), so a batch changes no verdict and no blame.
+//
 // reset(): the driver destroys the current geometry node and the next one
 // is taken from a pool of fresh nodes made ahead, in batches
 // (verse_node_pool.h: the driver's node_creates, the observer's
@@ -68,6 +90,7 @@
 
 #include <chrono>
 #include <cstdint>
+#include <deque>
 #include <memory>
 #include <set>
 #include <string>
@@ -113,6 +136,8 @@ class VerseImplementation final : public Implementation {
   Document snapshot() override;
   Document derived() override;
   RouteLimits limits() const override;
+  void expect_commands(std::vector<Command> next) override;
+  bool last_apply_batched() const override { return last_batched_; }
   bool offers_late_view() override { return true; }
   void use_late_view(bool on) override { late_view_ = on; }
   std::string late_view_wrong_format() override { return late_wrong_format_; }
@@ -127,9 +152,41 @@ class VerseImplementation final : public Implementation {
   // of on a loaded machine (docs/verse_wire.md "Where the time of a wire
   // run goes"). For tests and profiles.
   std::uint64_t round_trips() const { return round_trips_; }
+  // How many commands apply() sent to the host (not counting those the
+  // wire cannot carry), and how many times a session of the driver was
+  // lost (the host ended it) and logged in again. With round_trips(): the
+  // route's cost per command. With $VGC_VERSE_STATS set, the adapter
+  // prints these on stderr when it ends, one line starting "verse route:"
+  // (docs/verse_wire.md "Where the time of a wire run goes").
+  std::uint64_t commands_sent() const { return commands_sent_; }
+  std::uint64_t driver_logins() const { return driver_logins_; }
+  // Batches (class comment, "Several commands before one barrier"): how
+  // many were sent, the commands they held, and how many could not be told
+  // apart by what the host sent (sent again one per round trip).
+  std::uint64_t batches() const { return batches_; }
+  std::uint64_t batched_commands() const { return batched_commands_; }
+  std::uint64_t batch_fallbacks() const { return batch_fallbacks_; }
 
  private:
   Answer connect();
+  // apply() of one command, with its own round trip.
+  Answer apply_one(const Command& c);
+  // Sends `batch` (each command in a packet of its own) before one round
+  // trip, and sorts what the observer received for the node by the slot
+  // each message writes: the first command is answered, the others wait in
+  // pending_. A message no command of the batch explains (or a round trip
+  // that failed) makes the batch be sent again one command per round trip
+  // on a fresh node, and no batch is sent again until the next reset.
+  // `tail`: the last command is no slot write (may_end_batch): every
+  // message that writes none of the others' slots is its.
+  Answer apply_batch(const std::vector<Command>& batch, bool tail);
+  // Answers a command sent in a batch from what the host sent for it; the
+  // first `counted` of them are what it told its subscribers (the rest
+  // answered the observer's subscriptions).
+  Answer answer_from_batch(const Command& c, const std::vector<verse::WireCommand>& received, std::size_t counted);
+  // A fresh node brought to the state the answered commands made (each sent
+  // again on its own), dropping what was sent ahead and not asked for.
+  Answer rebuild();
   // The sessions' options; `nudger` (may be null) is the other session,
   // made to wake the host while this one awaits its login's accept.
   verse::ClientOptions session_options(verse::ClientSession* nudger) const;
@@ -201,6 +258,37 @@ class VerseImplementation final : public Implementation {
   bool driver_lost_ = false;  // only the driver's session is gone: connect() keeps the observer
   std::uint64_t barrier_count_ = 0;
   std::uint64_t round_trips_ = 0;
+  std::uint64_t commands_sent_ = 0;   // commands_sent()
+  std::uint64_t driver_logins_ = 0;   // driver_logins(): every login of the driver, the first included
+  std::uint64_t driver_drops_ = 0;    // driver sessions the host ended (seen as such)
+  std::uint64_t driver_drops_known_ = 0;  // ... after a command may_desynchronise_r6 (desync_risk_)
+  std::uint64_t batches_ = 0, batched_commands_ = 0, batch_fallbacks_ = 0, rebuilds_ = 0;
+  // Several commands before one barrier (class comment). expected_: what
+  // the caller said comes next (expect_commands), each with its wire bytes
+  // as the key apply() is matched by. pending_: commands sent ahead in a
+  // batch, already settled, with what the observer received for each, not
+  // yet asked for. since_fresh_: the commands the node was sent since it
+  // was fresh and that were answered (what rebuild() sends again).
+  struct Expected {
+    std::string key;
+    Command command;
+  };
+  struct Prepared {
+    std::string key;
+    Command command;
+    std::vector<verse::WireCommand> received;
+    std::size_t counted = 0;  // answer_from_batch
+  };
+  std::deque<Expected> expected_;
+  std::deque<Prepared> pending_;
+  std::vector<Command> since_fresh_;
+  bool batch_off_ = false;           // a batch could not be told apart: none until the next reset
+  bool last_batched_ = false;        // last_apply_batched
+  // While a batch settles: the observer's messages for the current node are
+  // kept here instead of being applied to mirror_.
+  bool capturing_ = false;
+  std::vector<verse::WireCommand> captured_;
+  std::size_t capture_mark_ = 0;  // captured_ from here on answered the observer's subscriptions
   bool ever_connected_ = false;
   std::string silent_since_;  // set when a host that answered before no longer answers a login
   VerseNodeMirror mirror_;

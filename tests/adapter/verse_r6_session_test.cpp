@@ -14,6 +14,8 @@
 
 #include "adapter_test_util.h"
 #include "implementation.h"
+#include "program.h"
+#include "runner.h"
 
 namespace vgc {
 namespace {
@@ -54,6 +56,58 @@ TEST(VerseR6Session, ADroppedDriverIsSeenAtTheNextResetAndLoggedInAgainQuickly) 
     EXPECT_NE(d.text.find("vertex 0 1 2 3"), std::string::npos) << d.text;
     ASSERT_EQ(sut->reset().status, CallStatus::Ok);
   }
+}
+
+// Forwards everything but what comes next: each command goes on its own.
+class Untold final : public Implementation {
+ public:
+  explicit Untold(Implementation& sut) : sut_(sut) {}
+  std::string name() const override { return sut_.name(); }
+  Answer reset() override { return sut_.reset(); }
+  Answer apply(const Command& c) override { return sut_.apply(c); }
+  Document snapshot() override { return sut_.snapshot(); }
+  Document derived() override { return sut_.derived(); }
+  RouteLimits limits() const override { return sut_.limits(); }
+  bool offers_late_view() override { return sut_.offers_late_view(); }
+  void use_late_view(bool on) override { sut_.use_late_view(on); }
+  std::string late_view_wrong_format() override { return sut_.late_view_wrong_format(); }
+
+ private:
+  Implementation& sut_;
+};
+
+// Issue 31, several commands before one barrier: r6 takes a VERTEX_XYZ
+// write on layer 2 for a vertex that is not live as the vertex's creation
+// and sends it as a write of layer 0 (vs_node_geometry.c); the next
+// command writes that vertex on layer 0, and in one flush r6 sends only
+// the second message (one per address). The route counts a command's base
+// slot as its own, so the two never share a batch, and the first is judged
+// as on its own: LAYER-WRITE-1 at command 5. (Before, told ahead, the
+// replay found only the late view's LAYER-DEFAULT-1 at command 2.)
+TEST(VerseR6Session, AWriteThatCreatesItsVertexIsJudgedInABatchAsAlone) {
+  const char* port = std::getenv("VGC_R6_PORT");
+  if (!port) GTEST_SKIP() << "no r6 host: set VGC_R6_PORT (ctest -L r6-live runs this against one)";
+  std::string error;
+  auto sut = open_implementation(std::string("verse:127.0.0.1:") + port, test::test_options(5.0), &error);
+  ASSERT_NE(sut, nullptr) << error;
+  Program program;
+  program.commands = {
+      cmd::LayerCreate{2, "value2", static_cast<std::uint8_t>(LayerType::VertexXyz), 7, 0},
+      cmd::VertexSetXyzReal64{0, 0, 3, -1.5, -1.5},
+      cmd::VertexSetXyzReal32{0, 1, 0.5f, -3.75f, -0.25f},
+      cmd::VertexSetXyzReal64{2, 1, -1e-310, -12.375, 28.875},
+      cmd::VertexSetXyzReal64{2, 2, 3.4028234663852886e+38, 1.5, -18},
+      cmd::VertexSetXyzReal32{0, 2, -2, -3, 3.25f},
+  };
+  Untold untold(*sut);
+  const ReplayResult alone = replay_program(program, untold);
+  const ReplayResult told = replay_program(program, *sut);
+  ASSERT_TRUE(alone.failure);
+  ASSERT_TRUE(told.failure);
+  EXPECT_EQ(alone.failure->clause, "LAYER-WRITE-1") << alone.failure->message;
+  EXPECT_EQ(alone.failed_at, 4);
+  EXPECT_EQ(told.failure->clause, alone.failure->clause) << told.failure->message;
+  EXPECT_EQ(told.failed_at, alone.failed_at);
 }
 
 }  // namespace

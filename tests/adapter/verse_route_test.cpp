@@ -482,5 +482,118 @@ TEST(VerseRoute, ARestartCommandGivesAFreshInstance) {
   std::filesystem::remove_all(dir);
 }
 
+// Issue 31: on the wire every command cost a round trip of its own (its
+// barrier). Told what comes next (Implementation::expect_commands, as the
+// runner tells each case), the route sends the slot writes that follow
+// before one barrier, ended by one other command (here a layer_create),
+// and still answers each command with the state after it alone: the
+// snapshot after every command is the reference's after that prefix. Sent
+// untold, the same program takes a round trip per command. (Before the
+// batches, told or not, 26 commands cost 27 round trips.)
+TEST(VerseRoute, CommandsToldAheadShareOneRoundTrip) {
+  ServedHost host({}, {});
+  ASSERT_NE(host.port(), 0) << "no port in \"" << host.line() << "\"";
+  auto sut = open_verse(host);
+  ASSERT_NE(sut, nullptr);
+  auto* verse = dynamic_cast<VerseImplementation*>(sut.get());
+  ASSERT_NE(verse, nullptr);
+  std::vector<Command> program;
+  for (std::uint32_t v = 0; v < 12; ++v)
+    program.push_back(cmd::VertexSetXyzReal64{0, v, 1.0 * v, -0.5 * v, 0.25});
+  program.push_back(cmd::PolygonSetCornerUint32{1, 0, {0, 1, 2, kNone32}});
+  program.push_back(cmd::PolygonSetCornerUint32{1, 1, {2, 3, 4, 5}});
+  program.push_back(cmd::LayerCreate{2, "weight", static_cast<std::uint8_t>(LayerType::VertexReal), 0, 0.5});
+  for (std::uint32_t v = 0; v < 10; ++v) program.push_back(cmd::VertexSetReal64{2, v, 0.125 * v});
+  program.push_back(cmd::VertexSetReal64{2, 0, 7});  // a slot written twice: another round trip
+  const auto run = [&](bool told) {
+    EXPECT_EQ(sut->reset().status, CallStatus::Ok);
+    Node model;
+    const std::uint64_t before = verse->round_trips();
+    for (std::size_t i = 0; i < program.size(); ++i) {
+      if (told) sut->expect_commands(std::vector<Command>(program.begin() + static_cast<std::ptrdiff_t>(i), program.end()));
+      const Answer a = sut->apply(program[i]);
+      sut->expect_commands({});
+      EXPECT_EQ(a.status, CallStatus::Ok) << i << ": " << a.detail;
+      EXPECT_EQ(model.apply(program[i]), Reason::Ok) << i;
+      const Document d = sut->snapshot();
+      EXPECT_EQ(without_subscriptions(d.text), without_subscriptions(print_snapshot(model)))
+          << (told ? "told" : "untold") << ", after command " << i << ": " << print_command(program[i]);
+    }
+    return verse->round_trips() - before;
+  };
+  const std::uint64_t alone = run(false);
+  const std::uint64_t batched = run(true);
+  EXPECT_GE(alone, program.size()) << "one barrier per command when nothing is told";
+  EXPECT_LE(batched * 4, program.size()) << batched << " round trips for " << program.size() << " commands told ahead";
+  EXPECT_GT(verse->batches(), 0u);
+  EXPECT_EQ(verse->batch_fallbacks(), 0u);
+}
+
+// Forwards everything but what comes next: each command goes on its own.
+class Untold final : public Implementation {
+ public:
+  explicit Untold(Implementation& sut) : sut_(sut) {}
+  std::string name() const override { return sut_.name(); }
+  Answer reset() override { return sut_.reset(); }
+  Answer apply(const Command& c) override { return sut_.apply(c); }
+  Document snapshot() override { return sut_.snapshot(); }
+  Document derived() override { return sut_.derived(); }
+  RouteLimits limits() const override { return sut_.limits(); }
+  bool offers_late_view() override { return sut_.offers_late_view(); }
+  void use_late_view(bool on) override { sut_.use_late_view(on); }
+  std::string late_view_wrong_format() override { return sut_.late_view_wrong_format(); }
+
+ private:
+  Implementation& sut_;
+};
+
+// Issue 31: a deviation inside a batch is blamed on the command that made
+// it, as when every command has its own barrier. The served node has a
+// seeded fault: a polygon with a repeated corner is stored as a triangle
+// (POLY-DISTINCT-1), or a corner naming no vertex creates it at the origin
+// (POLY-VERTEX-REF-1; its vertex message is at a slot of a later command of
+// the batch, or at one no command writes). The faulty command sits in the
+// middle of slot writes that share its round trip; replay_program (what
+// certify's confirmation and `vgc replay` run) judges the program told
+// ahead and untold: the same command, the same clause.
+TEST(VerseRoute, ADeviationInsideABatchIsBlamedOnItsCommand) {
+  struct Fault {
+    const char* name;
+    const char* clause;
+    Command faulty;
+  };
+  const std::vector<Fault> faults = {
+      {"duplicate-corners-accepted", "POLY-DISTINCT-1", cmd::PolygonSetCornerUint32{1, 0, {0, 1, 1, 2}}},
+      {"missing-corner-vertices-created", "POLY-VERTEX-REF-1", cmd::PolygonSetCornerUint32{1, 0, {0, 1, 5, kNone32}}},
+      {"missing-corner-vertices-created", "POLY-VERTEX-REF-1", cmd::PolygonSetCornerUint32{1, 0, {0, 1, 9, kNone32}}},
+  };
+  for (const Fault& f : faults) {
+    SCOPED_TRACE(std::string(f.name) + ": " + print_command(f.faulty));
+    ServedHost host({"--impl", std::string("plugin:") + VGC_FAULT_PLUGIN}, {std::string("VGC_FAULT=") + f.name});
+    ASSERT_NE(host.port(), 0) << "no port in \"" << host.line() << "\"";
+    auto sut = open_verse(host);
+    ASSERT_NE(sut, nullptr);
+    auto* verse = dynamic_cast<VerseImplementation*>(sut.get());
+    ASSERT_NE(verse, nullptr);
+    Program program;
+    for (std::uint32_t v = 0; v < 4; ++v) program.commands.push_back(cmd::VertexSetXyzReal64{0, v, 1.0 * v, 2, 3});
+    const std::size_t at = program.commands.size();
+    program.commands.push_back(f.faulty);
+    for (std::uint32_t v = 4; v < 8; ++v) program.commands.push_back(cmd::VertexSetXyzReal64{0, v, 1.0 * v, 2, 3});
+    Untold untold(*sut);
+    const ReplayResult alone = replay_program(program, untold);
+    const std::uint64_t batches_before = verse->batches();
+    const ReplayResult told = replay_program(program, *sut);
+    ASSERT_TRUE(alone.failure);
+    ASSERT_TRUE(told.failure);
+    EXPECT_EQ(alone.failure->clause, f.clause) << alone.failure->message;
+    EXPECT_EQ(told.failure->clause, alone.failure->clause) << told.failure->message;
+    EXPECT_EQ(told.failed_at, static_cast<int>(at));
+    EXPECT_EQ(alone.failed_at, static_cast<int>(at));
+    EXPECT_EQ(told.failure->message, alone.failure->message);
+    EXPECT_GT(verse->batches() + verse->batch_fallbacks(), batches_before) << "the told replay sent no batch";
+  }
+}
+
 }  // namespace
 }  // namespace vgc
