@@ -290,8 +290,169 @@ std::optional<Finding> check_subdivision(const Node& model, Implementation& sut,
   return std::nullopt;
 }
 
+namespace {
+
+// A mesh's corners as check_normals reads them (face_offsets order): each
+// corner's polygon and place in it, and the corners using each edge.
+// Corner c carries the edge c -> next. The corners using each edge: corners
+// sorted by edge key, each corner's run of that order (sorting, not a map of
+// vectors: linear-ish in the mesh).
+struct NormalsCorners {
+  const MeshArrays& mesh;
+  std::vector<int> corner_face, corner_index;
+  std::vector<std::size_t> sorted_corner, run_start, run_size;
+
+  explicit NormalsCorners(const MeshArrays& m) : mesh(m) {
+    const std::size_t corners = mesh.face_vertices.size();
+    corner_face.resize(corners);
+    corner_index.resize(corners);
+    for (int f = 0; f < mesh.face_count(); ++f)
+      for (int k = 0; k < mesh.face_sizes[static_cast<std::size_t>(f)]; ++k) {
+        const auto c = static_cast<std::size_t>(mesh.face_offsets[static_cast<std::size_t>(f)] + k);
+        corner_face[c] = f, corner_index[c] = k;
+      }
+    group_by_edge();
+  }
+
+  void group_by_edge() {
+    const std::size_t corners = mesh.face_vertices.size();
+    std::vector<std::pair<std::uint64_t, std::size_t>> by_edge(corners);
+    for (std::size_t c = 0; c < corners; ++c) by_edge[c] = {edge_key(c), c};
+    std::sort(by_edge.begin(), by_edge.end());
+    sorted_corner.resize(corners);
+    run_start.resize(corners);
+    run_size.resize(corners);
+    for (std::size_t i = 0; i < corners;) {
+      std::size_t j = i;
+      while (j < corners && by_edge[j].first == by_edge[i].first) ++j;
+      for (std::size_t k = i; k < j; ++k) {
+        sorted_corner[k] = by_edge[k].second;
+        run_start[by_edge[k].second] = i, run_size[by_edge[k].second] = j - i;
+      }
+      i = j;
+    }
+  }
+
+  std::string name(std::size_t c) const {
+    return "corner " + std::to_string(corner_index[c]) + " of polygon " +
+           std::to_string(mesh.polygon_ids[static_cast<std::size_t>(corner_face[c])]);
+  }
+  std::size_t corner_at(std::size_t c, int step) const {
+    const auto f = static_cast<std::size_t>(corner_face[c]);
+    const int n = mesh.face_sizes[f];
+    return static_cast<std::size_t>(mesh.face_offsets[f] + (corner_index[c] + step + n) % n);
+  }
+  std::uint64_t edge_key(std::size_t c) const {
+    const auto a = static_cast<std::uint32_t>(mesh.face_vertices[c]);
+    const auto b = static_cast<std::uint32_t>(mesh.face_vertices[corner_at(c, 1)]);
+    return (static_cast<std::uint64_t>(std::min(a, b)) << 32) | std::max(a, b);
+  }
+  std::vector<std::size_t> uses_of(std::size_t c) const {
+    return std::vector<std::size_t>(sorted_corner.begin() + static_cast<std::ptrdiff_t>(run_start[c]),
+                                    sorted_corner.begin() + static_cast<std::ptrdiff_t>(run_start[c] + run_size[c]));
+  }
+  // The edges, as spec 003 defines sharpness: tagged (a corner crease
+  // 0xFFFFFFFF on either side), not used by exactly two faces, or used by
+  // two faces in the same direction.
+  bool sharp(std::size_t c) const {
+    const auto u = uses_of(c);
+    if (u.size() != 2 || mesh.face_vertices[u[0]] == mesh.face_vertices[u[1]]) return true;
+    for (std::size_t x : u)
+      if (x < mesh.corner_edge_creases.size() && mesh.corner_edge_creases[x] == 0xFFFFFFFFu) return true;
+    return false;
+  }
+};
+
+constexpr const char* kNormalsClause = "NORMALS-SPLIT-1";
+constexpr double kNormalsTolerance = 1e-9;
+
+bool normals_differ(const std::array<double, 3>& a, const std::array<double, 3>& b) {
+  return std::max({std::fabs(a[0] - b[0]), std::fabs(a[1] - b[1]), std::fabs(a[2] - b[2])}) > kNormalsTolerance;
+}
+
+// The answer's "corner POLYGON CORNER X Y Z" lines, per corner of the mesh
+// (face_offsets order): a finding for an unreadable line, a corner of no
+// live polygon, a corner given twice or a corner without a line.
+std::optional<Finding> read_corner_normals(const std::string& request, const Document& d, const NormalsCorners& at,
+                                           std::vector<std::array<double, 3>>* got) {
+  const MeshArrays& mesh = at.mesh;
+  std::unordered_map<std::uint32_t, int> face_of_id;
+  for (int f = 0; f < mesh.face_count(); ++f) face_of_id[mesh.polygon_ids[static_cast<std::size_t>(f)]] = f;
+  const std::size_t corners = mesh.face_vertices.size();
+  got->assign(corners, {});
+  std::vector<char> seen(corners, 0);
+  for (const auto& [k, v] : document_lines(d.text)) {
+    const std::vector<std::string_view> w = words_of(v);
+    std::uint32_t id = 0, corner = 0;
+    std::array<double, 3> n{};
+    if (k != "corner" || w.size() < 5 || !parse_uint(w[0], 32, &id) || !parse_uint(w[1], 32, &corner) ||
+        !parse_f64(w[2], &n[0]) || !parse_f64(w[3], &n[1]) || !parse_f64(w[4], &n[2]))
+      return finding(kNormalsClause, request + ": unreadable line \"" + std::string(k) + " " + std::string(v) + "\"");
+    auto it = face_of_id.find(id);
+    if (it == face_of_id.end() || static_cast<int>(corner) >= mesh.face_sizes[static_cast<std::size_t>(it->second)])
+      return finding(kNormalsClause, request + ": \"corner " + std::string(v) + "\" names no corner of a live polygon");
+    const auto c = static_cast<std::size_t>(mesh.face_offsets[static_cast<std::size_t>(it->second)]) + corner;
+    if (seen[c])
+      return finding(kNormalsClause, request + ": corner " + std::string(w[0]) + " " + std::string(w[1]) + " is given twice");
+    seen[c] = 1;
+    (*got)[c] = n;
+  }
+  for (std::size_t c = 0; c < corners; ++c)
+    if (!seen[c]) return finding(kNormalsClause, request + ": no line for " + at.name(c));
+  return std::nullopt;
+}
+
+// (a) Across a smooth edge a -> b (corner c) / b -> a (corner o), the
+// corners at a (c and next(o)) and at b (next(c) and o) share a fan (spec
+// 003: a smooth fan has one normal).
+std::optional<Finding> check_smooth_fans(const std::string& request, const NormalsCorners& at,
+                                         const std::vector<std::array<double, 3>>& got) {
+  for (std::size_t c = 0; c < got.size(); ++c) {
+    if (at.sharp(c)) continue;
+    const auto u = at.uses_of(c);
+    const std::size_t o = u[0] == c ? u[1] : u[0];
+    for (const auto& [p, q] : {std::make_pair(c, at.corner_at(o, 1)), std::make_pair(at.corner_at(c, 1), o)})
+      if (normals_differ(got[p], got[q]))
+        return finding(kNormalsClause, request + ": " + at.name(p) + " has normal " + point_text(got[p]) + " and " +
+                                           at.name(q) + " has " + point_text(got[q]) +
+                                           "; they are one smooth fan (joined by a smooth "
+                                           "edge of polygon " +
+                                           std::to_string(at.mesh.polygon_ids[static_cast<std::size_t>(at.corner_face[c])]) +
+                                           ") and spec 003 gives a smooth fan one normal");
+  }
+  return std::nullopt;
+}
+
+// (b) A corner between two sharp edges is a fan of its own: its normal is
+// its polygon's front normal (clockwise front: minus Newell's area vector).
+std::optional<Finding> check_sharp_corners(const std::string& request, const NormalsCorners& at,
+                                           const std::vector<std::array<double, 3>>& got) {
+  const MeshArrays& mesh = at.mesh;
+  for (std::size_t c = 0; c < got.size(); ++c) {
+    if (!at.sharp(c) || !at.sharp(at.corner_at(c, -1))) continue;
+    std::array<double, 3> area{0, 0, 0};
+    for (int k = 0; k < mesh.face_sizes[static_cast<std::size_t>(at.corner_face[c])]; ++k) {
+      const std::size_t here = at.corner_at(c, k);
+      const auto& p = mesh.positions[static_cast<std::size_t>(mesh.face_vertices[here])];
+      const auto& q = mesh.positions[static_cast<std::size_t>(mesh.face_vertices[at.corner_at(here, 1)])];
+      area[0] -= p[1] * q[2] - p[2] * q[1];
+      area[1] -= p[2] * q[0] - p[0] * q[2];
+      area[2] -= p[0] * q[1] - p[1] * q[0];
+    }
+    const double len = std::sqrt(area[0] * area[0] + area[1] * area[1] + area[2] * area[2]);
+    if (!(len > 1e-12)) continue;  // degenerate polygon: no face normal to compare with
+    for (double& x : area) x /= len;
+    if (normals_differ(got[c], area))
+      return finding(kNormalsClause, request + ": " + at.name(c) + " lies between two sharp edges, so its normal is its "
+                                         "polygon's front normal " + point_text(area) + "; the answer says " +
+                                         point_text(got[c]));
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
 std::optional<Finding> check_normals(const Node& model, Implementation& sut) {
-  static const char* kClause = "NORMALS-SPLIT-1";
   const MeshArrays mesh = extract_mesh(model);
   const SplitNormals ref = compute_split_normals(mesh);
   if (ref.status != MeshStatus::Ok) return std::nullopt;  // no reading of spec 003 for such polygons
@@ -302,125 +463,19 @@ std::optional<Finding> check_normals(const Node& model, Implementation& sut) {
       if (!(std::fabs(c) <= 1e60)) return std::nullopt;
   const std::string request = "?normals";
   const Document d = sut.request(request);
-  if (auto f = check_answer(kClause, request, d, "vgc-normals")) return f;
+  if (auto f = check_answer(kNormalsClause, request, d, "vgc-normals")) return f;
 
-  // The answer, per corner of the mesh (face_offsets order).
-  std::unordered_map<std::uint32_t, int> face_of_id;
-  for (int f = 0; f < mesh.face_count(); ++f) face_of_id[mesh.polygon_ids[static_cast<std::size_t>(f)]] = f;
-  const std::size_t corners = mesh.face_vertices.size();
-  std::vector<std::array<double, 3>> got(corners);
-  std::vector<char> seen(corners, 0);
-  for (const auto& [k, v] : document_lines(d.text)) {
-    const std::vector<std::string_view> w = words_of(v);
-    std::uint32_t id = 0, corner = 0;
-    std::array<double, 3> n{};
-    if (k != "corner" || w.size() < 5 || !parse_uint(w[0], 32, &id) || !parse_uint(w[1], 32, &corner) ||
-        !parse_f64(w[2], &n[0]) || !parse_f64(w[3], &n[1]) || !parse_f64(w[4], &n[2]))
-      return finding(kClause, request + ": unreadable line \"" + std::string(k) + " " + std::string(v) + "\"");
-    auto it = face_of_id.find(id);
-    if (it == face_of_id.end() || static_cast<int>(corner) >= mesh.face_sizes[static_cast<std::size_t>(it->second)])
-      return finding(kClause, request + ": \"corner " + std::string(v) + "\" names no corner of a live polygon");
-    const auto c = static_cast<std::size_t>(mesh.face_offsets[static_cast<std::size_t>(it->second)]) + corner;
-    if (seen[c])
-      return finding(kClause, request + ": corner " + std::string(w[0]) + " " + std::string(w[1]) + " is given twice");
-    seen[c] = 1;
-    got[c] = n;
-  }
-  std::vector<int> corner_face(corners), corner_index(corners);
-  for (int f = 0; f < mesh.face_count(); ++f)
-    for (int k = 0; k < mesh.face_sizes[static_cast<std::size_t>(f)]; ++k) {
-      const auto c = static_cast<std::size_t>(mesh.face_offsets[static_cast<std::size_t>(f)] + k);
-      corner_face[c] = f, corner_index[c] = k;
-    }
-  auto name = [&](std::size_t c) {
-    return "corner " + std::to_string(corner_index[c]) + " of polygon " +
-           std::to_string(mesh.polygon_ids[static_cast<std::size_t>(corner_face[c])]);
-  };
-  for (std::size_t c = 0; c < corners; ++c)
-    if (!seen[c]) return finding(kClause, request + ": no line for " + name(c));
-  const double tol = 1e-9;
-  auto differ = [&](const std::array<double, 3>& a, const std::array<double, 3>& b) {
-    return std::max({std::fabs(a[0] - b[0]), std::fabs(a[1] - b[1]), std::fabs(a[2] - b[2])}) > tol;
-  };
-  auto corner_at = [&](std::size_t c, int step) {
-    const auto f = static_cast<std::size_t>(corner_face[c]);
-    const int n = mesh.face_sizes[f];
-    return static_cast<std::size_t>(mesh.face_offsets[f] + (corner_index[c] + step + n) % n);
-  };
-  // The edges, as spec 003 defines sharpness: tagged (a corner crease
-  // 0xFFFFFFFF on either side), not used by exactly two faces, or used by
-  // two faces in the same direction. Corner c carries the edge c -> next.
-  // The corners using each edge: corners sorted by edge key, each corner's
-  // run of that order (sorting, not a map of vectors: linear-ish in the mesh).
-  auto edge_key = [&](std::size_t c) {
-    const auto a = static_cast<std::uint32_t>(mesh.face_vertices[c]);
-    const auto b = static_cast<std::uint32_t>(mesh.face_vertices[corner_at(c, 1)]);
-    return (static_cast<std::uint64_t>(std::min(a, b)) << 32) | std::max(a, b);
-  };
-  std::vector<std::pair<std::uint64_t, std::size_t>> by_edge(corners);
-  for (std::size_t c = 0; c < corners; ++c) by_edge[c] = {edge_key(c), c};
-  std::sort(by_edge.begin(), by_edge.end());
-  std::vector<std::size_t> sorted_corner(corners), run_start(corners), run_size(corners);
-  for (std::size_t i = 0; i < corners;) {
-    std::size_t j = i;
-    while (j < corners && by_edge[j].first == by_edge[i].first) ++j;
-    for (std::size_t k = i; k < j; ++k) {
-      sorted_corner[k] = by_edge[k].second;
-      run_start[by_edge[k].second] = i, run_size[by_edge[k].second] = j - i;
-    }
-    i = j;
-  }
-  auto uses_of = [&](std::size_t c) {
-    return std::vector<std::size_t>(sorted_corner.begin() + static_cast<std::ptrdiff_t>(run_start[c]),
-                                    sorted_corner.begin() + static_cast<std::ptrdiff_t>(run_start[c] + run_size[c]));
-  };
-  auto sharp = [&](std::size_t c) {
-    const auto u = uses_of(c);
-    if (u.size() != 2 || mesh.face_vertices[u[0]] == mesh.face_vertices[u[1]]) return true;
-    for (std::size_t x : u)
-      if (x < mesh.corner_edge_creases.size() && mesh.corner_edge_creases[x] == 0xFFFFFFFFu) return true;
-    return false;
-  };
-  // (a) Across a smooth edge a -> b (corner c) / b -> a (corner o), the
-  // corners at a (c and next(o)) and at b (next(c) and o) share a fan.
-  for (std::size_t c = 0; c < corners; ++c) {
-    if (sharp(c)) continue;
-    const auto u = uses_of(c);
-    const std::size_t o = u[0] == c ? u[1] : u[0];
-    for (const auto& [p, q] : {std::make_pair(c, corner_at(o, 1)), std::make_pair(corner_at(c, 1), o)})
-      if (differ(got[p], got[q]))
-        return finding(kClause, request + ": " + name(p) + " has normal " + point_text(got[p]) + " and " + name(q) +
-                                    " has " + point_text(got[q]) + "; they are one smooth fan (joined by a smooth "
-                                    "edge of polygon " + std::to_string(mesh.polygon_ids[static_cast<std::size_t>(corner_face[c])]) +
-                                    ") and spec 003 gives a smooth fan one normal");
-  }
-  // (b) A corner between two sharp edges is a fan of its own: its normal is
-  // its polygon's front normal (clockwise front: minus Newell's area vector).
-  for (std::size_t c = 0; c < corners; ++c) {
-    if (!sharp(c) || !sharp(corner_at(c, -1))) continue;
-    std::array<double, 3> area{0, 0, 0};
-    for (int k = 0; k < mesh.face_sizes[static_cast<std::size_t>(corner_face[c])]; ++k) {
-      const std::size_t here = corner_at(c, k);
-      const auto& p = mesh.positions[static_cast<std::size_t>(mesh.face_vertices[here])];
-      const auto& q = mesh.positions[static_cast<std::size_t>(mesh.face_vertices[corner_at(here, 1)])];
-      area[0] -= p[1] * q[2] - p[2] * q[1];
-      area[1] -= p[2] * q[0] - p[0] * q[2];
-      area[2] -= p[0] * q[1] - p[1] * q[0];
-    }
-    const double len = std::sqrt(area[0] * area[0] + area[1] * area[1] + area[2] * area[2]);
-    if (!(len > 1e-12)) continue;  // degenerate polygon: no face normal to compare with
-    for (double& x : area) x /= len;
-    if (differ(got[c], area))
-      return finding(kClause, request + ": " + name(c) + " lies between two sharp edges, so its normal is its "
-                                  "polygon's front normal " + point_text(area) + "; the answer says " +
-                                  point_text(got[c]));
-  }
+  const NormalsCorners at(mesh);
+  std::vector<std::array<double, 3>> got;
+  if (auto f = read_corner_normals(request, d, at, &got)) return f;
+  if (auto f = check_smooth_fans(request, at, got)) return f;
+  if (auto f = check_sharp_corners(request, at, got)) return f;
   // Then every corner against the reference's reading (angle-weighted fans).
-  for (std::size_t c = 0; c < corners; ++c)
-    if (differ(got[c], ref.corner_normals[c]))
-      return finding(kClause, request + ": " + name(c) + " has normal " + point_text(got[c]) +
-                                  "; the reference's split normal (angle-weighted over its smooth fan) is " +
-                                  point_text(ref.corner_normals[c]));
+  for (std::size_t c = 0; c < got.size(); ++c)
+    if (normals_differ(got[c], ref.corner_normals[c]))
+      return finding(kNormalsClause, request + ": " + at.name(c) + " has normal " + point_text(got[c]) +
+                                         "; the reference's split normal (angle-weighted over its smooth fan) is " +
+                                         point_text(ref.corner_normals[c]));
   return std::nullopt;
 }
 
@@ -543,15 +598,23 @@ std::optional<Finding> check_loop(const Node& model, Implementation& sut, int le
 
 namespace {
 
-// One edit of `kind` (0 hole, 1 set, 2 add 0, 3 add) chosen from `draw`;
-// see check_edits.
-// `mesh` is the model's polygons without unused vertices, `osd` its
-// OpenSubdiv refinement to `level` (oracle_refinement).
-std::optional<Finding> check_one_edit(const MeshArrays& mesh, const OsdResult& osd, Implementation& sut, int level,
-                                      std::uint32_t draw, int kind) {
-  static const char* kClause = "EDIT-HIERARCHY-1";
+constexpr const char* kEditClause = "EDIT-HIERARCHY-1";
 
-  // The edit, from the drawn value (splitmix64, so every bit counts).
+// The four kinds of edit check_edits draws, one each per case.
+enum DrawnEditKind { kHole, kSet, kAddZero, kAdd };
+
+// An edit drawn for check_one_edit: the edit, its level, and how the
+// ?subdivide-edit request spells it.
+struct DrawnEdit {
+  HierarchicalEdit edit;
+  int level = 0;
+  std::string text;
+};
+
+// The edit of `kind` from the drawn value (splitmix64, so every bit
+// counts): a level up to `level`, a face path from a base polygon of
+// `mesh`, a corner, and for set and add a value.
+DrawnEdit draw_edit(const MeshArrays& mesh, int level, std::uint32_t draw, int kind) {
   std::uint64_t r = draw + 0x9E3779B97F4A7C15ull;
   r = (r ^ (r >> 30)) * 0xBF58476D1CE4E5B9ull;
   r = (r ^ (r >> 27)) * 0x94D049BB133111EBull;
@@ -561,168 +624,202 @@ std::optional<Finding> check_one_edit(const MeshArrays& mesh, const OsdResult& o
     r /= n;
     return static_cast<int>(v);
   };
-  enum { kHole, kSet, kAddZero, kAdd };
-  const int edit_level = take(static_cast<std::uint64_t>(level) + 1);
-  HierarchicalEdit e;
+  DrawnEdit d;
+  HierarchicalEdit& e = d.edit;
+  d.level = take(static_cast<std::uint64_t>(level) + 1);
   e.face.base_face = take(static_cast<std::uint64_t>(mesh.face_count()));
   const int base_size = mesh.face_sizes[static_cast<std::size_t>(e.face.base_face)];
-  for (int d = 0; d < edit_level; ++d) e.face.children.push_back(take(d == 0 ? static_cast<std::uint64_t>(base_size) : 4));
-  e.index = take(edit_level == 0 ? static_cast<std::uint64_t>(base_size) : 4);
+  for (int l = 0; l < d.level; ++l) e.face.children.push_back(take(l == 0 ? static_cast<std::uint64_t>(base_size) : 4));
+  e.index = take(d.level == 0 ? static_cast<std::uint64_t>(base_size) : 4);
   e.kind = kind == kHole ? EditKind::FaceHole : EditKind::VertexValue;
   e.op = kind == kSet ? EditOp::Set : EditOp::Add;
   if (kind == kSet) e.value = {take(41) * 0.25 - 5, take(41) * 0.25 - 5, take(41) * 0.25 + 3};
   if (kind == kAdd) e.value = {0.5, -0.25, 1 + take(8) * 0.125};
   std::string path = "(" + std::to_string(mesh.polygon_ids[static_cast<std::size_t>(e.face.base_face)]);
   for (int c : e.face.children) path += " " + std::to_string(c);
-  std::string edit;
   if (kind == kHole) {
-    edit = "hole " + path + ")";
+    d.text = "hole " + path + ")";
   } else {
-    edit = std::string(kind == kSet ? "set " : "add ") + path + " " + std::to_string(e.index) + ") " +
-           format_f64(e.value[0]) + " " + format_f64(e.value[1]) + " " + format_f64(e.value[2]);
+    d.text = std::string(kind == kSet ? "set " : "add ") + path + " " + std::to_string(e.index) + ") " +
+             format_f64(e.value[0]) + " " + format_f64(e.value[1]) + " " + format_f64(e.value[2]);
   }
+  return d;
+}
 
-  auto ask = [&](int at, SubdivisionAnswer* got, std::string* request) -> std::optional<Finding> {
-    *request = "?subdivide-edit " + std::to_string(at) + " " + edit;
-    const Document d = sut.request(*request);
-    if (auto f = check_answer(kClause, *request, d, "vgc-subdivision")) return f;
-    if (auto problem = read_subdivision(d.text, got)) return finding(kClause, *request + ": " + *problem);
-    if (got->level != at) return finding(kClause, *request + ": the document says level " + std::to_string(got->level));
-    if (static_cast<long>(got->face_lines.size()) != got->faces)
-      return finding(kClause, *request + ": " + std::to_string(got->face_lines.size()) + " face lines but faces " +
-                                  std::to_string(got->faces));
-    return std::nullopt;
-  };
-  // Each face line must be a face of the level (`positions`, `sizes`,
-  // `corners`) whose flag in `allowed` is set, compared by the positions of
-  // its corners (same cycle, any starting corner, within the tolerance:
-  // coinciding vertices make a pairing by index arbitrary), each face used
-  // once.
-  auto faces_among = [&](const SubdivisionAnswer& got, const std::vector<std::array<double, 3>>& positions,
-                         const std::vector<int>& sizes, const std::vector<int>& corners,
-                         const std::vector<char>& allowed, const std::string& request,
-                         const std::string& source) -> std::optional<Finding> {
-    const double tol = tolerance_of(positions);
-    std::vector<std::size_t> offset(sizes.size() + 1, 0);
-    for (std::size_t f = 0; f < sizes.size(); ++f) offset[f + 1] = offset[f] + static_cast<std::size_t>(sizes[f]);
-    auto same_cycle = [&](const std::vector<int>& line, std::size_t f) {
-      const std::size_t n = line.size();
-      if (n != static_cast<std::size_t>(sizes[f])) return false;
-      for (std::size_t r = 0; r < n; ++r) {
-        bool same = true;
-        for (std::size_t k = 0; same && k < n; ++k)
-          same = near(got.vertices[static_cast<std::size_t>(line[k])],
-                      positions[static_cast<std::size_t>(corners[offset[f] + (k + r) % n])], tol);
-        if (same) return true;
-      }
-      return false;
-    };
-    std::vector<char> used(sizes.size(), 0);
-    for (std::size_t i = 0; i < got.face_lines.size(); ++i) {
-      std::size_t hit = used.size();
-      bool removed = false;
-      for (std::size_t f = 0; f < used.size() && hit == used.size(); ++f) {
-        if (used[f] || !same_cycle(got.face_lines[i], f)) continue;
-        if (allowed[f]) hit = f;
-        else removed = true;
-      }
-      if (hit == used.size())
-        return finding(kClause, request + ": face line " + std::to_string(i) + " is " +
-                                    (removed ? "a face the hole removes (it or an ancestor is the hole) in " + source
-                                             : "no face of " + source + " (or one given twice)"));
-      used[hit] = 1;
+// Asks ?subdivide-edit AT EDIT and reads the answer into *got: a finding
+// when the call fails, the document is unreadable, of another level, or its
+// face lines disagree with its face count.
+std::optional<Finding> ask_edit(Implementation& sut, int at, const std::string& edit, SubdivisionAnswer* got,
+                                std::string* request) {
+  *request = "?subdivide-edit " + std::to_string(at) + " " + edit;
+  const Document d = sut.request(*request);
+  if (auto f = check_answer(kEditClause, *request, d, "vgc-subdivision")) return f;
+  if (auto problem = read_subdivision(d.text, got)) return finding(kEditClause, *request + ": " + *problem);
+  if (got->level != at) return finding(kEditClause, *request + ": the document says level " + std::to_string(got->level));
+  if (static_cast<long>(got->face_lines.size()) != got->faces)
+    return finding(kEditClause, *request + ": " + std::to_string(got->face_lines.size()) + " face lines but faces " +
+                                    std::to_string(got->faces));
+  return std::nullopt;
+}
+
+// Each face line must be a face of the level (`positions`, `sizes`,
+// `corners`) whose flag in `allowed` is set, compared by the positions of
+// its corners (same cycle, any starting corner, within the tolerance:
+// coinciding vertices make a pairing by index arbitrary), each face used
+// once.
+std::optional<Finding> faces_among(const SubdivisionAnswer& got, const std::vector<std::array<double, 3>>& positions,
+                                   const std::vector<int>& sizes, const std::vector<int>& corners,
+                                   const std::vector<char>& allowed, const std::string& request,
+                                   const std::string& source) {
+  const double tol = tolerance_of(positions);
+  std::vector<std::size_t> offset(sizes.size() + 1, 0);
+  for (std::size_t f = 0; f < sizes.size(); ++f) offset[f + 1] = offset[f] + static_cast<std::size_t>(sizes[f]);
+  auto same_cycle = [&](const std::vector<int>& line, std::size_t f) {
+    const std::size_t n = line.size();
+    if (n != static_cast<std::size_t>(sizes[f])) return false;
+    for (std::size_t r = 0; r < n; ++r) {
+      bool same = true;
+      for (std::size_t k = 0; same && k < n; ++k)
+        same = near(got.vertices[static_cast<std::size_t>(line[k])],
+                    positions[static_cast<std::size_t>(corners[offset[f] + (k + r) % n])], tol);
+      if (same) return true;
     }
-    return std::nullopt;
+    return false;
   };
-
-  // An edit changes its own level and the finer ones: the level just above
-  // it is OpenSubdiv's plain refinement.
-  if (edit_level >= 2) {
-    SubdivisionAnswer got;
-    std::string request;
-    if (auto f = ask(edit_level - 1, &got, &request)) return f;
-    const OsdLevel& plain = osd.levels[static_cast<std::size_t>(edit_level - 1)];
-    std::vector<int> g2w;
-    if (auto problem = compare_with_level(got, plain.positions, static_cast<long>(plain.face_sizes.size()),
-                                          "OpenSubdiv (the edit is at level " + std::to_string(edit_level) +
-                                              ", so this level is untouched)",
-                                          &g2w))
-      return finding(kClause, request + ": " + *problem);
+  std::vector<char> used(sizes.size(), 0);
+  for (std::size_t i = 0; i < got.face_lines.size(); ++i) {
+    std::size_t hit = used.size();
+    bool removed = false;
+    for (std::size_t f = 0; f < used.size() && hit == used.size(); ++f) {
+      if (used[f] || !same_cycle(got.face_lines[i], f)) continue;
+      if (allowed[f]) hit = f;
+      else removed = true;
+    }
+    if (hit == used.size())
+      return finding(kEditClause, request + ": face line " + std::to_string(i) + " is " +
+                                      (removed ? "a face the hole removes (it or an ancestor is the hole) in " + source
+                                               : "no face of " + source + " (or one given twice)"));
+    used[hit] = 1;
   }
+  return std::nullopt;
+}
 
+// An edit changes its own level and the finer ones: the level just above
+// it is OpenSubdiv's plain refinement.
+std::optional<Finding> check_level_above_edit(const OsdResult& osd, Implementation& sut, const DrawnEdit& d) {
   SubdivisionAnswer got;
   std::string request;
-  if (auto f = ask(level, &got, &request)) return f;
-  const OsdLevel& plain = osd.levels.back();
+  if (auto f = ask_edit(sut, d.level - 1, d.text, &got, &request)) return f;
+  const OsdLevel& plain = osd.levels[static_cast<std::size_t>(d.level - 1)];
   std::vector<int> g2w;
-  if (kind == kHole && edit_level == 0) {
-    // Holes at level 0: OpenSubdiv's own holes (TopologyDescriptor holeIndices).
-    OsdInput in = osd_input_from_mesh(mesh, OsdScheme::CatmullClark, level);
-    in.hole_faces.push_back(e.face.base_face);
-    const OsdResult holed = osd_refine_uniform(in);
-    if (!holed.ok || holed.levels.size() != static_cast<std::size_t>(level) + 1) return std::nullopt;
-    const OsdLevel& want = holed.levels.back();
-    std::vector<char> allowed(want.face_sizes.size(), 1);
-    long kept = 0;
-    for (std::size_t f = 0; f < allowed.size(); ++f) {
-      allowed[f] = f < want.face_hole.size() && want.face_hole[f] ? 0 : 1;
-      kept += allowed[f];
-    }
-    if (auto problem = compare_with_level(got, want.positions, kept, "OpenSubdiv with the hole", &g2w))
-      return finding(kClause, request + ": " + *problem);
-    return faces_among(got, want.positions, want.face_sizes, want.face_vertices, allowed, request,
-                       "OpenSubdiv's refinement with the hole");
+  if (auto problem = compare_with_level(got, plain.positions, static_cast<long>(plain.face_sizes.size()),
+                                        "OpenSubdiv (the edit is at level " + std::to_string(d.level) +
+                                            ", so this level is untouched)",
+                                        &g2w))
+    return finding(kEditClause, request + ": " + *problem);
+  return std::nullopt;
+}
+
+// Holes at level 0: OpenSubdiv's own holes (TopologyDescriptor holeIndices).
+std::optional<Finding> check_base_hole(const MeshArrays& mesh, int level, const DrawnEdit& d,
+                                       const SubdivisionAnswer& got, const std::string& request) {
+  OsdInput in = osd_input_from_mesh(mesh, OsdScheme::CatmullClark, level);
+  in.hole_faces.push_back(d.edit.face.base_face);
+  const OsdResult holed = osd_refine_uniform(in);
+  if (!holed.ok || holed.levels.size() != static_cast<std::size_t>(level) + 1) return std::nullopt;
+  const OsdLevel& want = holed.levels.back();
+  std::vector<char> allowed(want.face_sizes.size(), 1);
+  long kept = 0;
+  for (std::size_t f = 0; f < allowed.size(); ++f) {
+    allowed[f] = f < want.face_hole.size() && want.face_hole[f] ? 0 : 1;
+    kept += allowed[f];
   }
-  if (kind == kHole || kind == kAddZero) {
-    // A hole deeper down removes exactly its descendants at this level
-    // (4 per level below it: they are quads) and moves nothing; add 0
-    // changes nothing.
-    long removed = 0;
-    if (kind == kHole) {
-      removed = 1;
-      for (int l = edit_level; l < level; ++l) removed *= 4;
-    }
-    if (auto problem = compare_with_level(got, plain.positions, static_cast<long>(plain.face_sizes.size()) - removed,
-                                          kind == kHole ? "OpenSubdiv (a hole at level " + std::to_string(edit_level) +
-                                                              " moves nothing and removes " + std::to_string(removed) +
-                                                              " faces here)"
-                                                        : std::string("OpenSubdiv (add 0 changes nothing)"),
-                                          &g2w))
-      return finding(kClause, request + ": " + *problem);
-    if (auto f = faces_among(got, plain.positions, plain.face_sizes, plain.face_vertices,
-                             std::vector<char>(plain.face_sizes.size(), 1), request, "OpenSubdiv's refinement"))
-      return f;
-    if (kind == kAddZero) return std::nullopt;
+  std::vector<int> g2w;
+  if (auto problem = compare_with_level(got, want.positions, kept, "OpenSubdiv with the hole", &g2w))
+    return finding(kEditClause, request + ": " + *problem);
+  return faces_among(got, want.positions, want.face_sizes, want.face_vertices, allowed, request,
+                     "OpenSubdiv's refinement with the hole");
+}
+
+// A hole deeper down removes exactly its descendants at this level (4 per
+// level below it: they are quads) and moves nothing; add 0 changes nothing.
+std::optional<Finding> check_nothing_moved(const OsdLevel& plain, int level, int kind, const DrawnEdit& d,
+                                           const SubdivisionAnswer& got, const std::string& request) {
+  long removed = 0;
+  if (kind == kHole) {
+    removed = 1;
+    for (int l = d.level; l < level; ++l) removed *= 4;
   }
-  if (edit_level == level && kind != kHole && tolerance_of(plain.positions) <= 1e-3) {
-    // At the edit's own level only the edited vertex moved (OpenSubdiv's
-    // plain vertices for all the others), and "set" puts it at the value.
-    // (Only where the tolerance is far below the move: coordinates up to 1e6.)
-    std::vector<int> w2g;
-    std::vector<std::size_t> unmatched;
-    match_vertices(plain.positions, got.vertices, tolerance_of(plain.positions), &w2g, &unmatched);
-    if (got.vertices.size() != plain.positions.size() || unmatched.size() != 1)
-      return finding(kClause, request + ": " + std::to_string(unmatched.size()) + " of " +
-                                  std::to_string(got.vertices.size()) + " vertices are not OpenSubdiv's (of " +
-                                  std::to_string(plain.positions.size()) +
-                                  "); an edit at the answer's own level moves exactly one");
-    if (kind == kSet && got.vertices[unmatched[0]] != e.value)
-      return finding(kClause, request + ": the moved vertex is at " + point_text(got.vertices[unmatched[0]]) +
-                                  "; \"set\" puts it at " + point_text(e.value));
-  }
-  // The rest has no external oracle (OpenSubdiv 3 dropped hierarchical
-  // edits): the reference's reading (hierarchical_edit.h).
+  std::vector<int> g2w;
+  if (auto problem = compare_with_level(got, plain.positions, static_cast<long>(plain.face_sizes.size()) - removed,
+                                        kind == kHole ? "OpenSubdiv (a hole at level " + std::to_string(d.level) +
+                                                            " moves nothing and removes " + std::to_string(removed) +
+                                                            " faces here)"
+                                                      : std::string("OpenSubdiv (add 0 changes nothing)"),
+                                        &g2w))
+    return finding(kEditClause, request + ": " + *problem);
+  return faces_among(got, plain.positions, plain.face_sizes, plain.face_vertices,
+                     std::vector<char>(plain.face_sizes.size(), 1), request, "OpenSubdiv's refinement");
+}
+
+// At the edit's own level only the edited vertex moved (OpenSubdiv's plain
+// vertices for all the others), and "set" puts it at the value.
+std::optional<Finding> check_one_vertex_moved(const OsdLevel& plain, int kind, const DrawnEdit& d,
+                                              const SubdivisionAnswer& got, const std::string& request) {
+  std::vector<int> w2g;
+  std::vector<std::size_t> unmatched;
+  match_vertices(plain.positions, got.vertices, tolerance_of(plain.positions), &w2g, &unmatched);
+  if (got.vertices.size() != plain.positions.size() || unmatched.size() != 1)
+    return finding(kEditClause, request + ": " + std::to_string(unmatched.size()) + " of " +
+                                    std::to_string(got.vertices.size()) + " vertices are not OpenSubdiv's (of " +
+                                    std::to_string(plain.positions.size()) +
+                                    "); an edit at the answer's own level moves exactly one");
+  if (kind == kSet && got.vertices[unmatched[0]] != d.edit.value)
+    return finding(kEditClause, request + ": the moved vertex is at " + point_text(got.vertices[unmatched[0]]) +
+                                    "; \"set\" puts it at " + point_text(d.edit.value));
+  return std::nullopt;
+}
+
+// The rest has no external oracle (OpenSubdiv 3 dropped hierarchical
+// edits): the reference's reading (hierarchical_edit.h).
+std::optional<Finding> check_reference_edit(const MeshArrays& mesh, int level, const DrawnEdit& d,
+                                            const SubdivisionAnswer& got, const std::string& request) {
   std::vector<SubdivisionLevel> ref;
-  if (subdivide_with_edits(mesh, level, {e}, &ref) != EditStatus::Ok) return std::nullopt;
+  if (subdivide_with_edits(mesh, level, {d.edit}, &ref) != EditStatus::Ok) return std::nullopt;
   const SubdivisionLevel& want = ref.back();
   long kept = 0;
   for (unsigned char h : want.face_hole) kept += h ? 0 : 1;
+  std::vector<int> g2w;
   if (auto problem = compare_with_level(got, want.positions, kept, "the reference's hierarchical edit", &g2w))
-    return finding(kClause, request + ": " + *problem);
+    return finding(kEditClause, request + ": " + *problem);
   std::vector<char> kept_faces(want.face_hole.size());
   for (std::size_t f = 0; f < kept_faces.size(); ++f) kept_faces[f] = want.face_hole[f] ? 0 : 1;
   return faces_among(got, want.positions, want.face_sizes, want.face_vertices, kept_faces, request,
                      "the reference's hierarchical edit");
+}
+
+// One edit of `kind` (0 hole, 1 set, 2 add 0, 3 add) chosen from `draw`;
+// see check_edits.
+// `mesh` is the model's polygons without unused vertices, `osd` its
+// OpenSubdiv refinement to `level` (oracle_refinement).
+std::optional<Finding> check_one_edit(const MeshArrays& mesh, const OsdResult& osd, Implementation& sut, int level,
+                                      std::uint32_t draw, int kind) {
+  const DrawnEdit d = draw_edit(mesh, level, draw, kind);
+  if (d.level >= 2)
+    if (auto f = check_level_above_edit(osd, sut, d)) return f;
+  SubdivisionAnswer got;
+  std::string request;
+  if (auto f = ask_edit(sut, level, d.text, &got, &request)) return f;
+  const OsdLevel& plain = osd.levels.back();
+  if (kind == kHole && d.level == 0) return check_base_hole(mesh, level, d, got, request);
+  if (kind == kHole || kind == kAddZero) {
+    if (auto f = check_nothing_moved(plain, level, kind, d, got, request)) return f;
+    if (kind == kAddZero) return std::nullopt;
+  }
+  // Only where the tolerance is far below the move: coordinates up to 1e6.
+  if (d.level == level && kind != kHole && tolerance_of(plain.positions) <= 1e-3)
+    if (auto f = check_one_vertex_moved(plain, kind, d, got, request)) return f;
+  return check_reference_edit(mesh, level, d, got, request);
 }
 
 }  // namespace

@@ -56,37 +56,44 @@ void dedupe_highlights(MeshPicture* pic) {
 // the sentence for the caption.
 constexpr std::size_t kLargeMesh = 600, kPictureFaces = 64;
 
-std::string focus_on_finding(MeshPicture* pic) {
-  const std::size_t all_faces = pic->faces.size();
-  if (all_faces <= kLargeMesh) return {};
-  auto centroid = [&](const std::vector<int>& f) {
-    Point3 c{0, 0, 0};
-    for (int v : f)
-      for (int k = 0; k < 3; ++k) c[static_cast<std::size_t>(k)] += pic->positions[static_cast<std::size_t>(v)][static_cast<std::size_t>(k)];
-    for (auto& x : c) x /= static_cast<double>(std::max<std::size_t>(1, f.size()));
-    return c;
-  };
+Point3 centroid_of(const MeshPicture& pic, const std::vector<int>& f) {
+  Point3 c{0, 0, 0};
+  for (int v : f)
+    for (int k = 0; k < 3; ++k) c[static_cast<std::size_t>(k)] += pic.positions[static_cast<std::size_t>(v)][static_cast<std::size_t>(k)];
+  for (auto& x : c) x /= static_cast<double>(std::max<std::size_t>(1, f.size()));
+  return c;
+}
+
+// What the finding is about: the first finite point among the highlighted
+// vertices, faces (centroid) and edges (first end), the divergent points
+// and the marks; none when nothing is highlighted.
+std::vector<Point3> finding_focus(const MeshPicture& pic) {
+  const std::size_t all_faces = pic.faces.size();
   std::vector<Point3> focus;
   auto add_focus = [&](const Point3& p) {
     if (focus.empty() && std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2])) focus.push_back(p);
   };
-  for (int v : pic->highlight_vertices)
-    if (v >= 0 && static_cast<std::size_t>(v) < pic->positions.size()) add_focus(pic->positions[static_cast<std::size_t>(v)]);
-  for (int f : pic->highlight_faces)
-    if (f >= 0 && static_cast<std::size_t>(f) < all_faces) add_focus(centroid(pic->faces[static_cast<std::size_t>(f)]));
-  for (const auto& [a, b] : pic->highlight_edges)
-    if (a >= 0 && static_cast<std::size_t>(a) < pic->positions.size()) add_focus(pic->positions[static_cast<std::size_t>(a)]);
-  for (int i : pic->divergent_expected)
-    if (i >= 0 && static_cast<std::size_t>(i) < pic->expected_points.size()) add_focus(pic->expected_points[static_cast<std::size_t>(i)]);
-  for (int i : pic->divergent_observed)
-    if (i >= 0 && static_cast<std::size_t>(i) < pic->observed_points.size()) add_focus(pic->observed_points[static_cast<std::size_t>(i)]);
-  for (const auto& p : pic->observed_marks) add_focus(p);
-  const bool centred = focus.empty();
-  if (centred) add_focus(centroid(pic->faces[all_faces / 2]));
-  // The faces nearest to the focus.
+  for (int v : pic.highlight_vertices)
+    if (v >= 0 && static_cast<std::size_t>(v) < pic.positions.size()) add_focus(pic.positions[static_cast<std::size_t>(v)]);
+  for (int f : pic.highlight_faces)
+    if (f >= 0 && static_cast<std::size_t>(f) < all_faces) add_focus(centroid_of(pic, pic.faces[static_cast<std::size_t>(f)]));
+  for (const auto& [a, b] : pic.highlight_edges)
+    if (a >= 0 && static_cast<std::size_t>(a) < pic.positions.size()) add_focus(pic.positions[static_cast<std::size_t>(a)]);
+  for (int i : pic.divergent_expected)
+    if (i >= 0 && static_cast<std::size_t>(i) < pic.expected_points.size()) add_focus(pic.expected_points[static_cast<std::size_t>(i)]);
+  for (int i : pic.divergent_observed)
+    if (i >= 0 && static_cast<std::size_t>(i) < pic.observed_points.size()) add_focus(pic.observed_points[static_cast<std::size_t>(i)]);
+  for (const auto& p : pic.observed_marks) add_focus(p);
+  return focus;
+}
+
+// The kPictureFaces faces whose centroids are nearest to the focus, in
+// face order.
+std::vector<std::size_t> faces_nearest(const MeshPicture& pic, const std::vector<Point3>& focus) {
+  const std::size_t all_faces = pic.faces.size();
   std::vector<std::pair<double, std::size_t>> by_distance(all_faces);
   for (std::size_t f = 0; f < all_faces; ++f) {
-    const Point3 c = centroid(pic->faces[f]);
+    const Point3 c = centroid_of(pic, pic.faces[f]);
     double best = HUGE_VAL;
     for (const auto& p : focus) {
       const double dx = c[0] - p[0], dy = c[1] - p[1], dz = c[2] - p[2];
@@ -99,58 +106,80 @@ std::string focus_on_finding(MeshPicture* pic) {
   std::vector<std::size_t> kept;
   for (std::size_t i = 0; i < kPictureFaces; ++i) kept.push_back(by_distance[i].second);
   std::sort(kept.begin(), kept.end());
-  // Their vertices, renumbered; the bounding box of what is kept.
-  std::vector<int> new_index(pic->positions.size(), -1);
+  return kept;
+}
+
+// The kept faces as a picture of their own: their vertices renumbered,
+// the maps from the old indices, and the bounding box of what is kept.
+struct Patch {
   MeshPicture out;
+  std::vector<int> new_index, new_face;
   double lo[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi[3] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
+};
+
+void keep_faces(const MeshPicture& pic, const std::vector<std::size_t>& kept, Patch* patch) {
+  const std::size_t all_faces = pic.faces.size();
+  MeshPicture& out = patch->out;
+  patch->new_index.assign(pic.positions.size(), -1);
   auto keep_vertex = [&](int v) {
-    if (v < 0 || static_cast<std::size_t>(v) >= pic->positions.size()) return -1;
-    int& n = new_index[static_cast<std::size_t>(v)];
+    if (v < 0 || static_cast<std::size_t>(v) >= pic.positions.size()) return -1;
+    int& n = patch->new_index[static_cast<std::size_t>(v)];
     if (n < 0) {
       n = static_cast<int>(out.positions.size());
-      out.positions.push_back(pic->positions[static_cast<std::size_t>(v)]);
-      if (pic->vertex_labels.size() == pic->positions.size()) out.vertex_labels.push_back(pic->vertex_labels[static_cast<std::size_t>(v)]);
+      out.positions.push_back(pic.positions[static_cast<std::size_t>(v)]);
+      if (pic.vertex_labels.size() == pic.positions.size()) out.vertex_labels.push_back(pic.vertex_labels[static_cast<std::size_t>(v)]);
       for (int k = 0; k < 3; ++k) {
-        lo[k] = std::min(lo[k], out.positions.back()[static_cast<std::size_t>(k)]);
-        hi[k] = std::max(hi[k], out.positions.back()[static_cast<std::size_t>(k)]);
+        patch->lo[k] = std::min(patch->lo[k], out.positions.back()[static_cast<std::size_t>(k)]);
+        patch->hi[k] = std::max(patch->hi[k], out.positions.back()[static_cast<std::size_t>(k)]);
       }
     }
     return n;
   };
-  std::vector<int> new_face(all_faces, -1);
+  patch->new_face.assign(all_faces, -1);
   for (std::size_t f : kept) {
     std::vector<int> face;
-    for (int v : pic->faces[f]) face.push_back(keep_vertex(v));
-    new_face[f] = static_cast<int>(out.faces.size());
+    for (int v : pic.faces[f]) face.push_back(keep_vertex(v));
+    patch->new_face[f] = static_cast<int>(out.faces.size());
     out.faces.push_back(std::move(face));
-    if (pic->face_labels.size() == all_faces) out.face_labels.push_back(pic->face_labels[f]);
+    if (pic.face_labels.size() == all_faces) out.face_labels.push_back(pic.face_labels[f]);
   }
-  double extent = 0;
-  for (int k = 0; k < 3; ++k) extent = std::max(extent, hi[k] - lo[k]);
-  // Refined points and normals: those over the patch. What the
-  // implementation showed instead (marks, outlines) may lie off the
-  // surface: half the patch's size around it.
-  auto within = [&](const Point3& p, double pad) {
-    for (int k = 0; k < 3; ++k)
-      if (!(p[static_cast<std::size_t>(k)] >= lo[k] - pad && p[static_cast<std::size_t>(k)] <= hi[k] + pad)) return false;
-    return true;
-  };
-  auto inside = [&](const Point3& p) { return within(p, extent * 0.05); };
-  auto near = [&](const Point3& p) { return within(p, extent * 0.5); };
-  for (int v : pic->highlight_vertices)
+}
+
+// The highlighted vertices, faces and edges that the patch keeps.
+void keep_highlights(const MeshPicture& pic, Patch* patch) {
+  const std::vector<int>& new_index = patch->new_index;
+  MeshPicture& out = patch->out;
+  for (int v : pic.highlight_vertices)
     if (v >= 0 && static_cast<std::size_t>(v) < new_index.size() && new_index[static_cast<std::size_t>(v)] >= 0)
       out.highlight_vertices.push_back(new_index[static_cast<std::size_t>(v)]);
-  for (int f : pic->highlight_faces)
-    if (f >= 0 && static_cast<std::size_t>(f) < all_faces && new_face[static_cast<std::size_t>(f)] >= 0)
-      out.highlight_faces.push_back(new_face[static_cast<std::size_t>(f)]);
-  for (const auto& [a, b] : pic->highlight_edges) {
+  for (int f : pic.highlight_faces)
+    if (f >= 0 && static_cast<std::size_t>(f) < pic.faces.size() && patch->new_face[static_cast<std::size_t>(f)] >= 0)
+      out.highlight_faces.push_back(patch->new_face[static_cast<std::size_t>(f)]);
+  for (const auto& [a, b] : pic.highlight_edges) {
     const int na = a >= 0 && static_cast<std::size_t>(a) < new_index.size() ? new_index[static_cast<std::size_t>(a)] : -1;
     const int nb = b >= 0 && static_cast<std::size_t>(b) < new_index.size() ? new_index[static_cast<std::size_t>(b)] : -1;
     if (na >= 0 && nb >= 0) out.highlight_edges.push_back({na, nb});
   }
-  for (const auto& p : pic->observed_marks)
+}
+
+// Refined points and normals: those over the patch. What the
+// implementation showed instead (marks, outlines) may lie off the
+// surface: half the patch's size around it.
+void keep_overlays(const MeshPicture& pic, Patch* patch) {
+  MeshPicture& out = patch->out;
+  double extent = 0;
+  for (int k = 0; k < 3; ++k) extent = std::max(extent, patch->hi[k] - patch->lo[k]);
+  auto within = [&](const Point3& p, double pad) {
+    for (int k = 0; k < 3; ++k)
+      if (!(p[static_cast<std::size_t>(k)] >= patch->lo[k] - pad && p[static_cast<std::size_t>(k)] <= patch->hi[k] + pad))
+        return false;
+    return true;
+  };
+  auto inside = [&](const Point3& p) { return within(p, extent * 0.05); };
+  auto near = [&](const Point3& p) { return within(p, extent * 0.5); };
+  for (const auto& p : pic.observed_marks)
     if (near(p)) out.observed_marks.push_back(p);
-  for (const auto& o : pic->observed_outlines)
+  for (const auto& o : pic.observed_outlines)
     if (!o.empty() && near(o.front())) out.observed_outlines.push_back(o);
   auto keep_points = [&](const std::vector<Point3>& from, const std::vector<int>& divergent, std::vector<Point3>* to,
                          std::vector<int>* to_divergent) {
@@ -164,13 +193,28 @@ std::string focus_on_finding(MeshPicture* pic) {
       if (i >= 0 && static_cast<std::size_t>(i) < from.size() && index[static_cast<std::size_t>(i)] >= 0)
         to_divergent->push_back(index[static_cast<std::size_t>(i)]);
   };
-  keep_points(pic->expected_points, pic->divergent_expected, &out.expected_points, &out.divergent_expected);
-  keep_points(pic->observed_points, pic->divergent_observed, &out.observed_points, &out.divergent_observed);
-  for (const auto& s : pic->expected_segments)
+  keep_points(pic.expected_points, pic.divergent_expected, &out.expected_points, &out.divergent_expected);
+  keep_points(pic.observed_points, pic.divergent_observed, &out.observed_points, &out.divergent_observed);
+  for (const auto& s : pic.expected_segments)
     if (inside(s.first)) out.expected_segments.push_back(s);
-  for (const auto& s : pic->observed_segments)
+  for (const auto& s : pic.observed_segments)
     if (inside(s.first)) out.observed_segments.push_back(s);
-  *pic = std::move(out);
+}
+
+std::string focus_on_finding(MeshPicture* pic) {
+  const std::size_t all_faces = pic->faces.size();
+  if (all_faces <= kLargeMesh) return {};
+  std::vector<Point3> focus = finding_focus(*pic);
+  const bool centred = focus.empty();
+  if (centred) {  // the middle of the list, when its centroid is finite
+    const Point3 c = centroid_of(*pic, pic->faces[all_faces / 2]);
+    if (std::isfinite(c[0]) && std::isfinite(c[1]) && std::isfinite(c[2])) focus.push_back(c);
+  }
+  Patch patch;
+  keep_faces(*pic, faces_nearest(*pic, focus), &patch);
+  keep_highlights(*pic, &patch);
+  keep_overlays(*pic, &patch);
+  *pic = std::move(patch.out);
   return " The mesh has " + std::to_string(all_faces) + " polygons: the picture shows the " +
          std::to_string(kPictureFaces) +
          (centred ? " in the middle of the list (nothing is highlighted)"

@@ -150,27 +150,17 @@ void finding_section(pugi::xml_node parent, const ClauseOutcome& co, const Verdi
   add(sec, "pre", replay_command(file, ctx), "replay");
 }
 
-}  // namespace
+// render_report_html's parts, top to bottom.
 
-std::string counterexample_obj_path(const ClauseOutcome& co) {
-  return "counterexamples/" + std::string(co.clause->id) + ".obj";
-}
-
-std::string render_report_html(const RunResult& run, const Verdict& v, const ReportContext& ctx) {
-  const char* headline = v.name == "conformant"       ? "CONFORMANT"
-                         : v.name == "not-conformant" ? "NOT CONFORMANT"
-                                                      : "INCOMPLETE";
-  pugi::xml_document doc;
-  auto title = doc.append_child("title");
-  title.text().set(("vgc certify: " + ctx.implementation_spec + " — " + headline).c_str());
-  auto body = doc.append_child("body");
-
+// The headline, the counts as the reader will see the statuses in the
+// table (the same counts as every other report: verdict.h), the run line,
+// how to re-run, and the files next to the page.
+void add_summary(pugi::xml_node body, const RunResult& run, const Verdict& v, const ReportContext& ctx,
+                 const char* headline) {
   auto h1 = add(body, "h1");
   add_text(h1, "vgc certify: " + ctx.implementation_spec + " ");
   add(h1, "span", headline, ("verdict " + v.name).c_str());
 
-  // Counts, as the reader will see the statuses in the table (the same
-  // counts as every other report: verdict.h).
   auto counts_p = add(body, "p", {}, "counts");
   add_text(counts_p, std::to_string(run.clauses.size()) + " clauses: ");
   for (const auto& [status, n] : shown_status_counts(run, v))
@@ -194,7 +184,11 @@ std::string render_report_html(const RunResult& run, const Verdict& v, const Rep
     a.append_attribute("href") = name;
     add_text(files, " ");
   }
+}
 
+// What could not be judged: a fresh node the implementation could not
+// show, stopped properties, unchecked clauses.
+void add_unjudged(pugi::xml_node body, const RunResult& run, const Verdict& v) {
   if (run.preflight)
     add(body, "p",
         "The implementation could not show a fresh node (" + run.preflight->clause + ": " + run.preflight->message +
@@ -210,7 +204,10 @@ std::string render_report_html(const RunResult& run, const Verdict& v, const Rep
     for (const auto& co : run.clauses)
       if (co.status == ClauseStatus::Unchecked) add(ul, "li", "clause " + std::string(co.clause->id) + " is unchecked: " + co.note);
   }
+}
 
+// The findings, a section per kind of failure, then the stale baseline.
+void add_findings(pugi::xml_node body, const RunResult& run, const Verdict& v, const ReportContext& ctx) {
   auto section = [&](const std::vector<std::string>& ids, const std::string& heading, const std::string& intro) {
     if (ids.empty()) return;
     add(body, "h2", heading);
@@ -229,7 +226,10 @@ std::string render_report_html(const RunResult& run, const Verdict& v, const Rep
     auto ul = add(body, "ul");
     for (const auto& id : v.stale_baseline) add(ul, "li", id);
   }
+}
 
+// The clause table, statuses in colour, a finding's clause linked to it.
+void add_clause_table(pugi::xml_node body, const RunResult& run, const Verdict& v) {
   add(body, "h2", "Clauses");
   auto table = add(body, "table", {}, "clauses");
   auto head = add(table, "tr");
@@ -250,7 +250,9 @@ std::string render_report_html(const RunResult& run, const Verdict& v, const Rep
     add(tr, "td", std::to_string(co.exercised));
     add(tr, "td", co.note);
   }
+}
 
+void add_property_table(pugi::xml_node body, const RunResult& run) {
   add(body, "h2", "Properties");
   auto props = add(body, "table", {}, "properties");
   auto ph = add(props, "tr");
@@ -275,7 +277,27 @@ std::string render_report_html(const RunResult& run, const Verdict& v, const Rep
     secs << std::fixed << p.seconds;
     add(tr, "td", secs.str());
   }
+}
 
+}  // namespace
+
+std::string counterexample_obj_path(const ClauseOutcome& co) {
+  return "counterexamples/" + std::string(co.clause->id) + ".obj";
+}
+
+std::string render_report_html(const RunResult& run, const Verdict& v, const ReportContext& ctx) {
+  const char* headline = v.name == "conformant"       ? "CONFORMANT"
+                         : v.name == "not-conformant" ? "NOT CONFORMANT"
+                                                      : "INCOMPLETE";
+  pugi::xml_document doc;
+  auto title = doc.append_child("title");
+  title.text().set(("vgc certify: " + ctx.implementation_spec + " — " + headline).c_str());
+  auto body = doc.append_child("body");
+  add_summary(body, run, v, ctx, headline);
+  add_unjudged(body, run, v);
+  add_findings(body, run, v, ctx);
+  add_clause_table(body, run, v);
+  add_property_table(body, run);
   return html_page(title, body);
 }
 

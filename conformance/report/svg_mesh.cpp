@@ -128,12 +128,11 @@ bool valid_index(const MeshPicture& pic, int i) {
   return i >= 0 && static_cast<std::size_t>(i) < pic.positions.size() && finite(pic.positions[static_cast<std::size_t>(i)]);
 }
 
-}  // namespace
+// append_mesh_svg's steps, in drawing order (later ones on top).
 
-void append_mesh_svg(pugi::xml_node parent, const MeshPicture& pic, int width, int height) {
-  View view(width, height);
-  // Fit what is drawn: the faces' points (or every point when there is no
-  // face), the highlights, and the overlays.
+// The vertices drawn: the faces' (or every one when there is no face), the
+// highlighted ones and the ends of highlighted edges.
+std::vector<char> drawn_vertices(const MeshPicture& pic) {
   std::vector<char> used(pic.positions.size(), 0);
   for (const auto& f : pic.faces)
     for (int i : f)
@@ -144,6 +143,12 @@ void append_mesh_svg(pugi::xml_node parent, const MeshPicture& pic, int width, i
     for (int i : {a, b})
       if (valid_index(pic, i)) used[static_cast<std::size_t>(i)] = 1;
   if (pic.faces.empty()) std::fill(used.begin(), used.end(), 1);
+  return used;
+}
+
+// Fit what is drawn: the drawn vertices, the highlights, and the overlays.
+View fitted_view(const MeshPicture& pic, const std::vector<char>& used, int width, int height) {
+  View view(width, height);
   for (std::size_t i = 0; i < used.size(); ++i)
     if (used[i]) view.fit(pic.positions[i]);
   for (const auto& p : pic.observed_marks) view.fit(p);
@@ -154,7 +159,11 @@ void append_mesh_svg(pugi::xml_node parent, const MeshPicture& pic, int width, i
   for (const auto* segs : {&pic.expected_segments, &pic.observed_segments})
     for (const auto& [a, b] : *segs) view.fit(a), view.fit(b);
   view.finish();
+  return view;
+}
 
+// The <svg> element and its canvas.
+pugi::xml_node append_canvas(pugi::xml_node parent, int width, int height) {
   auto svg = parent.append_child("svg");
   svg.append_attribute("width") = width;
   svg.append_attribute("height") = height;
@@ -165,8 +174,11 @@ void append_mesh_svg(pugi::xml_node parent, const MeshPicture& pic, int width, i
   bg.append_attribute("width") = width;
   bg.append_attribute("height") = height;
   bg.append_attribute("fill") = kCanvasColour;
+  return svg;
+}
 
-  // Faces, back to front (mean depth of their corners).
+// The drawable faces, back to front (mean depth of their corners).
+std::vector<std::size_t> faces_back_to_front(const MeshPicture& pic) {
   std::vector<std::size_t> order;
   std::vector<double> depth(pic.faces.size(), 0);
   for (std::size_t f = 0; f < pic.faces.size(); ++f) {
@@ -178,6 +190,10 @@ void append_mesh_svg(pugi::xml_node parent, const MeshPicture& pic, int width, i
     order.push_back(f);
   }
   std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return depth[a] > depth[b]; });
+  return order;
+}
+
+void draw_faces(pugi::xml_node svg, const MeshPicture& pic, const View& view, const std::vector<std::size_t>& order) {
   auto faces = element(svg, "g", "faces");
   for (std::size_t f : order) {
     std::vector<Point3> pts;
@@ -195,8 +211,10 @@ void append_mesh_svg(pugi::xml_node parent, const MeshPicture& pic, int width, i
     poly.append_attribute("stroke-linejoin") = "round";
     if (hl) poly.append_attribute("data-index") = static_cast<int>(f);
   }
+}
 
-  // Edges the finding is about, over the faces.
+// Edges the finding is about, over the faces.
+void draw_highlighted_edges(pugi::xml_node svg, const MeshPicture& pic, const View& view) {
   auto hl_edges = element(svg, "g", "highlighted-edges");
   for (const auto& [a, b] : pic.highlight_edges) {
     double x1 = 0, y1 = 0, x2 = 0, y2 = 0;
@@ -207,17 +225,20 @@ void append_mesh_svg(pugi::xml_node parent, const MeshPicture& pic, int width, i
     line(hl_edges, "hl-edge", x1, y1, x2, y2, kHighlightColour, 5);
     hl_edges.last_child().append_attribute("data-index") = (std::to_string(a) + "-" + std::to_string(b)).c_str();
   }
+}
 
-  // Vertices (those faces use, or all when there is no face).
+// Vertices (those faces use, or all when there is no face).
+void draw_vertices(pugi::xml_node svg, const MeshPicture& pic, const View& view, const std::vector<char>& used) {
   auto verts = element(svg, "g", "vertices");
   for (std::size_t i = 0; i < pic.positions.size(); ++i) {
     double x = 0, y = 0;
     if (!used[i] || !view.at(pic.positions[i], &x, &y)) continue;
     circle(verts, "vertex", x, y, 2.5, kEdgeColour, nullptr, 0);
   }
+}
 
-  // Expected and observed refined points, and their divergent ones.
-  auto overlay = element(svg, "g", "overlay");
+// Expected and observed refined points and normals.
+void draw_refined_points(pugi::xml_node overlay, const MeshPicture& pic, const View& view) {
   for (const auto& p : pic.expected_points) {
     double x = 0, y = 0;
     if (view.at(p, &x, &y)) circle(overlay, "expected-point", x, y, 4, "none", kExpectedColour, 1.5);
@@ -236,6 +257,11 @@ void append_mesh_svg(pugi::xml_node parent, const MeshPicture& pic, int width, i
     if (view.at(a, &x1, &y1) && view.at(b, &x2, &y2))
       line(overlay, "observed-normal", x1, y1, x2, y2, kObservedColour, 2.5, "5 3");
   }
+}
+
+// The divergent ones among the refined points: a ring on the expected, a
+// cross on the observed.
+void draw_divergent_points(pugi::xml_node overlay, const MeshPicture& pic, const View& view) {
   for (int i : pic.divergent_expected) {
     double x = 0, y = 0;
     if (i < 0 || static_cast<std::size_t>(i) >= pic.expected_points.size()) continue;
@@ -250,8 +276,10 @@ void append_mesh_svg(pugi::xml_node parent, const MeshPicture& pic, int width, i
     cross(overlay, "divergent-observed", x, y, 5, kObservedColour);
     overlay.last_child().append_attribute("data-index") = i;
   }
+}
 
-  // What the implementation showed instead.
+// What the implementation showed instead: dashed outlines and crosses.
+void draw_observed_shapes(pugi::xml_node overlay, const MeshPicture& pic, const View& view) {
   for (const auto& o : pic.observed_outlines) {
     std::vector<Point3> closed = o;
     if (!closed.empty()) closed.push_back(closed.front());
@@ -268,16 +296,21 @@ void append_mesh_svg(pugi::xml_node parent, const MeshPicture& pic, int width, i
     double x = 0, y = 0;
     if (view.at(p, &x, &y)) cross(overlay, "observed", x, y, 7, kObservedColour);
   }
+}
 
-  // Highlighted vertices on top.
+// Highlighted vertices on top.
+void draw_highlighted_vertices(pugi::xml_node overlay, const MeshPicture& pic, const View& view) {
   for (int i : pic.highlight_vertices) {
     double x = 0, y = 0;
     if (!valid_index(pic, i) || !view.at(pic.positions[static_cast<std::size_t>(i)], &x, &y)) continue;
     circle(overlay, "hl-vertex", x, y, 7, kHighlightColour, "#ffffff", 1.5);
     overlay.last_child().append_attribute("data-index") = i;
   }
+}
 
-  // Labels: vertex ids (few enough to read), face ids at face centres.
+// Labels: vertex ids (few enough to read), face ids at face centres.
+void draw_labels(pugi::xml_node svg, const MeshPicture& pic, const View& view, const std::vector<char>& used,
+                 const std::vector<std::size_t>& order) {
   auto labels = element(svg, "g", "labels");
   labels.append_attribute("font-family") = "sans-serif";
   labels.append_attribute("font-size") = "11";
@@ -309,6 +342,24 @@ void append_mesh_svg(pugi::xml_node parent, const MeshPicture& pic, int width, i
       t.append_attribute("text-anchor") = "middle";
       t.text().set(pic.face_labels[f].c_str());
     }
+}
+
+}  // namespace
+
+void append_mesh_svg(pugi::xml_node parent, const MeshPicture& pic, int width, int height) {
+  const std::vector<char> used = drawn_vertices(pic);
+  const View view = fitted_view(pic, used, width, height);
+  auto svg = append_canvas(parent, width, height);
+  const std::vector<std::size_t> order = faces_back_to_front(pic);
+  draw_faces(svg, pic, view, order);
+  draw_highlighted_edges(svg, pic, view);
+  draw_vertices(svg, pic, view, used);
+  auto overlay = element(svg, "g", "overlay");
+  draw_refined_points(overlay, pic, view);
+  draw_divergent_points(overlay, pic, view);
+  draw_observed_shapes(overlay, pic, view);
+  draw_highlighted_vertices(overlay, pic, view);
+  draw_labels(svg, pic, view, used, order);
 }
 
 std::string render_mesh_svg(const MeshPicture& picture, int width, int height) {

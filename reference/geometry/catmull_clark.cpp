@@ -202,24 +202,27 @@ bool build_base_level(const MeshArrays& mesh, SubdivisionLevel* out, bool non_ma
   return true;
 }
 
-SubdivisionLevel refine_catmull_clark(const SubdivisionLevel& p, const CatmullClarkFaults& faults) {
-  const int nv = p.vertex_count(), nf = p.face_count(), ne = p.edge_count();
-  const Incidence in = incidence_of(p);
-  SubdivisionLevel c;
-  c.positions.assign(static_cast<std::size_t>(nv + nf + ne), Vec3{0, 0, 0});
-  c.vertex_sharpness.assign(c.positions.size(), kSharpnessSmooth);
-  for (int v = 0; v < nv; ++v) c.child_of_parent_vertex.push_back(v);
-  for (int f = 0; f < nf; ++f) c.child_of_parent_face.push_back(nv + f);
-  for (int e = 0; e < ne; ++e) c.child_of_parent_edge.push_back(nv + nf + e);
+namespace {
 
-  // Face points: the average of the face's vertices.
+// refine_catmull_clark's steps. Child numbering (see the header): parent
+// vertex v is child v, face f child nv + f, edge e child nv + nf + e.
+
+// Face points: the average of the face's vertices.
+void place_face_points(const SubdivisionLevel& p, SubdivisionLevel& c) {
+  const int nv = p.vertex_count(), nf = p.face_count();
   for (int f = 0; f < nf; ++f) {
     Vec3& fp = c.positions[static_cast<std::size_t>(nv + f)];
     const double w = 1.0 / p.face_sizes[f];
     for (int k = 0; k < p.face_sizes[f]; ++k) add_scaled(fp, p.positions[p.face_vertices[p.face_offsets[f] + k]], w);
   }
+}
 
-  // Edge points.
+// Edge points: a quarter of each end and of each face point (shared among
+// the faces when not two); a sharp edge the crease rule (the midpoint), a
+// sharpness in (0, 1] blended by it. Reads the face points.
+void place_edge_points(const SubdivisionLevel& p, const Incidence& in, const CatmullClarkFaults& faults,
+                       SubdivisionLevel& c) {
+  const int nv = p.vertex_count(), nf = p.face_count(), ne = p.edge_count();
   for (int e = 0; e < ne; ++e) {
     const float s = p.edge_sharpness[e];
     const int* faces = in.edge_faces.data() + in.edge_face_offsets[static_cast<std::size_t>(e)];
@@ -241,18 +244,53 @@ SubdivisionLevel refine_catmull_clark(const SubdivisionLevel& p, const CatmullCl
     add_scaled(ep, p.positions[p.edges[e][0]], vw);
     add_scaled(ep, p.positions[p.edges[e][1]], vw);
   }
+}
 
-  // Vertex points.
+// The edges and faces around one parent vertex, for its vertex rules.
+struct VertexStar {
+  int v = 0;
   std::vector<int> vedges, vfaces;
+};
+
+// Adds `weight` times the star's vertex point by one vertex rule (Sdc):
+// smooth and dart (n - 2)/n of v and 1/n^2 of each face point and
+// neighbour; crease 3/4 of v and 1/8 of each sharp neighbour; corner v.
+void add_vertex_rule(Vec3& acc, const SubdivisionLevel& p, const SubdivisionLevel& c, const VertexStar& star,
+                     CreaseRule rule, const std::vector<float>& sharp, double weight, bool wrong_crease_weights) {
+  const int nv = p.vertex_count(), v = star.v;
+  if (rule == CreaseRule::Smooth || rule == CreaseRule::Dart) {
+    const double n = static_cast<double>(star.vedges.size());
+    const double fw = 1.0 / (n * n);
+    for (int f : star.vfaces) add_scaled(acc, c.positions[static_cast<std::size_t>(nv + f)], weight * fw);
+    for (int e : star.vedges) add_scaled(acc, p.positions[other_end(p.edges[e], v)], weight * fw);
+    add_scaled(acc, p.positions[v], weight * ((n - 2.0) / n));
+  } else if (rule == CreaseRule::Crease) {
+    const double ew = wrong_crease_weights ? 1.0 / 6.0 : 0.125;
+    for (std::size_t i = 0; i < star.vedges.size(); ++i)
+      if (is_sharp(sharp[i])) add_scaled(acc, p.positions[other_end(p.edges[star.vedges[i]], v)], weight * ew);
+    add_scaled(acc, p.positions[v], weight * (1.0 - 2.0 * ew));
+  } else {
+    add_scaled(acc, p.positions[v], weight);
+  }
+}
+
+// Vertex points: the parent's rule, or where the child's rule differs the
+// two blended by the fractional weight (Sdc: a smooth parent is never
+// blended). Reads the face points.
+void place_vertex_points(const SubdivisionLevel& p, const Incidence& in, const CatmullClarkFaults& faults,
+                         SubdivisionLevel& c) {
+  const int nv = p.vertex_count();
+  VertexStar star;
   std::vector<float> es, ces;
   for (int v = 0; v < nv; ++v) {
     const auto sv = static_cast<std::size_t>(v);
-    vedges.assign(in.vertex_edges.begin() + in.vertex_edge_offsets[sv], in.vertex_edges.begin() + in.vertex_edge_offsets[sv + 1]);
-    vfaces.assign(in.vertex_faces.begin() + in.vertex_face_offsets[sv], in.vertex_faces.begin() + in.vertex_face_offsets[sv + 1]);
+    star.v = v;
+    star.vedges.assign(in.vertex_edges.begin() + in.vertex_edge_offsets[sv], in.vertex_edges.begin() + in.vertex_edge_offsets[sv + 1]);
+    star.vfaces.assign(in.vertex_faces.begin() + in.vertex_face_offsets[sv], in.vertex_faces.begin() + in.vertex_face_offsets[sv + 1]);
     es.clear();
     ces.clear();
     bool on_boundary = false;
-    for (int e : vedges) {
+    for (int e : star.vedges) {
       es.push_back(p.edge_sharpness[e]);
       ces.push_back(subdivide_sharpness(p.edge_sharpness[e]));
       on_boundary = on_boundary || p.edge_face_count[e] == 1;
@@ -260,40 +298,29 @@ SubdivisionLevel refine_catmull_clark(const SubdivisionLevel& p, const CatmullCl
     const float vs = p.vertex_sharpness[v], cvs = subdivide_sharpness(vs);
     c.vertex_sharpness[static_cast<std::size_t>(v)] = cvs;
     CreaseRule prule = determine_vertex_rule(vs, es), crule = determine_vertex_rule(cvs, ces);
-    if (vedges.empty() || (faults.pin_boundary_vertices && on_boundary)) prule = crule = CreaseRule::Corner;
+    if (star.vedges.empty() || (faults.pin_boundary_vertices && on_boundary)) prule = crule = CreaseRule::Corner;
 
     Vec3 acc{0, 0, 0};
-    auto apply_rule = [&](CreaseRule rule, const std::vector<float>& sharp, double weight) {
-      if (rule == CreaseRule::Smooth || rule == CreaseRule::Dart) {
-        const double n = static_cast<double>(vedges.size());
-        const double fw = 1.0 / (n * n);
-        for (int f : vfaces) add_scaled(acc, c.positions[static_cast<std::size_t>(nv + f)], weight * fw);
-        for (int e : vedges) add_scaled(acc, p.positions[other_end(p.edges[e], v)], weight * fw);
-        add_scaled(acc, p.positions[v], weight * ((n - 2.0) / n));
-      } else if (rule == CreaseRule::Crease) {
-        const double ew = faults.wrong_crease_weights ? 1.0 / 6.0 : 0.125;
-        for (std::size_t i = 0; i < vedges.size(); ++i)
-          if (is_sharp(sharp[i])) add_scaled(acc, p.positions[other_end(p.edges[vedges[i]], v)], weight * ew);
-        add_scaled(acc, p.positions[v], weight * (1.0 - 2.0 * ew));
-      } else {
-        add_scaled(acc, p.positions[v], weight);
-      }
-    };
+    const bool wrong = faults.wrong_crease_weights;
     if (prule == crule) {
-      apply_rule(prule, es, 1.0);
+      add_vertex_rule(acc, p, c, star, prule, es, 1.0, wrong);
     } else {
       const double w = faults.no_fractional_blend ? 0.0 : fractional_weight_at_vertex(vs, cvs, es);
       if (prule == CreaseRule::Smooth || prule == CreaseRule::Dart)  // Sdc: a smooth parent is never blended
-        apply_rule(prule, es, 1.0);
+        add_vertex_rule(acc, p, c, star, prule, es, 1.0, wrong);
       else {
-        apply_rule(prule, es, w);
-        apply_rule(crule, ces, 1.0 - w);
+        add_vertex_rule(acc, p, c, star, prule, es, w, wrong);
+        add_vertex_rule(acc, p, c, star, crule, ces, 1.0 - w, wrong);
       }
     }
     c.positions[static_cast<std::size_t>(v)] = acc;
   }
+}
 
-  // Child faces.
+// Child faces: n quads per parent n-gon, child i next to parent corner i
+// (spec 001), then the child level's edges.
+void build_child_faces(const SubdivisionLevel& p, SubdivisionLevel& c) {
+  const int nv = p.vertex_count(), nf = p.face_count();
   for (int f = 0; f < nf; ++f) {
     const int n = p.face_sizes[f], o = p.face_offsets[f];
     const int fp = nv + f;
@@ -316,9 +343,12 @@ SubdivisionLevel refine_catmull_clark(const SubdivisionLevel& p, const CatmullCl
     }
   }
   build_level_edges(&c);
+}
 
-  // Child edge sharpness: each half of a parent edge inherits the parent's
-  // subdivided sharpness; edges inside a parent face are smooth.
+// Child edge sharpness: each half of a parent edge inherits the parent's
+// subdivided sharpness; edges inside a parent face are smooth.
+void assign_child_edge_sharpness(const SubdivisionLevel& p, SubdivisionLevel& c) {
+  const int nv = p.vertex_count(), nf = p.face_count();
   c.edge_sharpness.assign(c.edges.size(), kSharpnessSmooth);
   for (int f = 0; f < c.face_count(); ++f)
     for (int k = 0; k < 4; ++k) {
@@ -328,6 +358,24 @@ SubdivisionLevel refine_catmull_clark(const SubdivisionLevel& p, const CatmullCl
       if (a < nv && b >= nv + nf)  // a half of parent edge b - nv - nf
         c.edge_sharpness[static_cast<std::size_t>(c.face_edges[corner])] = subdivide_sharpness(p.edge_sharpness[b - nv - nf]);
     }
+}
+
+}  // namespace
+
+SubdivisionLevel refine_catmull_clark(const SubdivisionLevel& p, const CatmullClarkFaults& faults) {
+  const int nv = p.vertex_count(), nf = p.face_count(), ne = p.edge_count();
+  const Incidence in = incidence_of(p);
+  SubdivisionLevel c;
+  c.positions.assign(static_cast<std::size_t>(nv + nf + ne), Vec3{0, 0, 0});
+  c.vertex_sharpness.assign(c.positions.size(), kSharpnessSmooth);
+  for (int v = 0; v < nv; ++v) c.child_of_parent_vertex.push_back(v);
+  for (int f = 0; f < nf; ++f) c.child_of_parent_face.push_back(nv + f);
+  for (int e = 0; e < ne; ++e) c.child_of_parent_edge.push_back(nv + nf + e);
+  place_face_points(p, c);
+  place_edge_points(p, in, faults, c);
+  place_vertex_points(p, in, faults, c);
+  build_child_faces(p, c);
+  assign_child_edge_sharpness(p, c);
   return c;
 }
 

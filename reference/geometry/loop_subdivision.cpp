@@ -49,32 +49,38 @@ std::array<double, 2> smooth_vertex_weights(int valence, bool warren) {
   return {1.0 - e * n, e};
 }
 
-}  // namespace
+// The parent's incidences refine_loop reads: the edges at each vertex, the
+// faces of each edge, the number of faces at each vertex.
+struct LoopIncidence {
+  std::vector<std::vector<int>> vertex_edges, edge_faces;
+  std::vector<int> vertex_face_count;
+};
 
-SubdivisionLevel refine_loop(const SubdivisionLevel& p, const LoopFaults& faults) {
-  for (int n : p.face_sizes)
-    if (n != 3) return {};
+LoopIncidence loop_incidence_of(const SubdivisionLevel& p) {
   const int nv = p.vertex_count(), nf = p.face_count(), ne = p.edge_count();
-  std::vector<std::vector<int>> vertex_edges(static_cast<std::size_t>(nv)), edge_faces(static_cast<std::size_t>(ne));
-  std::vector<int> vertex_face_count(static_cast<std::size_t>(nv), 0);
+  LoopIncidence in;
+  in.vertex_edges.resize(static_cast<std::size_t>(nv));
+  in.edge_faces.resize(static_cast<std::size_t>(ne));
+  in.vertex_face_count.assign(static_cast<std::size_t>(nv), 0);
   for (int e = 0; e < ne; ++e)
-    for (int end = 0; end < 2; ++end) vertex_edges[static_cast<std::size_t>(p.edges[e][end])].push_back(e);
+    for (int end = 0; end < 2; ++end) in.vertex_edges[static_cast<std::size_t>(p.edges[e][end])].push_back(e);
   for (int f = 0; f < nf; ++f)
     for (int k = 0; k < 3; ++k) {
-      ++vertex_face_count[static_cast<std::size_t>(p.face_vertices[p.face_offsets[f] + k])];
-      edge_faces[static_cast<std::size_t>(p.face_edges[p.face_offsets[f] + k])].push_back(f);
+      ++in.vertex_face_count[static_cast<std::size_t>(p.face_vertices[p.face_offsets[f] + k])];
+      in.edge_faces[static_cast<std::size_t>(p.face_edges[p.face_offsets[f] + k])].push_back(f);
     }
+  return in;
+}
 
-  SubdivisionLevel c;
-  c.positions.assign(static_cast<std::size_t>(nv + ne), Vec3{0, 0, 0});
-  c.vertex_sharpness.assign(c.positions.size(), kSharpnessSmooth);
-  for (int v = 0; v < nv; ++v) c.child_of_parent_vertex.push_back(v);
-  for (int e = 0; e < ne; ++e) c.child_of_parent_edge.push_back(nv + e);
-
-  // Edge points.
+// Edge points (Sdc Loop edge rule): 3/8 of each end and 1/8 of each
+// opposite vertex (shared among the faces when not two); a sharp edge the
+// crease rule (the midpoint), a sharpness in (0, 1] blended by it.
+void place_loop_edge_points(const SubdivisionLevel& p, const LoopIncidence& in, const LoopFaults& faults,
+                            SubdivisionLevel& c) {
+  const int nv = p.vertex_count(), ne = p.edge_count();
   for (int e = 0; e < ne; ++e) {
     const float s = p.edge_sharpness[e];
-    const auto& faces = edge_faces[e];
+    const auto& faces = in.edge_faces[e];
     double vw = 0.375;
     double fw = faces.size() == 2 ? 0.125 : 0.125 * 2.0 / static_cast<double>(faces.size());
     if (is_sharp(s)) {
@@ -92,10 +98,34 @@ SubdivisionLevel refine_loop(const SubdivisionLevel& p, const LoopFaults& faults
     add_scaled(ep, p.positions[p.edges[e][1]], vw);
     for (int f : faces) add_scaled(ep, p.positions[opposite_vertex(p, f, e)], fw);
   }
+}
 
-  // Vertex points.
+// Adds `weight` times vertex v's point by one vertex rule (Sdc): smooth and
+// dart by Loop's (or Warren's) weights over the neighbours, crease 3/4 of v
+// and 1/8 of each sharp neighbour, corner v itself.
+void add_loop_vertex_rule(Vec3& acc, const SubdivisionLevel& p, int v, const std::vector<int>& vedges,
+                          int face_count, CreaseRule rule, const std::vector<float>& sharp, double weight,
+                          bool warren) {
+  if (rule == CreaseRule::Smooth || rule == CreaseRule::Dart) {
+    const auto w = smooth_vertex_weights(face_count, warren);
+    for (int e : vedges) add_scaled(acc, p.positions[other_end(p.edges[e], v)], weight * w[1]);
+    add_scaled(acc, p.positions[v], weight * w[0]);
+  } else if (rule == CreaseRule::Crease) {
+    for (std::size_t i = 0; i < vedges.size(); ++i)
+      if (is_sharp(sharp[i])) add_scaled(acc, p.positions[other_end(p.edges[vedges[i]], v)], weight * 0.125);
+    add_scaled(acc, p.positions[v], weight * 0.75);
+  } else {
+    add_scaled(acc, p.positions[v], weight);
+  }
+}
+
+// Vertex points: the parent's rule, or where the child's rule differs (and
+// the parent's is not smooth) the two blended by the fractional weight.
+void place_loop_vertex_points(const SubdivisionLevel& p, const LoopIncidence& in, const LoopFaults& faults,
+                              SubdivisionLevel& c) {
+  const int nv = p.vertex_count();
   for (int v = 0; v < nv; ++v) {
-    const auto& vedges = vertex_edges[v];
+    const auto& vedges = in.vertex_edges[v];
     std::vector<float> es, ces;
     for (int e : vedges) {
       es.push_back(p.edge_sharpness[e]);
@@ -105,31 +135,22 @@ SubdivisionLevel refine_loop(const SubdivisionLevel& p, const LoopFaults& faults
     c.vertex_sharpness[static_cast<std::size_t>(v)] = cvs;
     CreaseRule prule = determine_vertex_rule(vs, es), crule = determine_vertex_rule(cvs, ces);
     if (vedges.empty()) prule = crule = CreaseRule::Corner;
+    const int face_count = in.vertex_face_count[static_cast<std::size_t>(v)];
     Vec3 acc{0, 0, 0};
-    auto apply_rule = [&](CreaseRule rule, const std::vector<float>& sharp, double weight) {
-      if (rule == CreaseRule::Smooth || rule == CreaseRule::Dart) {
-        const auto w = smooth_vertex_weights(vertex_face_count[static_cast<std::size_t>(v)], faults.warren_weights);
-        for (int e : vedges) add_scaled(acc, p.positions[other_end(p.edges[e], v)], weight * w[1]);
-        add_scaled(acc, p.positions[v], weight * w[0]);
-      } else if (rule == CreaseRule::Crease) {
-        for (std::size_t i = 0; i < vedges.size(); ++i)
-          if (is_sharp(sharp[i])) add_scaled(acc, p.positions[other_end(p.edges[vedges[i]], v)], weight * 0.125);
-        add_scaled(acc, p.positions[v], weight * 0.75);
-      } else {
-        add_scaled(acc, p.positions[v], weight);
-      }
-    };
     if (prule == crule || prule == CreaseRule::Smooth || prule == CreaseRule::Dart) {
-      apply_rule(prule, es, 1.0);
+      add_loop_vertex_rule(acc, p, v, vedges, face_count, prule, es, 1.0, faults.warren_weights);
     } else {
       const double w = faults.no_fractional_blend ? 0.0 : fractional_weight_at_vertex(vs, cvs, es);
-      apply_rule(prule, es, w);
-      apply_rule(crule, ces, 1.0 - w);
+      add_loop_vertex_rule(acc, p, v, vedges, face_count, prule, es, w, faults.warren_weights);
+      add_loop_vertex_rule(acc, p, v, vedges, face_count, crule, ces, 1.0 - w, faults.warren_weights);
     }
     c.positions[static_cast<std::size_t>(v)] = acc;
   }
+}
 
-  // Child triangles T0..T3 (triangle_tree.h), oriented as the parent.
+// Child triangles T0..T3 (triangle_tree.h), oriented as the parent.
+void build_loop_child_triangles(const SubdivisionLevel& p, SubdivisionLevel& c) {
+  const int nv = p.vertex_count(), nf = p.face_count();
   for (int f = 0; f < nf; ++f) {
     const int o = p.face_offsets[f];
     std::array<int, 3> vc{}, sub{};
@@ -151,30 +172,37 @@ SubdivisionLevel refine_loop(const SubdivisionLevel& p, const LoopFaults& faults
       c.face_hole.push_back(p.face_hole[f]);
     }
   }
-  if (faults.edges_by_vertex_pair) {
-    // The seeded fault: edges rebuilt from vertex pairs (merges the child
-    // edges of two triangles on the same three vertices).
-    build_level_edges(&c);
-    std::unordered_map<std::uint64_t, int> cindex;
-    for (int e = 0; e < c.edge_count(); ++e) cindex.emplace(edge_key(c.edges[e][0], c.edges[e][1]), e);
-    c.edge_sharpness.assign(c.edges.size(), kSharpnessSmooth);
-    for (int e = 0; e < ne; ++e) {
-      const float cs = subdivide_sharpness(p.edge_sharpness[e]);
-      for (int end = 0; end < 2; ++end) {
-        auto it = cindex.find(edge_key(p.edges[e][end], nv + e));
-        if (it != cindex.end()) c.edge_sharpness[static_cast<std::size_t>(it->second)] = cs;
-      }
+}
+
+// The seeded fault (LoopFaults::edges_by_vertex_pair): edges rebuilt from
+// vertex pairs (merges the child edges of two triangles on the same three
+// vertices).
+void build_loop_child_edges_by_vertex_pair(const SubdivisionLevel& p, SubdivisionLevel& c) {
+  const int nv = p.vertex_count(), ne = p.edge_count();
+  build_level_edges(&c);
+  std::unordered_map<std::uint64_t, int> cindex;
+  for (int e = 0; e < c.edge_count(); ++e) cindex.emplace(edge_key(c.edges[e][0], c.edges[e][1]), e);
+  c.edge_sharpness.assign(c.edges.size(), kSharpnessSmooth);
+  for (int e = 0; e < ne; ++e) {
+    const float cs = subdivide_sharpness(p.edge_sharpness[e]);
+    for (int end = 0; end < 2; ++end) {
+      auto it = cindex.find(edge_key(p.edges[e][end], nv + e));
+      if (it != cindex.end()) c.edge_sharpness[static_cast<std::size_t>(it->second)] = cs;
     }
-    return c;
   }
-  // Child edges from the parent's topology (see the header): the halves of
-  // each parent edge, then three inside each parent face.
+}
+
+// Child edges from the parent's topology (see the header, as OpenSubdiv's
+// Vtr::TriRefinement): the halves of each parent edge, then three inside
+// each parent face; and each child triangle's face_edges.
+void build_loop_child_edges(const SubdivisionLevel& p, const LoopIncidence& in, SubdivisionLevel& c) {
+  const int nv = p.vertex_count(), nf = p.face_count(), ne = p.edge_count();
   c.edges.assign(static_cast<std::size_t>(2 * ne + 3 * nf), {0, 0});
   c.edge_sharpness.assign(c.edges.size(), kSharpnessSmooth);
   c.edge_face_count.assign(c.edges.size(), 2);
   for (int e = 0; e < ne; ++e) {
     const float cs = subdivide_sharpness(p.edge_sharpness[e]);
-    const int faces = static_cast<int>(edge_faces[static_cast<std::size_t>(e)].size());
+    const int faces = static_cast<int>(in.edge_faces[static_cast<std::size_t>(e)].size());
     for (int end = 0; end < 2; ++end) {
       const auto ce = static_cast<std::size_t>(2 * e + end);
       c.edges[ce] = {p.edges[e][end], nv + e};
@@ -210,6 +238,27 @@ SubdivisionLevel refine_loop(const SubdivisionLevel& p, const LoopFaults& faults
       tj[2] = half(p.face_edges[o + (j + 2) % 3], vj);
     }
   }
+}
+
+}  // namespace
+
+SubdivisionLevel refine_loop(const SubdivisionLevel& p, const LoopFaults& faults) {
+  for (int n : p.face_sizes)
+    if (n != 3) return {};
+  const int nv = p.vertex_count(), ne = p.edge_count();
+  const LoopIncidence in = loop_incidence_of(p);
+  SubdivisionLevel c;
+  c.positions.assign(static_cast<std::size_t>(nv + ne), Vec3{0, 0, 0});
+  c.vertex_sharpness.assign(c.positions.size(), kSharpnessSmooth);
+  for (int v = 0; v < nv; ++v) c.child_of_parent_vertex.push_back(v);
+  for (int e = 0; e < ne; ++e) c.child_of_parent_edge.push_back(nv + e);
+  place_loop_edge_points(p, in, faults, c);
+  place_loop_vertex_points(p, in, faults, c);
+  build_loop_child_triangles(p, c);
+  if (faults.edges_by_vertex_pair)
+    build_loop_child_edges_by_vertex_pair(p, c);
+  else
+    build_loop_child_edges(p, in, c);
   return c;
 }
 

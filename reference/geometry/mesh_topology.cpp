@@ -140,25 +140,29 @@ std::vector<int> group_corner_fans(const MeshArrays& mesh, const MeshTopology& t
   return fans;
 }
 
-MeshTopology classify_mesh(const MeshArrays& mesh) {
-  MeshTopology t;
-  t.status = check_mesh(mesh, &t.bad_face);
-  if (t.status != MeshStatus::Ok) return t;
+namespace {
 
+// classify_mesh's phases, in order; each reads what the ones before filled.
+// The definitions they implement are mesh_topology.h's (Spec: 002).
+
+// Phase 1, corners: check_mesh made the faces tile face_vertices, so every
+// corner has exactly one face (the "< 0" guards of later phases are belt and
+// braces).
+void assign_corner_faces(const MeshArrays& mesh, MeshTopology& t) {
   const int faces = mesh.face_count();
-  const int vertices = mesh.vertex_count();
-  const auto& fv = mesh.face_vertices;
-
-  // Corners: check_mesh made the faces tile face_vertices, so every corner
-  // has exactly one face (the "< 0" guards below are belt and braces).
-  const int corners = static_cast<int>(fv.size());
+  const int corners = static_cast<int>(mesh.face_vertices.size());
   t.corner_face.assign(static_cast<std::size_t>(corners), -1);
   t.corner_edge.assign(static_cast<std::size_t>(corners), -1);
   for (int f = 0; f < faces; ++f)
     for (int i = 0; i < mesh.face_sizes[static_cast<std::size_t>(f)]; ++i)
       t.corner_face[static_cast<std::size_t>(mesh.face_offsets[static_cast<std::size_t>(f)] + i)] = f;
+}
 
-  // Edges: sort (min, max, corner) triples and group them.
+// Phase 2, edges (winged-edge connectivity, 002): sort (min, max, corner)
+// triples and group them; an edge's corners are its uses, ascending.
+void build_edges(const MeshArrays& mesh, MeshTopology& t) {
+  const auto& fv = mesh.face_vertices;
+  const int corners = static_cast<int>(fv.size());
   struct Use {
     int a, b, corner;
   };
@@ -184,30 +188,42 @@ MeshTopology classify_mesh(const MeshArrays& mesh) {
     t.corner_edge[static_cast<std::size_t>(uses[i].corner)] = static_cast<int>(t.edges.size()) - 1;
   }
   t.edge_corner_offsets.push_back(static_cast<int>(uses.size()));
+}
 
-  // Corners per vertex (counting sort keeps them ascending).
+// Phase 3, corners per vertex (counting sort keeps them ascending).
+void build_vertex_corners(const MeshArrays& mesh, MeshTopology& t) {
+  const int vertices = mesh.vertex_count();
+  const auto& fv = mesh.face_vertices;
+  const int corners = static_cast<int>(fv.size());
   t.vertex_corner_offsets.assign(static_cast<std::size_t>(vertices) + 1, 0);
   for (int c = 0; c < corners; ++c)
     if (t.corner_face[static_cast<std::size_t>(c)] >= 0) ++t.vertex_corner_offsets[static_cast<std::size_t>(fv[static_cast<std::size_t>(c)]) + 1];
   for (int v = 0; v < vertices; ++v)
     t.vertex_corner_offsets[static_cast<std::size_t>(v) + 1] += t.vertex_corner_offsets[static_cast<std::size_t>(v)];
   t.vertex_corners.resize(static_cast<std::size_t>(t.vertex_corner_offsets.back()));
-  {
-    std::vector<int> fill(t.vertex_corner_offsets.begin(), t.vertex_corner_offsets.end() - 1);
-    for (int c = 0; c < corners; ++c)
-      if (t.corner_face[static_cast<std::size_t>(c)] >= 0)
-        t.vertex_corners[static_cast<std::size_t>(fill[static_cast<std::size_t>(fv[static_cast<std::size_t>(c)])]++)] = c;
-  }
+  std::vector<int> fill(t.vertex_corner_offsets.begin(), t.vertex_corner_offsets.end() - 1);
+  for (int c = 0; c < corners; ++c)
+    if (t.corner_face[static_cast<std::size_t>(c)] >= 0)
+      t.vertex_corners[static_cast<std::size_t>(fill[static_cast<std::size_t>(fv[static_cast<std::size_t>(c)])]++)] = c;
+}
 
-  // Edge classes and orientation consistency.
+// Phase 4, edge classes (002: "each edge ... can be the edge of either one
+// or two polygons") and orientation consistency (000 2.6: a consistently
+// oriented mesh uses each interior edge once in each direction).
+void classify_edges(MeshTopology& t) {
   for (const MeshEdge& e : t.edges) {
     if (e.use_count == 1) ++t.boundary_edge_count;
     else if (e.use_count == 2) ++t.interior_edge_count;
     else ++t.non_manifold_edge_count;
     if (e.use_count == 2 && e.forward_count != 1) t.consistently_oriented = false;
   }
+}
 
-  // Vertex kinds from fans (corners joined across 2-use edges).
+// Phase 5, vertex kinds from fans (corners joined across 2-use edges; 002:
+// a neighbourhood "equivalent to a disc ... or a half disc"), then the
+// mesh-wide manifold flags.
+void classify_vertices(const MeshArrays& mesh, MeshTopology& t) {
+  const int vertices = mesh.vertex_count();
   int fan_total = 0;
   const std::vector<int> corner_fan = group_corner_fans(mesh, t, {}, &fan_total);
   t.vertex_kinds.assign(static_cast<std::size_t>(vertices), VertexKind::Isolated);
@@ -244,100 +260,125 @@ MeshTopology classify_mesh(const MeshArrays& mesh) {
   t.is_manifold = t.non_manifold_edge_count == 0 && t.non_manifold_vertices.empty();
   t.is_polygon_mesh = t.is_manifold && t.consistently_oriented;
   t.closed = t.boundary_edge_count == 0;
+}
 
-  // Orientability: propagate a flip sign across 2-use edges.
-  {
-    std::vector<int> sign(static_cast<std::size_t>(faces), 0);
-    std::vector<int> stack;
-    for (int seed = 0; seed < faces && t.orientable; ++seed) {
-      if (sign[static_cast<std::size_t>(seed)] != 0) continue;
-      sign[static_cast<std::size_t>(seed)] = 1;
-      stack.push_back(seed);
-      while (!stack.empty() && t.orientable) {
-        const int f = stack.back();
-        stack.pop_back();
-        const int o = mesh.face_offsets[static_cast<std::size_t>(f)];
-        for (int c = o; c < o + mesh.face_sizes[static_cast<std::size_t>(f)]; ++c) {
-          const auto e = static_cast<std::size_t>(t.corner_edge[static_cast<std::size_t>(c)]);
-          if (t.edges[e].use_count != 2) continue;
-          const int c1 = t.edge_corners[static_cast<std::size_t>(t.edge_corner_offsets[e])];
-          const int c2 = t.edge_corners[static_cast<std::size_t>(t.edge_corner_offsets[e]) + 1];
-          const int other = c1 == c ? c2 : c1;
-          const int g = t.corner_face[static_cast<std::size_t>(other)];
-          // Same direction of use means the two faces need opposite signs.
-          const bool same_dir = fv[static_cast<std::size_t>(c)] == fv[static_cast<std::size_t>(other)];
-          const int want = same_dir ? -sign[static_cast<std::size_t>(f)] : sign[static_cast<std::size_t>(f)];
-          if (sign[static_cast<std::size_t>(g)] == 0) {
-            sign[static_cast<std::size_t>(g)] = want;
-            stack.push_back(g);
-          } else if (sign[static_cast<std::size_t>(g)] != want) {
-            t.orientable = false;
-            break;
-          }
+// Phase 6, orientability: propagate a flip sign across 2-use edges; the
+// mesh is not orientable when a face would need both signs.
+void check_orientability(const MeshArrays& mesh, MeshTopology& t) {
+  const int faces = mesh.face_count();
+  const auto& fv = mesh.face_vertices;
+  std::vector<int> sign(static_cast<std::size_t>(faces), 0);
+  std::vector<int> stack;
+  for (int seed = 0; seed < faces && t.orientable; ++seed) {
+    if (sign[static_cast<std::size_t>(seed)] != 0) continue;
+    sign[static_cast<std::size_t>(seed)] = 1;
+    stack.push_back(seed);
+    while (!stack.empty() && t.orientable) {
+      const int f = stack.back();
+      stack.pop_back();
+      const int o = mesh.face_offsets[static_cast<std::size_t>(f)];
+      for (int c = o; c < o + mesh.face_sizes[static_cast<std::size_t>(f)]; ++c) {
+        const auto e = static_cast<std::size_t>(t.corner_edge[static_cast<std::size_t>(c)]);
+        if (t.edges[e].use_count != 2) continue;
+        const int c1 = t.edge_corners[static_cast<std::size_t>(t.edge_corner_offsets[e])];
+        const int c2 = t.edge_corners[static_cast<std::size_t>(t.edge_corner_offsets[e]) + 1];
+        const int other = c1 == c ? c2 : c1;
+        const int g = t.corner_face[static_cast<std::size_t>(other)];
+        // Same direction of use means the two faces need opposite signs.
+        const bool same_dir = fv[static_cast<std::size_t>(c)] == fv[static_cast<std::size_t>(other)];
+        const int want = same_dir ? -sign[static_cast<std::size_t>(f)] : sign[static_cast<std::size_t>(f)];
+        if (sign[static_cast<std::size_t>(g)] == 0) {
+          sign[static_cast<std::size_t>(g)] = want;
+          stack.push_back(g);
+        } else if (sign[static_cast<std::size_t>(g)] != want) {
+          t.orientable = false;
+          break;
         }
       }
     }
   }
+}
 
-  // Components: faces joined through shared edges.
-  {
-    UnionFind uf(static_cast<std::size_t>(faces));
-    for (std::size_t e = 0; e < t.edges.size(); ++e)
-      for (int k = t.edge_corner_offsets[e] + 1; k < t.edge_corner_offsets[e + 1]; ++k)
-        uf.unite(t.corner_face[static_cast<std::size_t>(t.edge_corners[static_cast<std::size_t>(t.edge_corner_offsets[e])])],
-                 t.corner_face[static_cast<std::size_t>(t.edge_corners[static_cast<std::size_t>(k)])]);
-    t.face_component = number_classes(uf, faces, &t.component_count);
-  }
+// Phase 7, components: faces joined through shared edges (any use count);
+// then the counts of the Euler characteristic V - E + F (V: used vertices).
+void find_components(const MeshArrays& mesh, MeshTopology& t) {
+  const int faces = mesh.face_count();
+  UnionFind uf(static_cast<std::size_t>(faces));
+  for (std::size_t e = 0; e < t.edges.size(); ++e)
+    for (int k = t.edge_corner_offsets[e] + 1; k < t.edge_corner_offsets[e + 1]; ++k)
+      uf.unite(t.corner_face[static_cast<std::size_t>(t.edge_corners[static_cast<std::size_t>(t.edge_corner_offsets[e])])],
+               t.corner_face[static_cast<std::size_t>(t.edge_corners[static_cast<std::size_t>(k)])]);
+  t.face_component = number_classes(uf, faces, &t.component_count);
 
   t.face_count = faces;
   t.edge_count = static_cast<int>(t.edges.size());
-  t.used_vertex_count = vertices - t.isolated_vertex_count;
+  t.used_vertex_count = mesh.vertex_count() - t.isolated_vertex_count;
   t.euler_characteristic = static_cast<long>(t.used_vertex_count) - t.edge_count + t.face_count;
+}
 
-  // Boundary loops of a manifold mesh: every boundary vertex has exactly
-  // two boundary edges.
-  if (t.is_manifold) {
-    std::vector<std::array<int, 2>> vb(static_cast<std::size_t>(vertices), {-1, -1});
-    for (std::size_t e = 0; e < t.edges.size(); ++e) {
-      if (t.edges[e].use_count != 1) continue;
-      for (int v : {t.edges[e].a, t.edges[e].b}) {
-        auto& slot = vb[static_cast<std::size_t>(v)];
-        (slot[0] < 0 ? slot[0] : slot[1]) = static_cast<int>(e);
-      }
+// Phase 8, boundary loops of a manifold mesh: every boundary vertex has
+// exactly two boundary edges. Each loop starts at its smallest vertex and
+// runs along the border half-edges (opposite to the faces' use), or towards
+// the start's smaller neighbour where the faces disagree.
+void trace_boundary_loops(const MeshArrays& mesh, MeshTopology& t) {
+  const int vertices = mesh.vertex_count();
+  const auto& fv = mesh.face_vertices;
+  std::vector<std::array<int, 2>> vb(static_cast<std::size_t>(vertices), {-1, -1});
+  for (std::size_t e = 0; e < t.edges.size(); ++e) {
+    if (t.edges[e].use_count != 1) continue;
+    for (int v : {t.edges[e].a, t.edges[e].b}) {
+      auto& slot = vb[static_cast<std::size_t>(v)];
+      (slot[0] < 0 ? slot[0] : slot[1]) = static_cast<int>(e);
     }
-    auto other_end = [&](int e, int v) {
-      const MeshEdge& me = t.edges[static_cast<std::size_t>(e)];
-      return me.a == v ? me.b : me.a;
-    };
-    // True when the border half-edge of boundary edge e leaves v, i.e. the
-    // face uses e towards v.
-    auto border_leaves = [&](int e, int v) {
-      const int c = t.edge_corners[static_cast<std::size_t>(t.edge_corner_offsets[static_cast<std::size_t>(e)])];
-      return fv[static_cast<std::size_t>(next_corner(mesh, t, c))] == v;
-    };
-    std::vector<bool> done(t.edges.size(), false);
-    std::vector<std::vector<int>> loops;
-    for (int s = 0; s < vertices; ++s) {
-      const auto sb = vb[static_cast<std::size_t>(s)];
-      if (sb[0] < 0 || done[static_cast<std::size_t>(sb[0])]) continue;
-      const bool l0 = border_leaves(sb[0], s), l1 = border_leaves(sb[1], s);
-      int e = sb[0];
-      if (l0 != l1) e = l0 ? sb[0] : sb[1];
-      else if (other_end(sb[1], s) < other_end(sb[0], s)) e = sb[1];
-      std::vector<int> loop{s};
-      int v = s;
-      while (true) {
-        done[static_cast<std::size_t>(e)] = true;
-        v = other_end(e, v);
-        if (v == s) break;
-        loop.push_back(v);
-        const auto b = vb[static_cast<std::size_t>(v)];
-        e = b[0] == e ? b[1] : b[0];
-      }
-      loops.push_back(std::move(loop));
-    }
-    t.boundary_loops = std::move(loops);
   }
+  auto other_end = [&](int e, int v) {
+    const MeshEdge& me = t.edges[static_cast<std::size_t>(e)];
+    return me.a == v ? me.b : me.a;
+  };
+  // True when the border half-edge of boundary edge e leaves v, i.e. the
+  // face uses e towards v.
+  auto border_leaves = [&](int e, int v) {
+    const int c = t.edge_corners[static_cast<std::size_t>(t.edge_corner_offsets[static_cast<std::size_t>(e)])];
+    return fv[static_cast<std::size_t>(next_corner(mesh, t, c))] == v;
+  };
+  std::vector<bool> done(t.edges.size(), false);
+  std::vector<std::vector<int>> loops;
+  for (int s = 0; s < vertices; ++s) {
+    const auto sb = vb[static_cast<std::size_t>(s)];
+    if (sb[0] < 0 || done[static_cast<std::size_t>(sb[0])]) continue;
+    const bool l0 = border_leaves(sb[0], s), l1 = border_leaves(sb[1], s);
+    int e = sb[0];
+    if (l0 != l1) e = l0 ? sb[0] : sb[1];
+    else if (other_end(sb[1], s) < other_end(sb[0], s)) e = sb[1];
+    std::vector<int> loop{s};
+    int v = s;
+    while (true) {
+      done[static_cast<std::size_t>(e)] = true;
+      v = other_end(e, v);
+      if (v == s) break;
+      loop.push_back(v);
+      const auto b = vb[static_cast<std::size_t>(v)];
+      e = b[0] == e ? b[1] : b[0];
+    }
+    loops.push_back(std::move(loop));
+  }
+  t.boundary_loops = std::move(loops);
+}
+
+}  // namespace
+
+MeshTopology classify_mesh(const MeshArrays& mesh) {
+  MeshTopology t;
+  t.status = check_mesh(mesh, &t.bad_face);
+  if (t.status != MeshStatus::Ok) return t;
+  assign_corner_faces(mesh, t);
+  build_edges(mesh, t);
+  build_vertex_corners(mesh, t);
+  classify_edges(t);
+  classify_vertices(mesh, t);
+  check_orientability(mesh, t);
+  find_components(mesh, t);
+  if (t.is_manifold) trace_boundary_loops(mesh, t);
   return t;
 }
 
