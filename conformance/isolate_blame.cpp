@@ -5,6 +5,7 @@
 #include <string>
 
 #include "cancel.h"
+#include "clause.h"
 #include "command_text.h"
 #include "confirm_finding.h"
 #include "node.h"
@@ -44,6 +45,16 @@ std::string difference_of(const Finding& f) {
 
 bool blame_isolates(const Finding& f) { return f.rules.size() <= 1; }
 
+// Whether clause `a`'s level is at least as strict as `b`'s (MUST, then
+// SHOULD, then IMPLEMENTATION-DEFINED); an unknown id counts as the mildest.
+static bool stricter_or_equal(const std::string& a, const std::string& b) {
+  const auto rank = [](const std::string& id) {
+    const Clause* c = find_clause(id);
+    return c ? static_cast<int>(c->level) : 3;  // Must 0, Should 1, ImplementationDefined 2
+  };
+  return rank(a) <= rank(b);
+}
+
 ShrinkChoice choose_shrink(const Finding& current, const std::vector<Command>& current_trace,
                            const Finding& candidate, const std::vector<Command>& candidate_trace) {
   if (candidate.status != current.status) return ShrinkChoice::Reject;
@@ -51,6 +62,13 @@ ShrinkChoice choose_shrink(const Finding& current, const std::vector<Command>& c
   if (candidate.clause == current.clause)
     return blame_isolates(current) && !isolates ? ShrinkChoice::Reject : ShrinkChoice::Keep;
   if (!isolates) return ShrinkChoice::Reject;
+  // Never to a milder clause: a MUST deviation is not hidden behind a SHOULD
+  // or IMPLEMENTATION-DEFINED finding of the same command (an implementation
+  // that drops crease_set_vertex whether its layer exists or not breaks the
+  // MUST rule of the set layer, not only the reading of a missing one:
+  // RouteLimits.AFaultTheSnapshotShowsIsStillCaught).
+  if (stricter_or_equal(current.clause, candidate.clause) && !stricter_or_equal(candidate.clause, current.clause))
+    return ShrinkChoice::Reject;
   // The difference several guards explained, explained by one of them alone.
   if (guards_disagree(current) && explains(current, candidate.clause)) return ShrinkChoice::Switch;
   // The same difference on the same command, in a smaller program where
