@@ -1,38 +1,23 @@
 // sign_budget.cpp — see sign_budget.h.
 #include "sign_budget.h"
 
-#include <sys/resource.h>
+#include "run_budget.h"  // run_cpu_seconds
 
 #include <algorithm>
 
 namespace vgc::fuzz {
-namespace {
-
-double seconds_of(const rusage& u) {
-  return static_cast<double>(u.ru_utime.tv_sec + u.ru_stime.tv_sec) +
-         static_cast<double>(u.ru_utime.tv_usec + u.ru_stime.tv_usec) / 1e6;
-}
-
-}  // namespace
-
-double self_and_children_cpu_seconds() {
-  rusage self{}, children{};
-  getrusage(RUSAGE_SELF, &self);
-  getrusage(RUSAGE_CHILDREN, &children);
-  return seconds_of(self) + seconds_of(children);
-}
 
 SignBudget SignBudget::starting_now(double time_s) {
   SignBudget b;
   b.cpu_limit_s = std::max(10.0, time_s / 10);
-  b.cpu_at_start_s = self_and_children_cpu_seconds();
+  b.cpu_at_start_s = run_cpu_seconds();
   const double guard_s = std::max(300.0, 20 * b.cpu_limit_s);
   b.wall_guard = std::chrono::steady_clock::now() +
                  std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(guard_s));
   return b;
 }
 
-double SignBudget::cpu_used_s() const { return self_and_children_cpu_seconds() - cpu_at_start_s; }
+double SignBudget::cpu_used_s() const { return run_cpu_seconds() - cpu_at_start_s; }
 
 bool SignBudget::wall_guard_reached() const { return std::chrono::steady_clock::now() >= wall_guard; }
 

@@ -8,7 +8,8 @@
 // loaded machine signed fewer inputs, minimized less and confirmed fewer
 // findings than an idle one: the same campaign wrote different findings
 // depending on what else ran beside it. The budget is now CPU seconds of
-// vgc and every child it waited for (the targets, `vgc replay`, an exec:
+// vgc and its children, waited for or running (run_budget.h's
+// run_cpu_seconds, which certify's --budget counts too: the targets, `vgc replay`, an exec:
 // implementation), which the machine's load barely changes, and the counts
 // already there (200 inputs, 200 replays). A wall guard (20 times the CPU
 // budget, at least 5 minutes) only stops what uses no CPU while it waits (a
@@ -31,8 +32,5 @@ struct SignBudget {
   bool half_spent() const;             // half of either (a live implementation's inputs stop there)
   bool wall_guard_reached() const;
 };
-
-// User + system CPU seconds of this process and the children it waited for.
-double self_and_children_cpu_seconds();
 
 }  // namespace vgc::fuzz

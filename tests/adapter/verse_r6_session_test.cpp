@@ -14,6 +14,7 @@
 
 #include "adapter_test_util.h"
 #include "implementation.h"
+#include "untold.h"
 #include "program.h"
 #include "runner.h"
 
@@ -58,23 +59,7 @@ TEST(VerseR6Session, ADroppedDriverIsSeenAtTheNextResetAndLoggedInAgainQuickly) 
   }
 }
 
-// Forwards everything but what comes next: each command goes on its own.
-class Untold final : public Implementation {
- public:
-  explicit Untold(Implementation& sut) : sut_(sut) {}
-  std::string name() const override { return sut_.name(); }
-  Answer reset() override { return sut_.reset(); }
-  Answer apply(const Command& c) override { return sut_.apply(c); }
-  Document snapshot() override { return sut_.snapshot(); }
-  Document derived() override { return sut_.derived(); }
-  RouteLimits limits() const override { return sut_.limits(); }
-  bool offers_late_view() override { return sut_.offers_late_view(); }
-  void use_late_view(bool on) override { sut_.use_late_view(on); }
-  std::string late_view_wrong_format() override { return sut_.late_view_wrong_format(); }
-
- private:
-  Implementation& sut_;
-};
+using test::Untold;  // each command on its own round trip (untold.h)
 
 // Issue 31, several commands before one barrier: r6 takes a VERTEX_XYZ
 // write on layer 2 for a vertex that is not live as the vertex's creation

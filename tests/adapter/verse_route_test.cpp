@@ -35,6 +35,7 @@
 #include "snapshot.h"
 #include "wire_commands.h"
 #include "implementation.h"
+#include "untold.h"
 #include "report.h"
 #include "restartable_host.h"
 #include "route.h"
@@ -529,23 +530,7 @@ TEST(VerseRoute, CommandsToldAheadShareOneRoundTrip) {
   EXPECT_EQ(verse->batch_fallbacks(), 0u);
 }
 
-// Forwards everything but what comes next: each command goes on its own.
-class Untold final : public Implementation {
- public:
-  explicit Untold(Implementation& sut) : sut_(sut) {}
-  std::string name() const override { return sut_.name(); }
-  Answer reset() override { return sut_.reset(); }
-  Answer apply(const Command& c) override { return sut_.apply(c); }
-  Document snapshot() override { return sut_.snapshot(); }
-  Document derived() override { return sut_.derived(); }
-  RouteLimits limits() const override { return sut_.limits(); }
-  bool offers_late_view() override { return sut_.offers_late_view(); }
-  void use_late_view(bool on) override { sut_.use_late_view(on); }
-  std::string late_view_wrong_format() override { return sut_.late_view_wrong_format(); }
-
- private:
-  Implementation& sut_;
-};
+using test::Untold;  // each command on its own round trip (untold.h)
 
 // Issue 31: a deviation inside a batch is blamed on the command that made
 // it, as when every command has its own barrier. The served node has a
