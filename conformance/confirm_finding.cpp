@@ -5,6 +5,7 @@
 
 #include <algorithm>
 
+#include "bounded_text.h"
 #include "cancel.h"
 #include "check_step.h"
 #include "runner.h"  // replay_program: a finding is confirmed by replaying it on a fresh instance
@@ -16,6 +17,7 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 constexpr const char* kHistoryPrefix = "depends on the implementation's history";
+constexpr const char* kUnconfirmed = "not confirmed on a fresh instance";
 
 // Restarts the implementation and replays commands on it, within a budget
 // of attempts and time.
@@ -26,6 +28,11 @@ class Reproducer {
 
   bool spent() const { return attempts_ >= max_attempts_ || Clock::now() >= deadline_ || cancel_signal(); }
   int attempts() const { return attempts_; }
+  // How many attempts had a fresh instance to replay on, and why the last
+  // start failed (a host that stopped answering, a program that no longer
+  // starts): with none started, nothing was confirmed or refuted.
+  int started() const { return started_; }
+  const std::string& start_failure() const { return start_failure_; }
 
   // Whether `commands` from a fresh instance fail with the status sought;
   // when they do, *commands is cut after the command that failed.
@@ -34,8 +41,7 @@ class Reproducer {
   bool fails(std::vector<Command>* commands, const std::optional<CapabilityRequest>& request = std::nullopt) {
     if (spent()) return false;
     ++attempts_;
-    const Answer a = sut_.restart();
-    if (a.status != CallStatus::Ok) return false;  // it cannot even start: nothing to learn here
+    if (!started_fresh()) return false;  // it cannot even start: nothing to learn here
     const ReplayResult r = replay_program(Program{*commands, request}, sut_);
     if (!r.failure || !same_kind(*r.failure)) return false;
     if (r.failed_at >= 0 && static_cast<std::size_t>(r.failed_at) + 1 < commands->size())
@@ -53,18 +59,30 @@ class Reproducer {
   // Same clause and status as `f`, from its own program on a fresh instance.
   bool reproduces(const PropertyFinding& f) {
     ++attempts_;
-    if (sut_.restart().status != CallStatus::Ok) return false;
+    if (!started_fresh()) return false;
     const ReplayResult r = replay_program(f.program, sut_);
     const auto same = [&f](const Finding& x) { return x.status == f.finding.status && x.clause == f.finding.clause; };
     return (r.failure && same(*r.failure)) || std::any_of(r.also_failed.begin(), r.also_failed.end(), same);
   }
 
  private:
+  bool started_fresh() {
+    const Answer a = sut_.restart();
+    if (a.status != CallStatus::Ok) {
+      start_failure_ = fmt::format("{}: {}", call_status_name(a.status), bounded_text(a.detail));
+      return false;
+    }
+    ++started_;
+    return true;
+  }
+
   Implementation& sut_;
   Finding sought_;
   Clock::time_point deadline_;
   int max_attempts_;
   int attempts_ = 0;
+  int started_ = 0;
+  std::string start_failure_;
   Finding last_;
 };
 
@@ -193,6 +211,13 @@ bool confirm_call_failure(Implementation& sut, PropertyFinding* pf, const std::v
                           Clock::time_point deadline, int max_attempts) {
   Reproducer rep(sut, pf->finding, deadline, max_attempts);
   if (rep.reproduces(*pf)) return true;
+  if (rep.started() == 0) {
+    // No fresh instance to replay on: the finding stands where it was
+    // seen, and says it was not confirmed (nor shown to need a history).
+    pf->finding.message += fmt::format(" [{}: no fresh instance could be started to replay it on ({})]",
+                                       kUnconfirmed, rep.start_failure());
+    return true;
+  }
 
   const std::string blamed = pf->finding.clause;
   const std::size_t shrunk = pf->program.commands.size();

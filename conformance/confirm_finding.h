@@ -102,7 +102,10 @@ bool depends_on_history(const Finding& f);
 // Confirms the finding `pf` (any kind but NotJudged), found while
 // the instance had been sent `history` since it started (the failing case
 // last). Returns true when pf's program fails a fresh instance with the same
-// clause and status: pf is left as it is. Otherwise rewrites pf as a finding
+// clause and status: pf is left as it is. Also true when no fresh instance
+// could be started at all (a host that stopped answering): pf stands where
+// it was seen, its message ending "[not confirmed on a fresh instance: ...]",
+// since nothing showed that it needs a history. Otherwise rewrites pf as a finding
 // that depends on the implementation's history (above) and returns false.
 // Stops reducing at `deadline` or after `max_attempts` restarts.
 bool confirm_call_failure(Implementation& sut, PropertyFinding* pf, const std::vector<std::vector<Command>>& history,

@@ -495,7 +495,11 @@ bool VerseImplementation::ensure_late() {
   // that forgot it (only its own time-out ends its waits).
   verse::ClientOptions o = session_options(observer_.get());
   o.unacknowledged_limit_s = 0;
-  return observer_ && late_->connect(host_, port_, o).ok();
+  if (!observer_ || !silent_since_.empty()) return false;  // a silent host is not waited for again
+  const verse::Status st = late_->connect(host_, port_, o);
+  if (st.code == verse::Status::Code::Timeout && ever_connected_)
+    silent_since_ = "no answer to a login within " + limit_text(options_.start_timeout_seconds, "--start-timeout");
+  return st.ok();
 }
 
 Answer VerseImplementation::start() {
@@ -621,6 +625,16 @@ Answer VerseImplementation::subscribe_new_layers(std::uint32_t node, Clock::time
   return {};
 }
 
+bool VerseImplementation::observer_answers(double seconds) {
+  if (!observer_ || !observer_->connected()) return false;
+  std::vector<verse::WireCommand> seen;
+  ++round_trips_;
+  if (!observer_->barrier(node_, seconds, &seen).ok()) return false;
+  std::string error;
+  for (const auto& w : seen) (void)absorb(w, &error);  // the mirror keeps up; the caller reports the lost session
+  return true;
+}
+
 Answer VerseImplementation::settle(const std::string& what) {
   const auto deadline = Clock::now() + std::chrono::duration_cast<Clock::duration>(
                                            std::chrono::duration<double>(options_.timeout_seconds));
@@ -673,9 +687,19 @@ Answer VerseImplementation::settle(const std::string& what) {
     const verse::Status st = observer_->receive(&w, std::min(left, kSessionCheckSeconds));
     if (st.code == verse::Status::Code::Timeout && left > kSessionCheckSeconds) {
       drain_driver();  // reads the host's acks of the driver's packets
-      if (driver_->unacknowledged_for() > kDeadSessionSeconds)
-        return lost("the host has not acknowledged the driver's packets for " +
-                    limit_text(kDeadSessionSeconds, "vgc's limit for an unacknowledged packet"));
+      if (driver_->unacknowledged_for() > kDeadSessionSeconds) {
+        const std::string unacked = "the host has not acknowledged the driver's packets for " +
+                                    limit_text(kDeadSessionSeconds, "vgc's limit for an unacknowledged packet");
+        // A host that forgot the driver's session still answers the
+        // observer; one that answers neither has stopped answering (a
+        // stopped or overloaded process): a time-out, not a crash.
+        const double probe_s = std::max(seconds_left(deadline), std::min(kDeadSessionSeconds, options_.timeout_seconds));
+        if (!observer_answers(probe_s))
+          return failed(CallStatus::Timeout, what + ": the host stopped answering: " + unacked +
+                                                 ", and the observer's round trip was not answered within " +
+                                                 limit_text(probe_s, "the rest of --timeout"));
+        return lost(unacked);
+      }
       continue;
     }
     if (!st.ok()) {

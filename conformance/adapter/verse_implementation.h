@@ -222,6 +222,10 @@ class VerseImplementation final : public Implementation {
   // Sends node_name_set(node, "vgc-barrier-<n>") on the driver and absorbs
   // what the observer receives until that echo; then subscribe_new_layers.
   Answer settle(const std::string& what);
+  // Whether the observer's round trip on the node comes back within
+  // `seconds`: a host that dropped the driver's session still answers it,
+  // a host that stopped answering does not.
+  bool observer_answers(double seconds);
   Answer failed(CallStatus s, const std::string& detail);
   // --verse-bone-form auto: on the fresh node, a bone_create in the spec's
   // form (after the weight layer it needs); the host's broadcast of the bone

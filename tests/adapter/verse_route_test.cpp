@@ -403,6 +403,45 @@ TEST(VerseRoute, AHostThatGoesSilentGivesTimeoutsAndAFinishedReport) {
   std::filesystem::remove_all(root);
 }
 
+// Issue 31: a host that stops answering (SIGSTOP) is a time-out, at the
+// default --timeout too, and never a crash of the session nor a finding
+// that "depends on the implementation's history": no fresh instance of it
+// can be started, so nothing can be confirmed or refuted, and the finding
+// says that it is unconfirmed. (A time-out between two commands, at a
+// reset, is STABLE-1's: "an implementation answers every call".) (The route used to take the driver's 1 s
+// without acknowledgements for a dropped session, a crash, and the
+// confirmation's failed login for "does not reproduce".)
+TEST(VerseRoute, AHostThatGoesSilentIsATimeoutNotACrashNorHistory) {
+  ServedHost host({}, {});
+  ASSERT_NE(host.port(), 0) << "no port in \"" << host.line() << "\"";
+  auto sut = open_verse(host, 5.0);
+  ASSERT_NE(sut, nullptr);
+  RunOptions o = options(10);
+  o.clause_glob = "LAYER-*,POLY-*";
+  bool silenced = false;
+  o.property_done = [&](const PropertyOutcome&, const RunProgress&) {
+    if (!silenced) host.signal(SIGSTOP), silenced = true;
+  };
+  const RunResult run = run_certification(*sut, o);
+  host.signal(SIGCONT);
+  ASSERT_TRUE(silenced);
+  int timeouts = 0;
+  for (const ClauseOutcome& co : run.clauses) {
+    const std::string what = std::string(co.clause->id) + " " + clause_status_name(co.status) + ": " +
+                             (co.finding ? co.finding->message : co.note);
+    EXPECT_NE(co.status, ClauseStatus::Crash) << what;
+    if (co.finding) {
+      EXPECT_EQ(co.finding->message.find("depends on the implementation's history"), std::string::npos) << what;
+    }
+    if (co.status != ClauseStatus::Timeout) continue;
+    ++timeouts;
+    ASSERT_TRUE(co.finding) << what;
+    EXPECT_NE(co.finding->message.find("not confirmed on a fresh instance"), std::string::npos) << what;
+  }
+  EXPECT_GT(timeouts, 0) << "no clause timed out";
+  EXPECT_FALSE(run.conformant);
+}
+
 // `vgc certify` through the CLI against a faulty served node, then the
 // replay line its report prints, run as printed: it names the clause.
 TEST(VerseRoute, TheReplayLinePrintedForAWireFindingWorksAsPrinted) {
