@@ -74,6 +74,11 @@ struct CaseContext {
   // clause (a crash behind a wrong answer) is a new finding of its own.
   std::map<std::string, int> tolerated;
   std::set<std::string> baseline;   // the subset tolerated from the start
+  // At scale: clauses an earlier property of the run has a finding in,
+  // tolerated from the start at that finding's kind (tolerate_found_earlier),
+  // and those of them a case has stood for (CaseTally).
+  std::set<std::string> found_earlier, stood_for;
+  std::string set_aside_clause;     // the clause that set the current case aside
   // A tolerated clause's divergence as first seen (shortest program kept).
   std::map<std::string, PropertyFinding> tolerated_seen;
   bool set_aside_case = false;      // the current case diverged in a tolerated clause
@@ -219,13 +224,14 @@ void note_tolerated(const Finding& f, const std::optional<CapabilityRequest>& re
     pf.finding = f;
     pf.program.commands = c.trace;
     pf.program.request = request;
-    pf.tolerated_from_start = c.baseline.count(f.clause) > 0;
+    pf.tolerated_from_start = c.baseline.count(f.clause) > 0 || c.found_earlier.count(f.clause) > 0;
     c.tolerated_seen[f.clause] = std::move(pf);
   }
 }
 
 // A tolerated clause diverged first: the case is set aside.
 void set_case_aside(const Finding& f, const std::optional<CapabilityRequest>& request = std::nullopt) {
+  if (!g_context->set_aside_case) g_context->set_aside_clause = f.clause;
   g_context->set_aside_case = true;
   note_tolerated(f, request);
 }
@@ -651,7 +657,11 @@ struct CaseTally {
   ~CaseTally() {
     if (!counted || c.shrinking) return;  // the failing case itself is counted with its finding
     ++c.cases_done;
-    if (c.set_aside_case) ++c.set_aside;
+    // The first case at scale set aside by a clause an earlier property
+    // found stands for the finding the property would have made of it
+    // (counted as that failing case was: neither judged nor set aside).
+    if (c.set_aside_case && c.found_earlier.count(c.set_aside_clause) && c.stood_for.insert(c.set_aside_clause).second) {
+    } else if (c.set_aside_case) ++c.set_aside;
     else if (c.not_judged_case) ++c.not_judged;
     else if (!c.abandoned && !c.deadline_hit) ++c.judged;
     if (c.cases_done >= c.set_aside_min_cases && c.set_aside > kSetAsideShare * c.cases_done) c.dominated = true;
@@ -675,6 +685,7 @@ void reset_case(CaseContext& c) {
   c.checker = case_checker(c);
   c.abandoned = false;
   c.set_aside_case = false;
+  c.set_aside_clause.clear();
   c.not_judged_case = false;
   c.taken_out = 0;
 }
@@ -815,6 +826,26 @@ void run_case(const CaseSpec& s) {
   if (s.capability) check_capability(c, s);
 }
 
+// A property at scale tolerates from the start what earlier properties of
+// the run found, at the kind they found it: a case of 10^4 commands and
+// more that diverges in such a clause is set aside where it diverges, not
+// confirmed and shrunk again (a minute per finding through an out-of-process
+// route, for a counterexample the clause already has). The divergence is
+// still the property's finding, as first seen and not shrunk
+// (tolerated_from_start: never chosen over the earlier, shorter one). A
+// worse kind in the same clause (a crash at scale behind a wrong answer) is
+// still a finding of its own, and a clause only scale reaches is judged as
+// before.
+void tolerate_found_earlier(CaseContext& ctx, const RunResult& run) {
+  for (const auto& p : run.properties)
+    for (const auto& f : p.findings) {
+      if (depends_on_history(f.finding) || f.finding.status == FindingStatus::NotJudged) continue;
+      int& worst = ctx.tolerated[f.finding.clause];
+      worst = std::max(worst, finding_severity(f.finding));
+      ctx.found_earlier.insert(f.finding.clause);
+    }
+}
+
 // The case state of one property (CaseContext), wired to its outcome and
 // to the run's tallies.
 void start_context(CaseContext& ctx, const PropertySpec& spec, Implementation& sut, const RunOptions& o,
@@ -835,6 +866,7 @@ void start_context(CaseContext& ctx, const PropertySpec& spec, Implementation& s
   if (spec.at_scale) ctx.shard_index = o.shard_index, ctx.shard_count = o.shard_count;
   ctx.target = shard_cases(ctx.all_cases, ctx.shard_index, ctx.shard_count);
   if (spec.at_scale) ctx.set_aside_min_cases = 1, ctx.no_take_out = true;
+  if (spec.at_scale) tolerate_found_earlier(ctx, *run);
   ctx.exercised = &out->exercised;
   ctx.declared = &spec.clauses;
   ctx.derived_only = &out->derived_only;
