@@ -87,6 +87,9 @@ std::vector<FaultInfo> build_catalog() {
       {"layer-kept-at-pick-id", "LAYER-CREATE-1", "fail",
        "stores layer_create 0xFFFF as layer 65535 (the \"pick a free id\" sentinel kept as the id), and a later "
        "layer_create 0xFFFF re-creates that layer"},
+      {"bone-kept-at-pick-id", "BONE-CREATE-1", "fail",
+       "stores bone_create 0xFFFF as bone 65535 (the \"pick a free id\" sentinel kept as the id, which is also "
+       "the \"no parent\" id), and a later bone_create 0xFFFF re-creates that bone"},
       // The three MUST bugs of issue 17, each breaking one node rule alone.
       {"moved-vertex-slots-reset", "VERTEX-SET-1", "fail",
        "a moved vertex's slots in the other vertex layers are reset to their defaults", Rule::VertexMoveKeepsSlots},
@@ -305,6 +308,10 @@ FaultyAnswer FaultyNode::apply(const Command& original) {
   if (auto* x = std::get_if<cmd::LayerCreate>(&c); x && is("layer-kept-at-pick-id") && x->layer_id == kNone16 &&
                                                     !x->name.empty())
     return answer(keep_layer_at_pick_id(*x));
+  // bone-kept-at-pick-id
+  if (auto* x = std::get_if<cmd::BoneCreate>(&c); x && is("bone-kept-at-pick-id") && x->bone_id == kNone16 &&
+                                                   !x->weight.empty())
+    return answer(keep_bone_at_pick_id(*x));
   // mid-range-ids-dropped: a new vertex or polygon past the bound that the
   // reference would create is answered ok and not stored. The r6 host drops
   // ids more than 4,096 past its storage (4,129 on a fresh node); ids from
@@ -414,6 +421,28 @@ Reason FaultyNode::keep_layer_at_pick_id(cmd::LayerCreate x) {
   };
   move(kNone16, stand_in);
   x.layer_id = stand_in;
+  const Reason r = apply_node(x);
+  move(stand_in, kNone16);
+  node_changed();
+  return r;
+}
+
+Reason FaultyNode::keep_bone_at_pick_id(cmd::BoneCreate x) {
+  auto& bones = const_cast<std::map<std::uint16_t, Bone>&>(node_.bones());  // test-only: reach into the node's storage
+  std::uint32_t free_id = kNone16;
+  for (std::uint32_t id = 0; id < kNone16 && free_id == kNone16; ++id)
+    if (!bones.count(static_cast<std::uint16_t>(id))) free_id = id;
+  if (free_id == kNone16) return Reason::NoFreeId;
+  const auto stand_in = static_cast<std::uint16_t>(free_id);
+  const auto move = [&bones](std::uint16_t from, std::uint16_t to) {
+    auto n = bones.extract(from);
+    if (n.empty()) return;
+    n.key() = to;
+    n.mapped().id = to;
+    bones.insert(std::move(n));
+  };
+  move(kNone16, stand_in);
+  x.bone_id = stand_in;
   const Reason r = apply_node(x);
   move(stand_in, kNone16);
   node_changed();

@@ -84,6 +84,8 @@ class FaultyNode {
   FaultyAnswer answer(Reason r) const;
   // layer-kept-at-pick-id: `x` (layer id 0xFFFF) applied to the layer kept at 0xFFFF.
   Reason keep_layer_at_pick_id(cmd::LayerCreate x);
+  // bone-kept-at-pick-id: `x` (bone id 0xFFFF) applied to the bone kept at 0xFFFF.
+  Reason keep_bone_at_pick_id(cmd::BoneCreate x);
   // node_.apply, logged (history_) and followed by the digest.
   Reason apply_node(const Command& c, RuleTrace* trace = nullptr);
   // node_ replaced or reached into: the digest is computed again when next asked.
