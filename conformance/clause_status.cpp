@@ -145,14 +145,9 @@ ClauseDecision decide_clause_status(const Clause& clause, const ClauseEvidence& 
 }
 
 void summarize_run(RunResult* run) {
-  run->conformant = true;
   run->complete = true;
-  for (const auto& co : run->clauses) {
-    if (co.finding && co.clause->level == ClauseLevel::Must) run->conformant = false;
-    if (co.finding && co.finding->status != FindingStatus::Fail && co.clause->level != ClauseLevel::Should)
-      run->conformant = false;  // a crash or a hang is never a reading of a silent point
+  for (const auto& co : run->clauses)
     if (co.status == ClauseStatus::Unchecked) run->complete = false;
-  }
   for (const auto& po : run->properties)
     if (po.status == PropertyStatus::Stopped) run->complete = false;
   if (!run->cancelled_by.empty()) run->complete = false;

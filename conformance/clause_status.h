@@ -76,8 +76,9 @@ bool prefer_finding(const Finding& candidate, const Program& candidate_program, 
 
 ClauseDecision decide_clause_status(const Clause& clause, const ClauseEvidence& e);
 
-// Sets run->complete and run->conformant from its clauses, properties and
-// cancel (RunResult). The one place they are computed.
+// Sets run->complete from its clauses, properties and cancel (RunResult).
+// The one place it is computed; whether a finding gates is the verdict's
+// (verdict.h judge: the one verdict function, with a baseline and --strict).
 void summarize_run(RunResult* run);
 
 }  // namespace vgc

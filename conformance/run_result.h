@@ -181,7 +181,6 @@ struct RunResult {
   // crashed, hung, or answered what the contract does not allow): no
   // property ran, every other clause is unchecked.
   std::optional<Finding> preflight;
-  bool conformant = false;  // no MUST clause failed, crashed or timed out (before any baseline)
   bool complete = false;    // every selected clause was judged (none unchecked, no property stopped)
   // "SIGTERM", "SIGINT": the run was cancelled (cancel.h) and stopped early;
   // its verdict is "incomplete" whatever it found. Empty otherwise.

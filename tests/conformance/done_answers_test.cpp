@@ -150,7 +150,7 @@ TEST(DoneAnswers, TheReferenceBehindDoneAnswersCertifiesWithNoClauseFailed) {
   for (const ClauseOutcome& co : run.clauses)
     EXPECT_TRUE(co.status != ClauseStatus::Fail && co.status != ClauseStatus::Crash && co.status != ClauseStatus::Timeout)
         << co.clause->id << " " << co.status << ": " << (co.finding ? co.finding->message : "");
-  EXPECT_TRUE(run.conformant);
+  EXPECT_TRUE(judge(run, nullptr).new_failures.empty());
   EXPECT_TRUE(run.complete);
   // Nothing reported a verdict, so reason codes cannot be judged: REASON-1
   // is not-applicable (not failed, not unchecked); every other clause passes.
@@ -175,7 +175,7 @@ TEST(DoneAnswers, ADoneImplementationThatDropsPolygonDeletesIsCaught) {
   for (const ClauseOutcome& co : run.clauses)
     if (co.clause->id == "POLY-DELETE-1" && co.status == ClauseStatus::Fail && co.finding) found = true;
   EXPECT_TRUE(found) << "the dropped polygon deletes were not found";
-  EXPECT_FALSE(run.conformant);
+  EXPECT_FALSE(judge(run, nullptr).new_failures.empty());
 }
 
 // The exec route: `vgc serve --done` is the reference answering `done` to
@@ -198,7 +198,7 @@ TEST(DoneAnswers, VgcServeDoneCertifiesThroughTheExecRoute) {
   for (const ClauseOutcome& co : run.clauses)
     EXPECT_TRUE(co.status != ClauseStatus::Fail && co.status != ClauseStatus::Crash && co.status != ClauseStatus::Timeout)
         << co.clause->id << " " << co.status << ": " << (co.finding ? co.finding->message : "");
-  EXPECT_TRUE(run.conformant);
+  EXPECT_TRUE(judge(run, nullptr).new_failures.empty());
 }
 
 }  // namespace

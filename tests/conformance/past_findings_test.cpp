@@ -290,7 +290,7 @@ TEST(PastFindings, TheReferencePassesEveryClauseWithANonzeroExercisedCount) {
     EXPECT_GT(co.exercised, 0) << co.clause->id;
   }
   EXPECT_TRUE(run.complete);
-  EXPECT_TRUE(run.conformant);
+  EXPECT_TRUE(judge(run, nullptr).new_failures.empty());
   for (const auto& p : run.properties) {
     // Each property exercises every clause it declares, so that a shard
     // holding only this property can judge them (runner_test's shards).
