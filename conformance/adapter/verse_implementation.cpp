@@ -341,7 +341,9 @@ verse::ClientOptions VerseImplementation::session_options(verse::ClientSession* 
   o.login_timeout_s = options_.start_timeout_seconds;  // a login is a start (OpenOptions)
   o.stop = [] { return cancel_signal() != 0; };          // a cancelled run waits for nothing (cancel.h)
   o.bone_form = bone_form_;
-  o.unacknowledged_limit_s = std::min(kDeadSessionSeconds, options_.timeout_seconds);
+  // The client's own backstop; the route decides sooner, and by asking
+  // the observer, whether an unacknowledged driver was forgotten (settle).
+  o.unacknowledged_limit_s = options_.timeout_seconds;
   if (nudger && nudger->connected()) o.while_awaiting_accept = [nudger] { (void)nudger->nudge(); };
   return o;
 }
@@ -625,13 +627,17 @@ Answer VerseImplementation::subscribe_new_layers(std::uint32_t node, Clock::time
   return {};
 }
 
-bool VerseImplementation::observer_answers(double seconds) {
+bool VerseImplementation::observer_answers(double seconds, const std::function<bool(const verse::WireCommand&)>& is_echo,
+                                           bool* echoed) {
   if (!observer_ || !observer_->connected()) return false;
   std::vector<verse::WireCommand> seen;
   ++round_trips_;
   if (!observer_->barrier(node_, seconds, &seen).ok()) return false;
   std::string error;
-  for (const auto& w : seen) (void)absorb(w, &error);  // the mirror keeps up; the caller reports the lost session
+  for (const auto& w : seen) {
+    if (is_echo(w)) *echoed = true;  // the round trip being waited for came with it
+    else (void)absorb(w, &error);    // the mirror keeps up; a protocol error shows at the next read
+  }
   return true;
 }
 
@@ -694,11 +700,20 @@ Answer VerseImplementation::settle(const std::string& what) {
         // observer; one that answers neither has stopped answering (a
         // stopped or overloaded process): a time-out, not a crash.
         const double probe_s = std::max(seconds_left(deadline), std::min(kDeadSessionSeconds, options_.timeout_seconds));
-        if (!observer_answers(probe_s))
+        bool echoed = false;
+        if (!observer_answers(probe_s, is_echo, &echoed))
           return failed(CallStatus::Timeout, what + ": the host stopped answering: " + unacked +
                                                  ", and the observer's round trip was not answered within " +
                                                  limit_text(probe_s, "the rest of --timeout"));
-        return lost(unacked);
+        // The host has now read what the driver sent before the observer's
+        // round trip, and acknowledged it if it still knows the session: a
+        // host slow on a loaded machine is not one that forgot it.
+        drain_driver();
+        if (driver_->connected() && driver_->unacknowledged_for() <= kDeadSessionSeconds) {
+          if (echoed) break;
+          continue;
+        }
+        return lost(unacked + " (and not after the observer's round trip)");
       }
       continue;
     }

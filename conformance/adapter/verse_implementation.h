@@ -91,6 +91,7 @@
 #include <chrono>
 #include <cstdint>
 #include <deque>
+#include <functional>
 #include <memory>
 #include <set>
 #include <string>
@@ -225,7 +226,8 @@ class VerseImplementation final : public Implementation {
   // Whether the observer's round trip on the node comes back within
   // `seconds`: a host that dropped the driver's session still answers it,
   // a host that stopped answering does not.
-  bool observer_answers(double seconds);
+  // Sets *echoed when `is_echo` matches a command that came before it.
+  bool observer_answers(double seconds, const std::function<bool(const verse::WireCommand&)>& is_echo, bool* echoed);
   Answer failed(CallStatus s, const std::string& detail);
   // --verse-bone-form auto: on the fresh node, a bone_create in the spec's
   // form (after the weight layer it needs); the host's broadcast of the bone

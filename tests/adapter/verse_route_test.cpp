@@ -27,6 +27,7 @@
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "adapter_test_util.h"
@@ -440,6 +441,37 @@ TEST(VerseRoute, AHostThatGoesSilentIsATimeoutNotACrashNorHistory) {
   }
   EXPECT_GT(timeouts, 0) << "no clause timed out";
   EXPECT_FALSE(judge(run, nullptr).new_failures.empty());
+}
+
+// ... and a host that is only slow (stopped for 1.5 s, as a starved
+// process on a loaded machine acknowledges late) is neither a crash nor a
+// time-out: the driver's packets stay unacknowledged past the route's 1 s,
+// the observer's round trip then comes back, and so do the driver's
+// acknowledgements. (The route used to end the driver's session at 1 s:
+// a STABLE-1 crash against a served reference at load 15.)
+TEST(VerseRoute, AHostThatIsOnlySlowIsNeitherACrashNorATimeout) {
+  ServedHost host({}, {});
+  ASSERT_NE(host.port(), 0) << "no port in \"" << host.line() << "\"";
+  auto sut = open_verse(host, 5.0);
+  ASSERT_NE(sut, nullptr);
+  RunOptions o = options(10);
+  o.clause_glob = "LAYER-*,POLY-*";
+  std::thread resume;
+  o.property_done = [&](const PropertyOutcome&, const RunProgress&) {
+    if (resume.joinable()) return;
+    host.signal(SIGSTOP);
+    resume = std::thread([&host] {
+      std::this_thread::sleep_for(std::chrono::milliseconds(1500));
+      host.signal(SIGCONT);
+    });
+  };
+  const RunResult run = run_certification(*sut, o);
+  if (resume.joinable()) resume.join();
+  ASSERT_TRUE(resume.get_id() == std::thread::id());
+  for (const ClauseOutcome& co : run.clauses)
+    EXPECT_TRUE(co.status == ClauseStatus::Pass || co.status == ClauseStatus::NotApplicable)
+        << co.clause->id << " " << clause_status_name(co.status) << ": "
+        << (co.finding ? co.finding->message : co.note);
 }
 
 // `vgc certify` through the CLI against a faulty served node, then the
