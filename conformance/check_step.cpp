@@ -263,22 +263,29 @@ StepResult judge_step(const Node& before, const Command& c, const Answer& answer
   return std::move(j.result);
 }
 
-std::optional<Finding> check_state(const Node& expected, Implementation& sut, const char* clause_if_different) {
+std::optional<Finding> check_fresh_state(Implementation& sut) {
+  const Node fresh;
+  const auto differs = [&fresh](const char* document, const DocumentDifference& d, bool derived) {
+    const Blame blame = blame_fresh(fresh, d, derived);
+    Finding f{blame.clause, FindingStatus::Fail, "fresh node " + std::string(document) + ": " + d.describe() + ". " +
+                                                     blame.explanation};
+    f.rules = blame.rules;
+    return f;
+  };
   const Document snap = sut.snapshot();
   if (snap.status != CallStatus::Ok)
     return call_failure("STABLE-1", snap.status, "reading the snapshot of a fresh node", snap.detail);
   const RouteLimits limits = sut.limits();
-  const std::string expected_text = print_snapshot(expected);
+  const std::string expected_text = print_snapshot(fresh);
   if (auto d = limits.subscriptions ? diff_documents(expected_text, snap.text)
                                     : diff_documents(without_subscriptions(expected_text),
                                                      without_subscriptions(snap.text)))
-    return Finding{clause_if_different, FindingStatus::Fail, "fresh node snapshot: " + d->describe()};
+    return differs("snapshot", *d, false);
   if (!limits.derived) return std::nullopt;  // the route carries no derived document
   const Document derived = sut.derived();
   if (derived.status != CallStatus::Ok)
     return call_failure("STABLE-1", derived.status, "reading the derived document of a fresh node", derived.detail);
-  if (auto d = diff_documents(print_derived(expected), derived.text))
-    return Finding{clause_if_different, FindingStatus::Fail, "fresh node derived: " + d->describe()};
+  if (auto d = diff_documents(print_derived(fresh), derived.text)) return differs("derived", *d, true);
   return std::nullopt;
 }
 
