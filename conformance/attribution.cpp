@@ -272,6 +272,20 @@ static std::string_view crease_clause(const Node& n, const std::string& name, La
   return required == LayerType::VertexUint32 ? "CREASE-VERTEX-LAYER-1" : "CREASE-EDGE-LAYER-1";
 }
 
+Blame blame_fresh(const Node& fresh, const DocumentDifference& d, bool derived) {
+  const std::string& line = d.expected_line.empty() ? d.observed_line : d.expected_line;
+  const std::string kind = first_word(line);
+  Rule rule = Rule::BaseLayers;
+  if (const auto w = derived ? std::nullopt : line_written(fresh, line); w && w->rule != Rule::None)
+    rule = w->rule;
+  else if (derived ? kind == "vertex_crease" || kind == "edge_crease"
+                   : (line_kind_bit(kind) & rule_info(Rule::InitialCreases).lines) != 0)
+    rule = Rule::InitialCreases;
+  Blame b = make_blame({rule}, "");
+  b.explanation.erase(0, 1);  // "Blamed on ...": the difference says what the two sides show
+  return b;
+}
+
 std::string_view clause_for_derived(const Node& after, std::string_view kind, long bone_id) {
   if (kind == "vertex_crease") {
     const auto clause = crease_clause(after, after.vertex_crease().layer, LayerType::VertexUint32);

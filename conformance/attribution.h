@@ -52,6 +52,16 @@ Blame blame_verdict(const Command& c, Reason expected, const RuleTrace& trace);
 Blame blame_snapshot(const Node& before, const Node& after, Reason expected, const RuleTrace& trace,
                      const DocumentDifference& d, const std::string& observed);
 
+// A fresh node's document differs from the model's `fresh` (as a reset
+// leaves it) at `d` (of the snapshot, or with `derived` of the derived
+// document): blamed on the fresh-node rule of the line, node.base_layers
+// (LAYER-BASE-1) or node.initial_creases (CREASE-INITIAL-1): the rule that
+// placed the model's line, or for a line the model has not, the rule of its
+// kind (a crease setting, or an effective crease derived from one, is the
+// initial creases'; any other line the base layers': a fresh node holds
+// nothing else).
+Blame blame_fresh(const Node& fresh, const DocumentDifference& d, bool derived);
+
 // The derived documents differ at a line of `line_kind` ("vertex_crease",
 // "edge_crease", "bone_pose") in the state `after`; `bone_id` is the bone
 // of a bone_pose line.

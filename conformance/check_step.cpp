@@ -59,153 +59,233 @@ StepResult check_step(const Node& before, const Command& c, Implementation& sut,
   return judge_step(before, c, answer, std::move(result), sut, after, follow_choices);
 }
 
-StepResult judge_step(const Node& before, const Command& c, const Answer& answer, StepResult result,
-                      Implementation& sut, Node* after, bool follow_choices) {
-  const Reason expected = result.expected;
-  const std::string text = print_command(c);
-  if (answer.status != CallStatus::Ok) {
-    const Blame blame = blame_verdict(c, expected, result.rules);
-    result.failure = call_failure(blame.clause, answer.status, "applying `" + text + "`", answer.detail);
-    if (answer.status != CallStatus::ProtocolError) {
-      result.failure->rules = blame.rules;
-      result.failure->message += ". " + blame.explanation;
-    }
-    return result;
-  }
-  if (answer.not_sent) {  // the route cannot carry it: both sides stay at `before`
-    *after = before;
-    result.not_judged = "`" + text + "` was not sent: " + answer.detail;
-    return result;
-  }
-  if (answer.malformed) {  // it answered "error": it could not read a canonical command line
-    Finding f;
-    f.clause = "ACCEPT-1";
-    f.message = "`" + text + "`: the implementation could not read this canonical command line: " + answer.detail;
-    result.failure = f;
-    return result;
-  }
-  const std::string expected_answer =
-      expected == Reason::Ok ? "ok" : "rejected " + std::string(reason_name(expected));
+namespace {
 
-  // A `done` answer (Answer::verdict_reported false) says nothing about the
-  // verdict, so it is read from the state: the snapshot after the command
-  // against the one before it. The implementation held the state `before`
-  // (the precondition, checked by the previous step), so its snapshot
-  // before is print_snapshot(before) as diff_documents compares it, and no
-  // extra call is needed; the snapshot after is the one compared below
-  // anyway. Unchanged means dropped (rejected), changed means applied,
-  // except that a command the reference applies without changing anything
-  // (writing the value a slot already holds) is consistent with either.
+// What judge_step's steps share: the step as both sides took it, and what
+// has been read of the implementation so far. Each step returns true when
+// it decided the step (result.failure or result.not_judged set, or a
+// document could not be read), and judge_step then stops.
+struct Judging {
+  const Node& before;
+  const Command& c;
+  const Answer& answer;
+  Implementation& sut;
+  Node* after;  // the reference's state after c; the implementation's choice with follow_choices
+  bool follow_choices;
+  StepResult result;
+  std::string text;         // c as a command line
+  RouteLimits limits;       // what the route carries (read once the answer is judged readable)
+  Document snap;            // the implementation's snapshot after c, once read
+  bool applied = false;     // the implementation's verdict: reported, or read from its state
+  std::string observed_answer;
+
   // A route that cannot observe subscriptions (RouteLimits) compares the
   // snapshot's subscription column as "-" on both sides.
-  const RouteLimits limits = sut.limits();
-  const auto comparable = [&limits](std::string text) {
-    return limits.subscriptions ? text : without_subscriptions(text);
-  };
-  Document snap;
-  bool applied = answer.applied;
-  std::string observed_answer = answer.applied ? "ok" : "rejected " + answer.reason;
-  result.verdict_reported = answer.verdict_reported;
-  if (!answer.verdict_reported) {
-    snap = sut.snapshot();
-    if (snap.status != CallStatus::Ok) {
-      result.failure = call_failure("STABLE-1", snap.status, "reading the snapshot after `" + text + "`", snap.detail);
-      return result;
-    }
-    const std::string before_text = comparable(print_snapshot(before));
-    const bool changed = diff_documents(before_text, comparable(snap.text)).has_value();
-    const bool reference_changed = expected == Reason::Ok && comparable(print_snapshot(*after)) != before_text;
-    // What the implementation told others about the command (a host's
-    // broadcast to its subscribers) is its verdict too: announced means
-    // applied, whatever the state shows.
-    const bool announced = !answer.broadcast.empty();
-    applied = changed || announced || (expected == Reason::Ok && !reference_changed);
-    result.implementation_unchanged = !changed;
-    observed_answer = changed     ? "done, and the state changed (applied)"
-                      : announced ? "done, and the state is unchanged but the host sent its subscribers `" +
-                                        answer.broadcast + "` for it (applied)"
-                                  : "done, and the state is unchanged (dropped)";
-  }
-  if (applied != (expected == Reason::Ok)) {
-    Finding f;
-    const Blame blame = blame_verdict(c, expected, result.rules);
-    f.clause = blame.clause;
-    f.rules = blame.rules;
-    f.message = "`" + text + "`: expected " + expected_answer + ", observed " + observed_answer + ". " +
-                blame.explanation;
-    result.failure = f;
-    return result;
-  }
-  if (auto note = reason_note(c, expected, answer)) result.notes.push_back(std::move(*note));
+  std::string comparable(std::string t) const { return limits.subscriptions ? t : without_subscriptions(t); }
+};
 
-  if (answer.verdict_reported) snap = sut.snapshot();
-  if (snap.status != CallStatus::Ok) {
-    result.failure = call_failure("STABLE-1", snap.status, "reading the snapshot after `" + text + "`", snap.detail);
-    return result;
+// No answer (crash, timeout), or one outside the contract (ACCEPT-1): the
+// call failed, blamed on the rules the command applies.
+bool call_failed(Judging& j) {
+  if (j.answer.status == CallStatus::Ok) return false;
+  const Blame blame = blame_verdict(j.c, j.result.expected, j.result.rules);
+  j.result.failure = call_failure(blame.clause, j.answer.status, "applying `" + j.text + "`", j.answer.detail);
+  if (j.answer.status != CallStatus::ProtocolError) {
+    j.result.failure->rules = blame.rules;
+    j.result.failure->message += ". " + blame.explanation;
   }
-  std::optional<DocumentDifference> d = diff_documents(comparable(print_snapshot(*after)), comparable(snap.text));
-  if (d && expected == Reason::Ok && follow_choices) {
-    // A choice the spec leaves to the implementation (which free id it
-    // picked): the model follows it, and the choice is a note at its clause.
-    if (auto choice = follow_implementation_choice(before, c, snap.text)) {
-      *after = std::move(choice->model);
-      result.model_command = std::move(choice->applied);
-      result.notes.push_back(std::move(choice->note));
+  return true;
+}
+
+// The route cannot carry the command: both sides stay at `before`, nothing
+// is judged.
+bool not_sent(Judging& j) {
+  if (!j.answer.not_sent) return false;
+  *j.after = j.before;
+  j.result.not_judged = "`" + j.text + "` was not sent: " + j.answer.detail;
+  return true;
+}
+
+// It answered "error": it could not read a canonical command line (ACCEPT-1).
+bool unreadable(Judging& j) {
+  if (!j.answer.malformed) return false;
+  Finding f;
+  f.clause = "ACCEPT-1";
+  f.message = "`" + j.text + "`: the implementation could not read this canonical command line: " + j.answer.detail;
+  j.result.failure = f;
+  return true;
+}
+
+// The verdict as the implementation reported it (ok / rejected REASON).
+void take_reported_verdict(Judging& j) {
+  j.limits = j.sut.limits();
+  j.applied = j.answer.applied;
+  j.observed_answer = j.answer.applied ? "ok" : "rejected " + j.answer.reason;
+  j.result.verdict_reported = j.answer.verdict_reported;
+}
+
+// A `done` answer (Answer::verdict_reported false) says nothing about the
+// verdict, so it is read from the state: the snapshot after the command
+// against the one before it. The implementation held the state `before`
+// (the precondition, checked by the previous step), so its snapshot before
+// is print_snapshot(before) as diff_documents compares it, and no extra call
+// is needed; the snapshot after is the one compared below anyway. Unchanged
+// means dropped (rejected), changed means applied, except that a command
+// the reference applies without changing anything (writing the value a slot
+// already holds) is consistent with either. What the implementation told
+// others about the command (a host's broadcast to its subscribers) is its
+// verdict too: announced means applied, whatever the state shows. true when
+// the snapshot could not be read (STABLE-1).
+bool read_verdict_from_state(Judging& j) {
+  if (j.answer.verdict_reported) return false;
+  const Reason expected = j.result.expected;
+  j.snap = j.sut.snapshot();
+  if (j.snap.status != CallStatus::Ok) {
+    j.result.failure =
+        call_failure("STABLE-1", j.snap.status, "reading the snapshot after `" + j.text + "`", j.snap.detail);
+    return true;
+  }
+  const std::string before_text = j.comparable(print_snapshot(j.before));
+  const bool changed = diff_documents(before_text, j.comparable(j.snap.text)).has_value();
+  const bool reference_changed = expected == Reason::Ok && j.comparable(print_snapshot(*j.after)) != before_text;
+  const bool announced = !j.answer.broadcast.empty();
+  j.applied = changed || announced || (expected == Reason::Ok && !reference_changed);
+  j.result.implementation_unchanged = !changed;
+  j.observed_answer = changed     ? "done, and the state changed (applied)"
+                      : announced ? "done, and the state is unchanged but the host sent its subscribers `" +
+                                        j.answer.broadcast + "` for it (applied)"
+                                  : "done, and the state is unchanged (dropped)";
+  return false;
+}
+
+// Applied where the reference rejects, or rejected where it applies: a
+// finding at the clause of the rule that decided the reference's verdict
+// (attribution.h, blame_verdict).
+bool verdict_differs(Judging& j) {
+  const Reason expected = j.result.expected;
+  if (j.applied == (expected == Reason::Ok)) return false;
+  const std::string expected_answer =
+      expected == Reason::Ok ? "ok" : "rejected " + std::string(reason_name(expected));
+  Finding f;
+  const Blame blame = blame_verdict(j.c, expected, j.result.rules);
+  f.clause = blame.clause;
+  f.rules = blame.rules;
+  f.message = "`" + j.text + "`: expected " + expected_answer + ", observed " + j.observed_answer + ". " +
+              blame.explanation;
+  j.result.failure = f;
+  return true;
+}
+
+// The snapshot after the command (already read for a `done` answer); true
+// when it could not be read (STABLE-1).
+bool snapshot_unread(Judging& j) {
+  if (j.answer.verdict_reported) j.snap = j.sut.snapshot();
+  if (j.snap.status == CallStatus::Ok) return false;
+  j.result.failure =
+      call_failure("STABLE-1", j.snap.status, "reading the snapshot after `" + j.text + "`", j.snap.detail);
+  return true;
+}
+
+// The snapshot against the model's: a choice the spec leaves to the
+// implementation (which free id it picked) is followed by the model and
+// noted at its clause (follow_choices, implementation_choice.h); any other
+// difference is a finding blamed on the rule that wrote the line
+// (attribution.h, blame_snapshot).
+bool snapshot_differs(Judging& j) {
+  const Reason expected = j.result.expected;
+  std::optional<DocumentDifference> d =
+      diff_documents(j.comparable(print_snapshot(*j.after)), j.comparable(j.snap.text));
+  if (d && expected == Reason::Ok && j.follow_choices) {
+    if (auto choice = follow_implementation_choice(j.before, j.c, j.snap.text)) {
+      *j.after = std::move(choice->model);
+      j.result.model_command = std::move(choice->applied);
+      j.result.notes.push_back(std::move(choice->note));
       d.reset();
     }
   }
-  if (d) {
-    Finding f;
-    const Blame blame = blame_snapshot(before, *after, expected, result.rules, *d, comparable(snap.text));
-    f.clause = blame.clause;
-    f.rules = blame.rules;
-    f.message = "after `" + text + "` (" + observed_answer + "), snapshot: " + d->describe() + ". " + blame.explanation;
-    f.shown_by = "snapshot";
-    f.observed_document = snap.text;
-    f.expected_line = d->expected_line;
-    f.observed_line = d->observed_line;
-    result.failure = f;
-    return result;
-  }
-  result.derived_judged = limits.derived;
-  if (!limits.derived) return result;  // the route carries no derived document
-  const Document derived = sut.derived();
+  if (!d) return false;
+  Finding f;
+  const Blame blame =
+      blame_snapshot(j.before, *j.after, expected, j.result.rules, *d, j.comparable(j.snap.text));
+  f.clause = blame.clause;
+  f.rules = blame.rules;
+  f.message =
+      "after `" + j.text + "` (" + j.observed_answer + "), snapshot: " + d->describe() + ". " + blame.explanation;
+  f.shown_by = "snapshot";
+  f.observed_document = j.snap.text;
+  f.expected_line = d->expected_line;
+  f.observed_line = d->observed_line;
+  j.result.failure = f;
+  return true;
+}
+
+// The derived document against the model's, when the route carries one
+// (RouteLimits::derived): a difference after an applied command is blamed
+// on the derived clause of the line (clause_for_derived), after a rejected
+// one on ATOMIC-1 (a rejected command changes nothing).
+void judge_derived(Judging& j) {
+  j.result.derived_judged = j.limits.derived;
+  if (!j.limits.derived) return;  // the route carries no derived document
+  const Document derived = j.sut.derived();
   if (derived.status != CallStatus::Ok) {
-    result.failure = call_failure("STABLE-1", derived.status, "reading the derived document after `" + text + "`",
-                                  derived.detail);
-    return result;
+    j.result.failure = call_failure("STABLE-1", derived.status,
+                                    "reading the derived document after `" + j.text + "`", derived.detail);
+    return;
   }
-  if (auto d = diff_documents(print_derived(*after), derived.text)) {
+  if (auto d = diff_documents(print_derived(*j.after), derived.text)) {
     Finding f;
     const std::string& line = d->expected_line.empty() ? d->observed_line : d->expected_line;
-    f.clause = expected == Reason::Ok ? std::string(clause_for_derived(*after, *d, bone_id_of(line)))
-                                      : "ATOMIC-1";
-    f.message = "after `" + text + "` (" + observed_answer + "), derived: " + d->describe();
+    f.clause = j.result.expected == Reason::Ok ? std::string(clause_for_derived(*j.after, *d, bone_id_of(line)))
+                                               : "ATOMIC-1";
+    f.message = "after `" + j.text + "` (" + j.observed_answer + "), derived: " + d->describe();
     f.shown_by = "derived";
     f.observed_document = derived.text;
     f.expected_line = d->expected_line;
     f.observed_line = d->observed_line;
-    result.failure = f;
+    j.result.failure = f;
   }
-  return result;
 }
 
-std::optional<Finding> check_state(const Node& expected, Implementation& sut, const char* clause_if_different) {
+}  // namespace
+
+// The step in check_step.h's order: did the call answer, was the command
+// carried and read; (1) the verdict, (2) the reason code, (3) the snapshot,
+// (4) the derived document. The first step that decides ends it.
+StepResult judge_step(const Node& before, const Command& c, const Answer& answer, StepResult result,
+                      Implementation& sut, Node* after, bool follow_choices) {
+  Judging j{before, c, answer, sut, after, follow_choices, std::move(result), print_command(c), {}, {}, false, {}};
+  if (call_failed(j) || not_sent(j) || unreadable(j)) return std::move(j.result);
+  take_reported_verdict(j);
+  if (read_verdict_from_state(j) || verdict_differs(j)) return std::move(j.result);
+  if (auto note = reason_note(c, j.result.expected, answer)) j.result.notes.push_back(std::move(*note));
+  if (snapshot_unread(j) || snapshot_differs(j)) return std::move(j.result);
+  judge_derived(j);
+  return std::move(j.result);
+}
+
+std::optional<Finding> check_fresh_state(Implementation& sut) {
+  const Node fresh;
+  const auto differs = [&fresh](const char* document, const DocumentDifference& d, bool derived) {
+    const Blame blame = blame_fresh(fresh, d, derived);
+    Finding f{blame.clause, FindingStatus::Fail, "fresh node " + std::string(document) + ": " + d.describe() + ". " +
+                                                     blame.explanation};
+    f.rules = blame.rules;
+    return f;
+  };
   const Document snap = sut.snapshot();
   if (snap.status != CallStatus::Ok)
     return call_failure("STABLE-1", snap.status, "reading the snapshot of a fresh node", snap.detail);
   const RouteLimits limits = sut.limits();
-  const std::string expected_text = print_snapshot(expected);
+  const std::string expected_text = print_snapshot(fresh);
   if (auto d = limits.subscriptions ? diff_documents(expected_text, snap.text)
                                     : diff_documents(without_subscriptions(expected_text),
                                                      without_subscriptions(snap.text)))
-    return Finding{clause_if_different, FindingStatus::Fail, "fresh node snapshot: " + d->describe()};
+    return differs("snapshot", *d, false);
   if (!limits.derived) return std::nullopt;  // the route carries no derived document
   const Document derived = sut.derived();
   if (derived.status != CallStatus::Ok)
     return call_failure("STABLE-1", derived.status, "reading the derived document of a fresh node", derived.detail);
-  if (auto d = diff_documents(print_derived(expected), derived.text))
-    return Finding{clause_if_different, FindingStatus::Fail, "fresh node derived: " + d->describe()};
+  if (auto d = diff_documents(print_derived(fresh), derived.text)) return differs("derived", *d, true);
   return std::nullopt;
 }
 

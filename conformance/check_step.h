@@ -102,8 +102,10 @@ std::optional<Finding> reason_note(const Command& c, Reason expected, const Answ
 StepResult judge_step(const Node& before, const Command& c, const Answer& answer, StepResult result,
                       Implementation& sut, Node* after, bool follow_choices);
 
-// Compares the implementation's documents with the reference node's, with
-// no command involved (used after reset). nullopt when equal.
-std::optional<Finding> check_state(const Node& expected, Implementation& sut, const char* clause_if_different);
+// Compares the implementation's documents with a fresh node's, with no
+// command involved (used after reset). nullopt when equal; a difference is
+// blamed on the fresh-node rule of its line (attribution.h, blame_fresh):
+// node.base_layers (LAYER-BASE-1) or node.initial_creases (CREASE-INITIAL-1).
+std::optional<Finding> check_fresh_state(Implementation& sut);
 
 }  // namespace vgc

@@ -601,9 +601,7 @@ namespace {
 std::optional<Finding> check_fresh(Implementation& sut) {
   const Answer a = sut.reset();
   if (a.status != CallStatus::Ok) return call_failure("STABLE-1", a.status, "resetting to a fresh node", a.detail);
-  auto f = check_state(Node{}, sut, "LAYER-BASE-1");
-  if (f && f->message.find("crease") != std::string::npos) f->clause = "CREASE-INITIAL-1";
-  return f;
+  return check_fresh_state(sut);
 }
 
 // The seed of round `round` of a property: round 0 is the property's own

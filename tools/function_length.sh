@@ -13,8 +13,6 @@ limit=120
 # then # and why.
 allowed='
 conformance/clause_catalog.cpp vgc::clause_catalog  # a data table, one entry a clause
-conformance/adapter/verse_node_mirror.cpp vgc::VerseNodeMirror::apply  # issue 29: still to split (left while issue 31 changed the Verse route)
-conformance/check_step.cpp vgc::judge_step  # issue 29: still to split (left while issue 27 changed the blame)
 '
 
 long=$(find reference verse conformance oracles fuzz cli bench runtime \

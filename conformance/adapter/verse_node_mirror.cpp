@@ -4,7 +4,6 @@
 #include <cfloat>
 #include <cmath>
 #include <set>
-#include <type_traits>
 
 #include "command_text.h"
 #include "snapshot.h"
@@ -83,144 +82,205 @@ bool VerseNodeMirror::set_xyz(std::uint16_t layer_id, std::uint32_t id, double x
   return true;
 }
 
+// Each command a host sends is one statement of fact, applied by its own
+// step (apply_one, one per kind, as reference/node/node.cpp's): a kind
+// without one does not compile.
 bool VerseNodeMirror::apply(const Command& sent, std::string* error) {
-  // A value command must name a layer of the type it writes.
-  const auto typed = [&](std::uint16_t layer_id, LayerType type) {
-    auto it = layers_.find(layer_id);
-    if (it != layers_.end() && it->second.type != type) {
-      *error = "the host sent " + what(sent) + " for layer " + std::to_string(layer_id) + ", which it announced as " +
-               std::string(layer_type_name(static_cast<std::uint8_t>(it->second.type)));
-      return false;
+  return std::visit([&](const auto& c) { return apply_one(c, error); }, sent);
+}
+
+// A value command must name a layer of the type it writes (a layer the host
+// never announced is left to slot(), which says so).
+bool VerseNodeMirror::typed(std::uint16_t layer_id, LayerType type, const Command& sent, std::string* error) const {
+  auto it = layers_.find(layer_id);
+  if (it != layers_.end() && it->second.type != type) {
+    *error = "the host sent " + what(sent) + " for layer " + std::to_string(layer_id) + ", which it announced as " +
+             std::string(layer_type_name(static_cast<std::uint8_t>(it->second.type)));
+    return false;
+  }
+  return true;
+}
+
+// The first value of `element` in a uint layer (2.6.1: vertex_set_uint32,
+// polygon_set_face_uint8 / _uint32).
+bool VerseNodeMirror::set_uint(const Command& sent, std::uint16_t layer_id, LayerType type, std::uint32_t element,
+                               std::uint32_t value, std::string* error) {
+  if (!typed(layer_id, type, sent, error)) return false;
+  bool ok = false;
+  Slot* s = slot(layer_id, element, error, &ok);
+  if (ok) s->u[0] = value;
+  return ok;
+}
+
+// The first value of `element` in a real layer (2.6.1: vertex_set_real*,
+// polygon_set_face_real*).
+bool VerseNodeMirror::set_real(const Command& sent, std::uint16_t layer_id, LayerType type, std::uint32_t element,
+                               double value, std::string* error) {
+  if (!typed(layer_id, type, sent, error)) return false;
+  bool ok = false;
+  Slot* s = slot(layer_id, element, error, &ok);
+  if (ok) s->r[0] = value;
+  return ok;
+}
+
+// The four corner values of `polygon` in a POLYGON_CORNER_REAL layer.
+bool VerseNodeMirror::set_corner_reals(const Command& sent, std::uint16_t layer_id, std::uint32_t polygon,
+                                       const std::array<double, 4>& v, std::string* error) {
+  if (!typed(layer_id, LayerType::PolygonCornerReal, sent, error)) return false;
+  bool ok = false;
+  Slot* s = slot(layer_id, polygon, error, &ok);
+  if (ok)
+    for (int i = 0; i < 4; ++i) s->r[i] = v[i];
+  return ok;
+}
+
+// A layer announced for the first time, or with a new type: one slot per
+// live element of its stack (the base layer's slots), holding the default,
+// until the host sends values (2.6.1: a new slot takes the layer's default).
+bool VerseNodeMirror::add_layer(const cmd::LayerCreate& c, LayerType type, std::string* error) {
+  Layer layer;
+  layer.id = c.layer_id;
+  layer.name = c.name;
+  layer.type = type;
+  layer.def_uint = c.def_uint;
+  layer.def_real = c.def_real;
+  const std::uint16_t base_id = is_vertex_stack(type) ? Node::kVertexLayer : Node::kPolygonLayer;
+  if (c.layer_id != base_id) {
+    if (auto base = layers_.find(base_id); base != layers_.end()) {
+      if (cells() + base->second.slots.size() > max_cells_) {
+        *error = "the host sent more state than vgc keeps (" + std::to_string(max_cells_) + " layer slots)";
+        return false;
+      }
+      const Slot fresh = default_slot(layer);
+      for (const auto& [element, unused] : base->second.slots) layer.slots.emplace(element, fresh);
     }
+  }
+  layers_[c.layer_id] = std::move(layer);
+  return true;
+}
+
+// layer_create: the wire's layer_destroy when the name is empty; a known
+// layer of the same type renamed (or announced again) keeps its slots;
+// otherwise a new layer (add_layer).
+bool VerseNodeMirror::apply_one(const cmd::LayerCreate& c, std::string* error) {
+  if (c.name.empty()) return apply_one(cmd::LayerDestroy{c.layer_id}, error);
+  if (!is_layer_type(c.type)) {
+    *error = "the host announced layer " + std::to_string(c.layer_id) + " with type byte " + std::to_string(c.type) +
+             ", which is no layer type";
+    return false;
+  }
+  auto it = layers_.find(c.layer_id);
+  const LayerType type = static_cast<LayerType>(c.type);
+  if (it != layers_.end() && it->second.type == type) {  // renamed, or announced again
+    it->second.name = c.name;
+    it->second.def_uint = c.def_uint;
+    it->second.def_real = c.def_real;
     return true;
-  };
-  return std::visit(
-      [&](const auto& c) -> bool {
-        using T = std::decay_t<decltype(c)>;
-        bool ok = false;
-        if constexpr (std::is_same_v<T, cmd::LayerCreate>) {
-          if (c.name.empty()) {  // the wire's layer_destroy
-            layers_.erase(c.layer_id);
-            return true;
-          }
-          if (!is_layer_type(c.type)) {
-            *error = "the host announced layer " + std::to_string(c.layer_id) + " with type byte " +
-                     std::to_string(c.type) + ", which is no layer type";
-            return false;
-          }
-          auto it = layers_.find(c.layer_id);
-          const LayerType type = static_cast<LayerType>(c.type);
-          if (it != layers_.end() && it->second.type == type) {  // renamed, or announced again
-            it->second.name = c.name;
-            it->second.def_uint = c.def_uint;
-            it->second.def_real = c.def_real;
-            return true;
-          }
-          // New, or a new type: one slot per live element of its stack,
-          // holding the default, until the host sends values.
-          Layer layer;
-          layer.id = c.layer_id;
-          layer.name = c.name;
-          layer.type = type;
-          layer.def_uint = c.def_uint;
-          layer.def_real = c.def_real;
-          const std::uint16_t base_id = is_vertex_stack(type) ? Node::kVertexLayer : Node::kPolygonLayer;
-          if (c.layer_id != base_id) {
-            if (auto base = layers_.find(base_id); base != layers_.end()) {
-              if (cells() + base->second.slots.size() > max_cells_) {
-                *error = "the host sent more state than vgc keeps (" + std::to_string(max_cells_) + " layer slots)";
-                return false;
-              }
-              const Slot fresh = default_slot(layer);
-              for (const auto& [element, unused] : base->second.slots) layer.slots.emplace(element, fresh);
-            }
-          }
-          layers_[c.layer_id] = std::move(layer);
-          return true;
-        } else if constexpr (std::is_same_v<T, cmd::LayerDestroy>) {
-          layers_.erase(c.layer_id);
-          return true;
-        } else if constexpr (std::is_same_v<T, cmd::LayerSubscribe> || std::is_same_v<T, cmd::LayerUnsubscribe>) {
-          return true;  // subscription state is the sender's own; a host broadcasts none
-        } else if constexpr (std::is_same_v<T, cmd::VertexSetXyzReal32>) {
-          if (c.x == FLT_MAX || c.y == FLT_MAX || c.z == FLT_MAX) return apply(cmd::VertexDelete{c.vertex_id}, error);
-          return typed(c.layer_id, LayerType::VertexXyz) && set_xyz(c.layer_id, c.vertex_id, c.x, c.y, c.z, error);
-        } else if constexpr (std::is_same_v<T, cmd::VertexSetXyzReal64>) {
-          if (c.x == DBL_MAX || c.y == DBL_MAX || c.z == DBL_MAX) return apply(cmd::VertexDelete{c.vertex_id}, error);
-          return typed(c.layer_id, LayerType::VertexXyz) && set_xyz(c.layer_id, c.vertex_id, c.x, c.y, c.z, error);
-        } else if constexpr (std::is_same_v<T, cmd::VertexDelete>) {
-          erase_element(true, c.vertex_id);
-          return true;
-        } else if constexpr (std::is_same_v<T, cmd::VertexSetUint32>) {
-          if (!typed(c.layer_id, LayerType::VertexUint32)) return false;
-          Slot* s = slot(c.layer_id, c.vertex_id, error, &ok);
-          if (ok) s->u[0] = c.value;
-          return ok;
-        } else if constexpr (std::is_same_v<T, cmd::VertexSetReal64> || std::is_same_v<T, cmd::VertexSetReal32>) {
-          if (!typed(c.layer_id, LayerType::VertexReal)) return false;
-          Slot* s = slot(c.layer_id, c.vertex_id, error, &ok);
-          if (ok) s->r[0] = double(c.value);
-          return ok;
-        } else if constexpr (std::is_same_v<T, cmd::PolygonSetCornerUint32>) {
-          if (c.layer_id == Node::kPolygonLayer && c.v[0] == kNone32)
-            return apply(cmd::PolygonDelete{c.polygon_id}, error);
-          if (!typed(c.layer_id, LayerType::PolygonCornerUint32)) return false;
-          if (c.layer_id == Node::kPolygonLayer) {
-            auto base = layers_.find(Node::kPolygonLayer);
-            if (base != layers_.end() && !base->second.slots.count(c.polygon_id) &&
-                !new_element(false, c.polygon_id, error))
-              return false;
-          }
-          Slot* s = slot(c.layer_id, c.polygon_id, error, &ok);
-          if (ok) s->u = c.v;
-          return ok;
-        } else if constexpr (std::is_same_v<T, cmd::PolygonSetCornerReal64> ||
-                             std::is_same_v<T, cmd::PolygonSetCornerReal32>) {
-          if (!typed(c.layer_id, LayerType::PolygonCornerReal)) return false;
-          Slot* s = slot(c.layer_id, c.polygon_id, error, &ok);
-          if (ok)
-            for (int i = 0; i < 4; ++i) s->r[i] = double(c.v[i]);
-          return ok;
-        } else if constexpr (std::is_same_v<T, cmd::PolygonDelete>) {
-          erase_element(false, c.polygon_id);
-          return true;
-        } else if constexpr (std::is_same_v<T, cmd::PolygonSetFaceUint8>) {
-          if (!typed(c.layer_id, LayerType::PolygonFaceUint8)) return false;
-          Slot* s = slot(c.layer_id, c.polygon_id, error, &ok);
-          if (ok) s->u[0] = c.value;
-          return ok;
-        } else if constexpr (std::is_same_v<T, cmd::PolygonSetFaceUint32>) {
-          if (!typed(c.layer_id, LayerType::PolygonFaceUint32)) return false;
-          Slot* s = slot(c.layer_id, c.polygon_id, error, &ok);
-          if (ok) s->u[0] = c.value;
-          return ok;
-        } else if constexpr (std::is_same_v<T, cmd::PolygonSetFaceReal64> ||
-                             std::is_same_v<T, cmd::PolygonSetFaceReal32>) {
-          if (!typed(c.layer_id, LayerType::PolygonFaceReal)) return false;
-          Slot* s = slot(c.layer_id, c.polygon_id, error, &ok);
-          if (ok) s->r[0] = double(c.value);
-          return ok;
-        } else if constexpr (std::is_same_v<T, cmd::CreaseSetVertex>) {
-          vertex_crease_ = CreaseSetting{c.layer, c.def_crease};
-          return true;
-        } else if constexpr (std::is_same_v<T, cmd::CreaseSetEdge>) {
-          edge_crease_ = CreaseSetting{c.layer, c.def_crease};
-          return true;
-        } else if constexpr (std::is_same_v<T, cmd::BoneCreate>) {
-          if (c.weight.empty()) {  // the wire's bone_destroy
-            bones_.erase(c.bone_id);
-            return true;
-          }
-          bones_[c.bone_id] = bone_from_command(c, c.bone_id);
-          return true;
-        } else if constexpr (std::is_same_v<T, cmd::BoneDestroy>) {
-          bones_.erase(c.bone_id);
-          return true;
-        } else {
-          static_assert(sizeof(T) == 0, "every command kind is handled");
-        }
-      },
-      sent);
+  }
+  return add_layer(c, type, error);
+}
+
+bool VerseNodeMirror::apply_one(const cmd::LayerDestroy& c, std::string*) {
+  layers_.erase(c.layer_id);
+  return true;
+}
+
+// Subscription state is the sender's own; a host broadcasts none.
+bool VerseNodeMirror::apply_one(const cmd::LayerSubscribe&, std::string*) { return true; }
+bool VerseNodeMirror::apply_one(const cmd::LayerUnsubscribe&, std::string*) { return true; }
+
+// vertex_set_xyz_real32: a coordinate FLT_MAX is the vertex_delete alias
+// (docs/spec_facts.md section 4).
+bool VerseNodeMirror::apply_one(const cmd::VertexSetXyzReal32& c, std::string* error) {
+  if (c.x == FLT_MAX || c.y == FLT_MAX || c.z == FLT_MAX) return apply_one(cmd::VertexDelete{c.vertex_id}, error);
+  return typed(c.layer_id, LayerType::VertexXyz, c, error) && set_xyz(c.layer_id, c.vertex_id, c.x, c.y, c.z, error);
+}
+
+// vertex_set_xyz_real64: a coordinate DBL_MAX is the vertex_delete alias.
+bool VerseNodeMirror::apply_one(const cmd::VertexSetXyzReal64& c, std::string* error) {
+  if (c.x == DBL_MAX || c.y == DBL_MAX || c.z == DBL_MAX) return apply_one(cmd::VertexDelete{c.vertex_id}, error);
+  return typed(c.layer_id, LayerType::VertexXyz, c, error) && set_xyz(c.layer_id, c.vertex_id, c.x, c.y, c.z, error);
+}
+
+// A deleted vertex leaves its stack and nothing else: a host that also
+// removes the polygons using it says so with polygon deletes.
+bool VerseNodeMirror::apply_one(const cmd::VertexDelete& c, std::string*) {
+  erase_element(true, c.vertex_id);
+  return true;
+}
+
+bool VerseNodeMirror::apply_one(const cmd::VertexSetUint32& c, std::string* error) {
+  return set_uint(c, c.layer_id, LayerType::VertexUint32, c.vertex_id, c.value, error);
+}
+bool VerseNodeMirror::apply_one(const cmd::VertexSetReal64& c, std::string* error) {
+  return set_real(c, c.layer_id, LayerType::VertexReal, c.vertex_id, c.value, error);
+}
+bool VerseNodeMirror::apply_one(const cmd::VertexSetReal32& c, std::string* error) {
+  return set_real(c, c.layer_id, LayerType::VertexReal, c.vertex_id, double(c.value), error);
+}
+
+// polygon_set_corner_uint32: on layer 1 a first corner 0xFFFFFFFF is the
+// polygon_delete alias, and any other write there makes the polygon live.
+bool VerseNodeMirror::apply_one(const cmd::PolygonSetCornerUint32& c, std::string* error) {
+  if (c.layer_id == Node::kPolygonLayer && c.v[0] == kNone32) return apply_one(cmd::PolygonDelete{c.polygon_id}, error);
+  if (!typed(c.layer_id, LayerType::PolygonCornerUint32, c, error)) return false;
+  if (c.layer_id == Node::kPolygonLayer) {
+    auto base = layers_.find(Node::kPolygonLayer);
+    if (base != layers_.end() && !base->second.slots.count(c.polygon_id) && !new_element(false, c.polygon_id, error))
+      return false;
+  }
+  bool ok = false;
+  Slot* s = slot(c.layer_id, c.polygon_id, error, &ok);
+  if (ok) s->u = c.v;
+  return ok;
+}
+
+bool VerseNodeMirror::apply_one(const cmd::PolygonSetCornerReal64& c, std::string* error) {
+  return set_corner_reals(c, c.layer_id, c.polygon_id, c.v, error);
+}
+bool VerseNodeMirror::apply_one(const cmd::PolygonSetCornerReal32& c, std::string* error) {
+  return set_corner_reals(c, c.layer_id, c.polygon_id, {double(c.v[0]), double(c.v[1]), double(c.v[2]), double(c.v[3])},
+                          error);
+}
+
+// A deleted polygon leaves its stack.
+bool VerseNodeMirror::apply_one(const cmd::PolygonDelete& c, std::string*) {
+  erase_element(false, c.polygon_id);
+  return true;
+}
+
+bool VerseNodeMirror::apply_one(const cmd::PolygonSetFaceUint8& c, std::string* error) {
+  return set_uint(c, c.layer_id, LayerType::PolygonFaceUint8, c.polygon_id, c.value, error);
+}
+bool VerseNodeMirror::apply_one(const cmd::PolygonSetFaceUint32& c, std::string* error) {
+  return set_uint(c, c.layer_id, LayerType::PolygonFaceUint32, c.polygon_id, c.value, error);
+}
+bool VerseNodeMirror::apply_one(const cmd::PolygonSetFaceReal64& c, std::string* error) {
+  return set_real(c, c.layer_id, LayerType::PolygonFaceReal, c.polygon_id, c.value, error);
+}
+bool VerseNodeMirror::apply_one(const cmd::PolygonSetFaceReal32& c, std::string* error) {
+  return set_real(c, c.layer_id, LayerType::PolygonFaceReal, c.polygon_id, double(c.value), error);
+}
+
+// The crease settings (2.6.2), taken as sent.
+bool VerseNodeMirror::apply_one(const cmd::CreaseSetVertex& c, std::string*) {
+  vertex_crease_ = CreaseSetting{c.layer, c.def_crease};
+  return true;
+}
+bool VerseNodeMirror::apply_one(const cmd::CreaseSetEdge& c, std::string*) {
+  edge_crease_ = CreaseSetting{c.layer, c.def_crease};
+  return true;
+}
+
+// bone_create (2.6.3): the wire's bone_destroy when the weight name is empty.
+bool VerseNodeMirror::apply_one(const cmd::BoneCreate& c, std::string* error) {
+  if (c.weight.empty()) return apply_one(cmd::BoneDestroy{c.bone_id}, error);
+  bones_[c.bone_id] = bone_from_command(c, c.bone_id);
+  return true;
+}
+bool VerseNodeMirror::apply_one(const cmd::BoneDestroy& c, std::string*) {
+  bones_.erase(c.bone_id);
+  return true;
 }
 
 void VerseNodeMirror::take_real32_differences(const VerseNodeMirror& real32) {

@@ -23,6 +23,7 @@
 // protocol error.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <map>
@@ -66,6 +67,37 @@ class VerseNodeMirror {
   Slot* slot(std::uint16_t layer_id, std::uint32_t element, std::string* error, bool* ok);
   void erase_element(bool vertex_stack, std::uint32_t id);
   bool set_xyz(std::uint16_t layer_id, std::uint32_t id, double x, double y, double z, std::string* error);
+  bool typed(std::uint16_t layer_id, LayerType type, const Command& sent, std::string* error) const;
+  bool set_uint(const Command& sent, std::uint16_t layer_id, LayerType type, std::uint32_t element,
+                std::uint32_t value, std::string* error);
+  bool set_real(const Command& sent, std::uint16_t layer_id, LayerType type, std::uint32_t element, double value,
+                std::string* error);
+  bool set_corner_reals(const Command& sent, std::uint16_t layer_id, std::uint32_t polygon,
+                        const std::array<double, 4>& v, std::string* error);
+  bool add_layer(const cmd::LayerCreate& c, LayerType type, std::string* error);
+  // apply()'s steps, one per kind of command (verse_node_mirror.cpp).
+  bool apply_one(const cmd::LayerCreate& c, std::string* error);
+  bool apply_one(const cmd::LayerDestroy& c, std::string* error);
+  bool apply_one(const cmd::LayerSubscribe& c, std::string* error);
+  bool apply_one(const cmd::LayerUnsubscribe& c, std::string* error);
+  bool apply_one(const cmd::VertexSetXyzReal32& c, std::string* error);
+  bool apply_one(const cmd::VertexSetXyzReal64& c, std::string* error);
+  bool apply_one(const cmd::VertexDelete& c, std::string* error);
+  bool apply_one(const cmd::VertexSetUint32& c, std::string* error);
+  bool apply_one(const cmd::VertexSetReal64& c, std::string* error);
+  bool apply_one(const cmd::VertexSetReal32& c, std::string* error);
+  bool apply_one(const cmd::PolygonSetCornerUint32& c, std::string* error);
+  bool apply_one(const cmd::PolygonSetCornerReal64& c, std::string* error);
+  bool apply_one(const cmd::PolygonSetCornerReal32& c, std::string* error);
+  bool apply_one(const cmd::PolygonDelete& c, std::string* error);
+  bool apply_one(const cmd::PolygonSetFaceUint8& c, std::string* error);
+  bool apply_one(const cmd::PolygonSetFaceUint32& c, std::string* error);
+  bool apply_one(const cmd::PolygonSetFaceReal64& c, std::string* error);
+  bool apply_one(const cmd::PolygonSetFaceReal32& c, std::string* error);
+  bool apply_one(const cmd::CreaseSetVertex& c, std::string* error);
+  bool apply_one(const cmd::CreaseSetEdge& c, std::string* error);
+  bool apply_one(const cmd::BoneCreate& c, std::string* error);
+  bool apply_one(const cmd::BoneDestroy& c, std::string* error);
   std::size_t cells() const;
 
   std::size_t max_cells_;

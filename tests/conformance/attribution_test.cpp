@@ -17,6 +17,7 @@
 #include "command_text.h"
 #include "reference_implementation.h"
 #include "reference_wrapper.h"
+#include "runner.h"
 #include "../reference/test_util.h"  // test::C, one command from its text
 
 namespace vgc {
@@ -258,6 +259,64 @@ TEST(Attribution, AnElementKeptAtThePickSentinelIsTheCreateRule) {
       << message;
   EXPECT_NE(message.find("rule bone.create (BONE-CREATE-1, MUST)"), std::string::npos) << message;
   EXPECT_EQ(message.find("BONE-ID-PICK-1"), std::string::npos) << message;
+}
+
+// Issue 29: a fresh node that differs from the model's is blamed through
+// the rule that placed the line, node.base_layers (LAYER-BASE-1) or
+// node.initial_creases (CREASE-INITIAL-1), not by the words of the message
+// (which blamed a base layer renamed "crease" on the initial creases).
+// Checked as `vgc replay` checks a fresh node before a program (the
+// runner's check_fresh) and by check_fresh_state itself.
+TEST(Attribution, AFreshNodeIsBlamedOnTheFreshNodeRuleOfItsLine) {
+  const auto replace = [](std::string from, std::string to) {
+    return [from, to](const std::string& text) {
+      std::string out = text;
+      if (const auto at = out.find(from); at != std::string::npos) out.replace(at, from.size(), to);
+      return out;
+    };
+  };
+  struct Case {
+    const char* what;
+    std::function<std::string(const std::string&)> edit_snapshot;
+    std::function<std::string(const Node&, const std::string&)> edit_derived;
+    Rule rule;
+    const char* clause;
+  };
+  const auto same = [](const Node&, const std::string& t) { return t; };
+  const std::vector<Case> cases = {
+      {"no crease_edge line", replace("crease_edge \"\" 0\n", ""), same, Rule::InitialCreases, "CREASE-INITIAL-1"},
+      {"vertex creases 3", replace("crease_vertex \"\" 0", "crease_vertex \"\" 3"), same, Rule::InitialCreases,
+       "CREASE-INITIAL-1"},
+      {"no layer 1", replace("layer 1 \"polygon\" POLYGON_CORNER_UINT32 - - -\n", ""), same, Rule::BaseLayers,
+       "LAYER-BASE-1"},
+      {"layer 0 named crease", replace("\"vertex\"", "\"crease\""), same, Rule::BaseLayers, "LAYER-BASE-1"},
+      {"a layer more", replace("crease_vertex", "layer 2 \"crease\" VERTEX_UINT32 - - -\ncrease_vertex"), same,
+       Rule::BaseLayers, "LAYER-BASE-1"},
+      {"an effective crease on a fresh node", [](const std::string& t) { return t; },
+       [](const Node&, const std::string& t) {
+         std::string out = t;
+         out.insert(out.find("end"), "vertex_crease 0 0\n");
+         return out;
+       },
+       Rule::InitialCreases, "CREASE-INITIAL-1"},
+  };
+  for (const Case& c : cases) {
+    OneFault sut;
+    sut.edit_snapshot = c.edit_snapshot;
+    sut.edit_derived = c.edit_derived;
+    const ReplayResult replayed = replay_program(Program{}, sut);
+    ASSERT_TRUE(replayed.failure) << c.what;
+    EXPECT_EQ(replayed.failure->clause, c.clause) << c.what << ": " << replayed.failure->message;
+    EXPECT_EQ(replayed.failure->rules, std::vector<Rule>{c.rule}) << c.what << ": " << replayed.failure->message;
+    EXPECT_NE(replayed.failure->message.find("Blamed on rule " + std::string(rule_name(c.rule))), std::string::npos)
+        << c.what << ": " << replayed.failure->message;
+    sut.reset();
+    const std::optional<Finding> f = check_fresh_state(sut);
+    ASSERT_TRUE(f) << c.what;
+    EXPECT_EQ(f->message, replayed.failure->message) << c.what;
+  }
+  OneFault reference;
+  EXPECT_FALSE(replay_program(Program{}, reference).failure);
 }
 
 }  // namespace
