@@ -18,9 +18,11 @@
 #include "declared_profile.h"
 #include "exec_implementation.h"
 #include "fast_check.h"
+#include "report.h"
 #include "../reference/test_util.h"  // test::C
 #include "route_limit_clauses.h"
 #include "runner.h"
+#include "verdict.h"
 
 namespace vgc {
 namespace {
@@ -177,6 +179,12 @@ TEST(DeclaredProfileExec, AnUnknownWordIsNamedInTheReportAndIgnored) {
   ASSERT_NE(parent, nullptr);
   EXPECT_EQ(parent->status, ClauseStatus::Fail) << "the unknown word limits nothing: " << parent->note;
   for (const ClauseOutcome& co : run.clauses) EXPECT_NE(co.status, ClauseStatus::NotApplicable) << co.clause->id;
+  // The report's header names it too, though it hides no clause.
+  const std::string summary = render_summary(run, judge(run, nullptr), ReportContext{});
+  EXPECT_NE(summary.find("Route: the exec route with the profile the implementation declares (profile:teleport); "
+                         "not known to this vgc, so limiting nothing: profile:teleport."),
+            std::string::npos)
+      << summary.substr(0, 1500);
 }
 
 Program posed_bone() {
