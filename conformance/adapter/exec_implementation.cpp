@@ -18,8 +18,8 @@
 #include "bounded_text.h"
 #include "cancel.h"
 #include "capability_documents.h"
-#include "declared_profile.h"
 #include "command_text.h"
+#include "declared_profile.h"
 #include "number_text.h"
 #include "route.h"
 
