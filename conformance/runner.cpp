@@ -155,7 +155,8 @@ int shard_cases(int all, int index, int count);
 // with the least cost so far (the split property's share counted in every
 // shard), ties to the earlier property and the lower shard. Only the
 // properties that will run count (`runs`: selected, claimed, runnable on
-// the route), and on a route with limits (the Verse wire) a property costs
+// the route), and on a route that is not run at scale (the Verse wire,
+// RouteLimits::at_scale) a property costs
 // its cases, each a run of round trips; PropertySpec::cost otherwise. The
 // same in every shard of one implementation.
 std::vector<int> assign_shards(const std::vector<bool>& runs, int count, int cases, bool wire) {
@@ -1216,10 +1217,10 @@ std::optional<PropertyOutcome> why_not_run(const PropertySpec& spec, const RunOp
     return as(PropertySkip::Preflight,
               "not run: the implementation could not show a fresh node (" + run.preflight->clause + ")");
   }
-  // A route with limits (the Verse wire) carries a command per packet
-  // exchange and no derived document: 10^4 to 10^5 commands a case are
-  // beyond a run's time there.
-  if (spec.at_scale && !limits.route.empty())
+  // A route that carries a command per packet exchange (the Verse wire,
+  // RouteLimits::at_scale): 10^4 to 10^5 commands a case are beyond a run's
+  // time there.
+  if (spec.at_scale && !limits.at_scale)
     return as(PropertySkip::NotOnRoute, "not run on " + limits.route +
                                             ": its cases send 10^4 to 10^5 commands; certify the node through "
                                             "exec: or plugin: for it");
@@ -1287,16 +1288,19 @@ RunResult run_certification(Implementation& implementation, const RunOptions& o)
     ~Unset() { g_budget = nullptr; }
   } unset;
   const auto deadline = Clock::time_point::max();
+  // ?capabilities first: its answer is also where an exec program declares
+  // what it does not show (declared_profile.h), which the limits and the
+  // fresh-node check follow. A cancelled run asks nothing more: the
+  // question would end unanswered and read as "claims nothing"
+  // (stopped_before_claims).
+  bool claims_known = !cancel_signal();
+  const std::vector<std::string> claimed = claims_known ? query_capabilities(sut) : std::vector<std::string>{};
+  claims_known = claims_known && !cancel_signal();
   const RouteLimits limits = sut.limits();
   run.preflight = preflight(sut);
 
   // Which properties run at all, then which of them run in this shard.
   const auto& props = property_catalog();
-  // A cancelled run asks nothing more: the question would end unanswered
-  // and read as "claims nothing" (stopped_before_claims).
-  bool claims_known = !run.preflight && !cancel_signal();
-  const std::vector<std::string> claimed = claims_known ? query_capabilities(sut) : std::vector<std::string>{};
-  claims_known = claims_known && !cancel_signal();
   std::vector<std::optional<PropertyOutcome>> not_run;
   std::vector<bool> runs;
   for (const PropertySpec& spec : props) {
@@ -1305,7 +1309,7 @@ RunResult run_certification(Implementation& implementation, const RunOptions& o)
       not_run.back() = stopped_before_claims(*not_run.back(), spec, o);
     runs.push_back(!not_run.back());
   }
-  const std::vector<int> shard = assign_shards(runs, o.shard_count, o.cases, !limits.route.empty());
+  const std::vector<int> shard = assign_shards(runs, o.shard_count, o.cases, !limits.at_scale);
 
   RunProgress progress;
   progress.property_count = static_cast<int>(props.size());
@@ -1344,12 +1348,12 @@ std::string capability_clauses(const std::string& capability) {
 
 ReplayResult replay_program(const Program& program, Implementation& sut) {
   ReplayResult r;
-  // As in certify, the claim is asked before the node is reset.
-  bool claimed = false;
-  if (program.request) {
-    const auto names = query_capabilities(sut);
-    claimed = std::find(names.begin(), names.end(), program.request->capability) != names.end();
-  }
+  // As in certify, ?capabilities is asked first, before the node is reset:
+  // for the claim, and for the profile an exec program declares in its
+  // answer (declared_profile.h), which the checks below follow.
+  const auto names = query_capabilities(sut);
+  const bool claimed =
+      program.request && std::find(names.begin(), names.end(), program.request->capability) != names.end();
   if (auto f = check_fresh(sut)) {
     r.failure = f;
     return r;

@@ -4,6 +4,7 @@
 #include <cstdlib>
 #include <fstream>
 
+#include "capability.h"
 #include "restartable_host.h"
 
 namespace vgc::fuzz {
@@ -62,7 +63,12 @@ std::unique_ptr<Implementation> open_live_implementation(const LiveOptions& o, s
     *error = "'" + o.spec + "': a live implementation is exec:CMD or verse:[NAME@]HOST[:PORT]";
     return nullptr;
   }
-  return open_restartable(*o.route, open_options(o), o.restart, error);
+  std::unique_ptr<Implementation> sut = open_restartable(*o.route, open_options(o), o.restart, error);
+  // An exec program declares what it does not show in its ?capabilities
+  // answer (declared_profile.h): asked once here, so every input is judged
+  // by that profile from the first, as certify judges.
+  if (sut) (void)query_capabilities(*sut);
+  return sut;
 }
 
 }  // namespace vgc::fuzz

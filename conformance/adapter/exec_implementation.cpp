@@ -19,6 +19,7 @@
 #include "cancel.h"
 #include "capability_documents.h"
 #include "command_text.h"
+#include "declared_profile.h"
 #include "number_text.h"
 #include "route.h"
 
@@ -543,6 +544,21 @@ DigestAnswer ExecImplementation::digest() {
 
 Answer ExecImplementation::apply(const Command& c) {
   if (failed_ != CallStatus::Ok) return failed_answer();
+  if (profile_.c_string_names && has_name_with_nul(c)) {  // declared_profile.h: as on the Verse wire
+    Answer a;
+    a.not_sent = true;
+    a.verdict_reported = false;
+    a.detail = "it declares that its names are C strings (profile:c-string-names), and a name holds a NUL byte";
+    return a;
+  }
+  if (profile_.no_bone_rotation && has_bone_rotation(c)) {
+    Answer a;
+    a.not_sent = true;
+    a.verdict_reported = false;
+    a.detail = "it declares that its bone_create carries no rotation (profile:no-bone-rotation), and this one has "
+               "another rotation than the identity 0 0 0 1";
+    return a;
+  }
   const std::string text = print_command(c);
   std::string line;
   Answer a = request_line(text, &line);
@@ -638,7 +654,12 @@ Document ExecImplementation::derived() { return request_document("?derived", "vg
 Document ExecImplementation::request(const std::string& line) {
   const char* header = capability_document_header(line);
   if (!header) return {CallStatus::ProtocolError, {}, "not supported"};
-  return request_document(line.c_str(), header, true);
+  Document d = request_document(line.c_str(), header, true);
+  // Its answer to ?capabilities declares its profile too (declared_profile.h);
+  // a failed or refused question leaves the last one declared.
+  if (line == "?capabilities" && d.status == CallStatus::Ok && d.text.rfind("capabilities", 0) == 0)
+    profile_ = declared_profile(d.text);
+  return d;
 }
 
 }  // namespace vgc

@@ -25,6 +25,7 @@
 #include <string>
 #include <sys/types.h>
 
+#include "declared_profile.h"
 #include "implementation.h"
 #include "reaped_process.h"
 
@@ -56,7 +57,12 @@ class ExecImplementation final : public Implementation {
   // ?capabilities, ?classify, ?subdivide N, ?normals ... (the requests
   // capability_document_header knows): read as a document like
   // ?snapshot; an "error ..." answer is returned as it is (status Ok).
+  // A ?capabilities answer's profile words are kept (declared_profile.h).
   Document request(const std::string& line) override;
+  // What the program declared it does not show, in its last ?capabilities
+  // answer (declared_profile.h): no limits until it was asked, so a caller
+  // that follows them asks ?capabilities first (certify, replay, fuzz).
+  RouteLimits limits() const override { return profile_.limits; }
   // The next request's document is expected to be about `bytes` long (a
   // derived answer on a large mesh): its size limit becomes at least 4x
   // that, and its time limit grows by --timeout per 4 MiB expected
@@ -125,6 +131,7 @@ class ExecImplementation final : public Implementation {
   std::size_t buffered() const { return out_buf_.size() - out_pos_; }
   std::string err_partial_;
   std::deque<std::string> err_lines_;
+  DeclaredProfile profile_;  // from its last ?capabilities answer
   int digest_claimed_ = -1;  // offers_digest(): -1 not asked yet, 0 no, 1 yes
   bool starting_ = false;  // waiting for the ?hello answer: the limit is --start-timeout
   CallStatus failed_ = CallStatus::Ok;  // sticky failure until reset()

@@ -113,6 +113,11 @@ struct RouteLimits {
   // state of the connection that sent layer_subscribe) is not observable;
   // it is compared as "-" on both sides.
   bool subscriptions = true;
+  // false: the route carries a command per packet exchange (the Verse
+  // wire), so the properties at scale (10^4 to 10^5 commands a case) are
+  // not run on it, and a property's cost is its cases. A profile an exec
+  // program declares (declared_profile.h) leaves it true.
+  bool at_scale = true;
   // The route's limits -> why, in the route's words (for the notes). The
   // clauses they keep from being judged (route_limit_clauses.h) are
   // reported `not-applicable` with the route and the why, unless a finding

@@ -60,8 +60,9 @@ struct RouteTraits {
   // follows: today only the bone_create form a Verse host speaks
   // (--verse-bone-form, docs/verse_wire.md section 4). The exec and plugin
   // routes declare their capabilities (?capabilities), which every route
-  // that answers requests asks; no route declares the IMPLEMENTATION-DEFINED
-  // readings it follows yet.
+  // that answers requests asks, and an exec program its profile there too
+  // (declared_profile.h: what it cannot show, as route limits); no route
+  // declares the IMPLEMENTATION-DEFINED readings it follows yet.
   bool declares_bone_form = false;
 };
 

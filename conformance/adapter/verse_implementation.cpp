@@ -228,6 +228,7 @@ RouteLimits verse_route_limits() {
   l.derived = false;
   l.why_no_derived = "the Verse wire carries only stored state (no effective creases, no bone world poses)";
   l.subscriptions = false;
+  l.at_scale = false;
   l.cannot[RouteLimit::NoVerdicts] =
       "a Verse host acknowledges nothing and reports no error, so it gives no reason codes (docs/spec_facts.md "
       "section 8)";

@@ -36,6 +36,8 @@ std::string render_summary(const RunResult& run, const Verdict& v, const ReportC
     if (!ids.empty())
       out += fmt::format("Not judgeable over {} (not-applicable; the clause table says why for each): {}.\n\n",
                          run.route, ids);
+    else  // a declared profile of words this vgc does not know (declared_profile.h): named all the same
+      out += fmt::format("Route: {}.\n\n", run.route);
   }
   if (!run.avoided_classes.empty()) {
     out += "Classes of input that cost a time-out, found once and not drawn again:\n\n";

@@ -60,6 +60,7 @@ class WireLike : public test::ReferenceWrapper {
     l.derived = false;
     l.why_no_derived = "the test route carries no derived document";
     l.subscriptions = false;
+    l.at_scale = false;  // as the wire: a command per packet exchange
     l.clauses["REASON-1"] = "the test route reports no verdicts";
     l.clauses["LAYER-SUBSCRIBE-1"] = "the test route shows no subscription";
     for (const char* id : {"MESH-CLASSIFY-1", "SUBD-CATMARK-1", "NORMALS-SPLIT-1", "LOOP-TRIANGLE-1",

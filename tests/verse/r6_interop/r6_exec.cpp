@@ -8,9 +8,15 @@
 // codec. Spec: docs/verse_wire.md section 12 ("The exec wrapper"): what it
 // sends for each command line, what it answers, and its limits.
 //
-// Rationale: a Verse host acknowledges nothing, so every command is
-// answered `done` and vgc judges it from the state (docs/adapters.md, "done
-// answers"). The state is a VerseNodeMirror (conformance/adapter) fed with
+// Rationale: a Verse host acknowledges nothing, so a command is answered
+// `done` and vgc judges it from the state (docs/adapters.md, "done
+// answers"), unless the host broadcast a command of its kind for the node
+// while it was settled: a host's broadcasts are its verdict, as on the wire
+// route, so it is answered `ok` (applied) even when the state shows no
+// change. Its ?capabilities answer declares the profile of a host behind
+// r6's library (declared_profile.h): no derived document, no subscription
+// column of its own, no verdicts, no bone rotation, no requests, names as
+// C strings; so vgc judges over exec what it judges over the wire. The state is a VerseNodeMirror (conformance/adapter) fed with
 // what r6's library decoded from the host's broadcasts; the wrapper
 // subscribes to every layer at REAL64. r6's library keeps one connection
 // per host, so the suite's own layer_subscribe/layer_unsubscribe are not
@@ -57,10 +63,12 @@ struct State {
   std::string mirror_error;
   std::set<std::uint16_t> to_subscribe;                       // announced, not yet subscribed at REAL64
   std::map<std::uint16_t, vgc::RealFormat> suite_subs;        // the suite's layer_subscribe, kept here
+  std::set<std::string> announced;  // the verbs the host broadcast for the node since the command was sent
 } g;
 
 void take(VNodeID node, const vgc::Command& c) {
   if (node != g.node) return;
+  g.announced.insert(std::string(vgc::command_verb(c)));
   std::string error;
   if (!g.mirror.apply(c, &error) && g.mirror_error.empty()) g.mirror_error = error;
 }
@@ -357,7 +365,10 @@ int main(int argc, char** argv) {
     } else if (line == "?derived") {
       answer(derived());
     } else if (line == "?capabilities") {
-      answer("capabilities\nend\n");
+      // What a Verse host behind r6's library cannot show (declared_profile.h,
+      // docs/adapters.md "A declared profile"), as the wire route says it.
+      answer("capabilities profile:no-derived profile:subscriptions-unseen profile:no-verdicts "
+             "profile:no-bone-rotation profile:no-requests profile:c-string-names\nend\n");
     } else if (line == "?quit") {
       break;
     } else if (!line.empty() && line[0] == '?') {
@@ -371,8 +382,14 @@ int main(int argc, char** argv) {
         continue;
       }
       if (g.node == 0xFFFFFFFFu) reset_node();
-      if (send(c)) settle(line);
-      answer("done\n");
+      g.announced.clear();
+      const bool sent = send(c);
+      if (sent) settle(line);
+      // A host's broadcasts are its verdict (as on the wire route): a
+      // command whose own kind the host announced for the node was
+      // applied, even when the state shows no change (a delete of what was
+      // not live). Otherwise the verdict is not known: `done`.
+      answer(sent && g.announced.count(std::string(vgc::command_verb(c))) ? "ok\n" : "done\n");
     }
   }
   verse_send_connect_terminate(host.c_str(), "vgc_r6_exec done");

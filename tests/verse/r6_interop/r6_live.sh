@@ -57,6 +57,21 @@ for clause in ["POLY-VERTEX-REF-1", "ID-BOUND-1", "LAYER-WRITE-1", "POLY-CORNERS
     if status.get(clause) != "fail":
         bad.append("%s is %s, expected fail" % (clause, status.get(clause)))
 print("r6 certified (%s route) in %.1f s: %s" % (mode, r["seconds"], r["counts"]))
+# Over exec, vgc_r6_exec declares the profile of a host behind r6's library
+# (docs/adapters.md "A declared profile"): what the wire route cannot judge
+# is not-applicable on exec too, with the declaration as the why, and the
+# host's broadcasts are its verdicts there too (docs/verse_wire.md section 12).
+if mode == "exec":
+    notes = {c["id"]: c.get("route_limit", "") for c in r["clauses"]}
+    if "profile:no-derived" not in r.get("route_limits", ""):
+        bad.append("no declared profile in the route line: %r" % r.get("route_limits"))
+    for clause in ["BONE-PARENT-1", "BONE-DOWNSTREAM-1", "BONE-VALUE-1", "REASON-1", "SUBD-CATMARK-1"]:
+        if status.get(clause) != "not-applicable" or "in its ?capabilities answer" not in notes.get(clause, ""):
+            bad.append("%s is %s (%s), expected not-applicable by the declared profile"
+                       % (clause, status.get(clause), notes.get(clause, "")))
+    if status.get("VERTEX-DELETE-1") != "fail":
+        bad.append("VERTEX-DELETE-1 is %s, expected fail (r6 broadcasts the delete of a vertex that is not live)"
+                   % status.get("VERTEX-DELETE-1"))
 for b in bad:
     print("r6_live certify: " + b)
 sys.exit(1 if bad else 0)
