@@ -1,11 +1,14 @@
 // verse_implementation.cpp — see verse_implementation.h.
 #include "verse_implementation.h"
 
+#include <charconv>
 #include <chrono>
 #include <map>
 #include <cstdlib>
+#include <fstream>
 #include <optional>
 #include <set>
+#include <sstream>
 #include <type_traits>
 #include <utility>
 #include <vector>
@@ -173,6 +176,36 @@ bool wire_key(const Command& c, verse::BoneForm form, std::string* key) {
   g.command = c;
   key->clear();
   return verse::encode_command(g, key, form).ok();
+}
+
+// Whether `host` names this machine (then /proc/net/udp shows whether a
+// process still holds the port).
+bool is_local_host(const std::string& host) {
+  return host == "localhost" || host.rfind("127.", 0) == 0 || host == "::1" || host == "[::1]";
+}
+
+// Whether some socket of this machine is bound to UDP `port`
+// (/proc/net/udp and udp6: "sl local_address:PORT ..." in hex). A Verse
+// host that stopped answering still holds its port; one whose process
+// ended (a crash) holds nothing.
+bool local_udp_port_bound(std::uint16_t port) {
+  for (const char* table : {"/proc/net/udp", "/proc/net/udp6"}) {
+    std::ifstream f(table);
+    std::string line;
+    std::getline(f, line);  // the header
+    while (std::getline(f, line)) {
+      std::istringstream words(line);
+      std::string slot, local;
+      if (!(words >> slot >> local)) continue;
+      const auto colon = local.rfind(':');
+      if (colon == std::string::npos) continue;
+      unsigned value = 0;
+      const char* first = local.data() + colon + 1;
+      if (std::from_chars(first, local.data() + local.size(), value, 16).ec == std::errc() && value == port)
+        return true;
+    }
+  }
+  return false;
 }
 
 CallStatus call_status_of(const verse::Status& s) {
@@ -702,7 +735,12 @@ Answer VerseImplementation::settle(const std::string& what) {
         // stopped or overloaded process): a time-out, not a crash.
         const double probe_s = std::max(seconds_left(deadline), std::min(kDeadSessionSeconds, options_.timeout_seconds));
         bool echoed = false;
-        if (!observer_answers(probe_s, is_echo, &echoed))
+        const bool answered = observer_answers(probe_s, is_echo, &echoed);
+        if (!answered && is_local_host(host_) && !local_udp_port_bound(port_))
+          return failed(CallStatus::Crash, what + ": the host's process ended: " + unacked +
+                                               ", and nothing on this machine holds UDP port " +
+                                               std::to_string(port_) + " any more");
+        if (!answered)
           return failed(CallStatus::Timeout, what + ": the host stopped answering: " + unacked +
                                                  ", and the observer's round trip was not answered within " +
                                                  limit_text(probe_s, "the rest of --timeout"));
