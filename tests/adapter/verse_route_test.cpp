@@ -373,11 +373,12 @@ TEST(VerseRoute, ASubscriptionInTwoFormatsIsFound) {
 
 // The host stops answering after the first property (SIGSTOP): the rest of
 // the run is timeouts, bounded by --timeout, and the report is written.
-TEST(VerseRoute, AHostThatGoesSilentGivesTimeoutsAndAFinishedReport) {
-  ServedHost host({}, {});
-  ASSERT_NE(host.port(), 0) << "no port in \"" << host.line() << "\"";
-  auto sut = open_verse(host, 1.0);
-  ASSERT_NE(sut, nullptr);
+// A certification of LAYER-* and POLY-* (10 cases) against `host`, which
+// is stopped (SIGSTOP) after the first property and let go at the end.
+RunResult run_silenced_after_one_property(ServedHost& host, double timeout_seconds) {
+  auto sut = open_verse(host, timeout_seconds);
+  EXPECT_NE(sut, nullptr);
+  if (!sut) return {};
   RunOptions o = options(10);
   o.clause_glob = "LAYER-*,POLY-*";
   bool silenced = false;
@@ -386,7 +387,14 @@ TEST(VerseRoute, AHostThatGoesSilentGivesTimeoutsAndAFinishedReport) {
   };
   const RunResult run = run_certification(*sut, o);
   host.signal(SIGCONT);
-  ASSERT_TRUE(silenced);
+  EXPECT_TRUE(silenced);
+  return run;
+}
+
+TEST(VerseRoute, AHostThatGoesSilentGivesTimeoutsAndAFinishedReport) {
+  ServedHost host({}, {});
+  ASSERT_NE(host.port(), 0) << "no port in \"" << host.line() << "\"";
+  const RunResult run = run_silenced_after_one_property(host, 1.0);
   bool timeout = false;
   for (const ClauseOutcome& co : run.clauses) timeout = timeout || co.status == ClauseStatus::Timeout;
   EXPECT_TRUE(timeout) << "no clause timed out";
@@ -415,17 +423,7 @@ TEST(VerseRoute, AHostThatGoesSilentGivesTimeoutsAndAFinishedReport) {
 TEST(VerseRoute, AHostThatGoesSilentIsATimeoutNotACrashNorHistory) {
   ServedHost host({}, {});
   ASSERT_NE(host.port(), 0) << "no port in \"" << host.line() << "\"";
-  auto sut = open_verse(host, 5.0);
-  ASSERT_NE(sut, nullptr);
-  RunOptions o = options(10);
-  o.clause_glob = "LAYER-*,POLY-*";
-  bool silenced = false;
-  o.property_done = [&](const PropertyOutcome&, const RunProgress&) {
-    if (!silenced) host.signal(SIGSTOP), silenced = true;
-  };
-  const RunResult run = run_certification(*sut, o);
-  host.signal(SIGCONT);
-  ASSERT_TRUE(silenced);
+  const RunResult run = run_silenced_after_one_property(host, 5.0);
   int timeouts = 0;
   for (const ClauseOutcome& co : run.clauses) {
     const std::string what = std::string(co.clause->id) + " " + clause_status_name(co.status) + ": " +

@@ -403,48 +403,50 @@ FaultyAnswer FaultyNode::apply(const Command& original) {
   return answer(r);
 }
 
-// The node cannot hold a layer at 0xFFFF by a command (it picks): the layer
-// kept there is moved to a free id that stands in for 0xFFFF, the command
-// applied at that id (creating or re-creating it), and the layer moved back.
-Reason FaultyNode::keep_layer_at_pick_id(cmd::LayerCreate x) {
-  auto& layers = const_cast<std::map<std::uint16_t, Layer>&>(node_.layers());  // test-only: reach into the node's storage
-  std::uint16_t stand_in = 0;
-  for (std::uint32_t id = 2; id < kNone16 && !stand_in; ++id)
-    if (!layers.count(static_cast<std::uint16_t>(id))) stand_in = static_cast<std::uint16_t>(id);
-  if (!stand_in) return Reason::NoFreeId;
-  const auto move = [&layers](std::uint16_t from, std::uint16_t to) {
-    auto n = layers.extract(from);
+namespace {
+
+// The node cannot hold an element at 0xFFFF by a command (it picks): the
+// element kept there is moved to a free id (the first from `first`) that
+// stands in for 0xFFFF, `apply_at(stand_in)` applies the command at that
+// id (creating or re-creating it), and the element is moved back.
+template <class Element, class ApplyAt>
+Reason keep_at_pick_id(std::map<std::uint16_t, Element>& elements, std::uint32_t first, ApplyAt apply_at) {
+  std::uint32_t free_id = kNone16;
+  for (std::uint32_t id = first; id < kNone16 && free_id == kNone16; ++id)
+    if (!elements.count(static_cast<std::uint16_t>(id))) free_id = id;
+  if (free_id == kNone16) return Reason::NoFreeId;
+  const auto stand_in = static_cast<std::uint16_t>(free_id);
+  const auto move = [&elements](std::uint16_t from, std::uint16_t to) {
+    auto n = elements.extract(from);
     if (n.empty()) return;
     n.key() = to;
     n.mapped().id = to;
-    layers.insert(std::move(n));
+    elements.insert(std::move(n));
   };
   move(kNone16, stand_in);
-  x.layer_id = stand_in;
-  const Reason r = apply_node(x);
+  const Reason r = apply_at(stand_in);
   move(stand_in, kNone16);
+  return r;
+}
+
+}  // namespace
+
+Reason FaultyNode::keep_layer_at_pick_id(cmd::LayerCreate x) {
+  auto& layers = const_cast<std::map<std::uint16_t, Layer>&>(node_.layers());  // test-only: reach into the node's storage
+  const Reason r = keep_at_pick_id(layers, 2, [&](std::uint16_t id) {
+    x.layer_id = id;
+    return apply_node(x);
+  });
   node_changed();
   return r;
 }
 
 Reason FaultyNode::keep_bone_at_pick_id(cmd::BoneCreate x) {
   auto& bones = const_cast<std::map<std::uint16_t, Bone>&>(node_.bones());  // test-only: reach into the node's storage
-  std::uint32_t free_id = kNone16;
-  for (std::uint32_t id = 0; id < kNone16 && free_id == kNone16; ++id)
-    if (!bones.count(static_cast<std::uint16_t>(id))) free_id = id;
-  if (free_id == kNone16) return Reason::NoFreeId;
-  const auto stand_in = static_cast<std::uint16_t>(free_id);
-  const auto move = [&bones](std::uint16_t from, std::uint16_t to) {
-    auto n = bones.extract(from);
-    if (n.empty()) return;
-    n.key() = to;
-    n.mapped().id = to;
-    bones.insert(std::move(n));
-  };
-  move(kNone16, stand_in);
-  x.bone_id = stand_in;
-  const Reason r = apply_node(x);
-  move(stand_in, kNone16);
+  const Reason r = keep_at_pick_id(bones, 0, [&](std::uint16_t id) {
+    x.bone_id = id;
+    return apply_node(x);
+  });
   node_changed();
   return r;
 }
