@@ -25,6 +25,19 @@ RunOptions kill_options() {
   return o;
 }
 
+// A default `vgc certify` (200 cases, size 50) at `seed` of the clauses
+// `glob` selects, with no budget that load could cut short (CTest's
+// TIMEOUT guards a hang).
+RunOptions default_run(std::uint64_t seed, const std::string& glob = "*") {
+  RunOptions o;
+  o.seed = seed;
+  o.cases = 200;
+  o.max_size = 50;
+  o.clause_glob = glob;
+  o.budget_seconds = 3600;
+  return o;
+}
+
 struct Outcome {
   bool killed = false;
   std::string detail;
@@ -110,12 +123,7 @@ TEST(FaultKill, FaultsPastTheOldGeneratorsReachFailAtSeedsOneToThree) {
     ASSERT_GT(fault, 0) << name;
     for (std::uint64_t seed = 1; seed <= 3; ++seed) {
       faults::FaultyImplementation impl(fault);
-      RunOptions o;
-      o.seed = seed;
-      o.cases = 200;
-      o.max_size = 50;
-      o.budget_seconds = 3600;  // load must not cut a test short; CTest's TIMEOUT guards a hang
-      const RunResult run = run_certification(impl, o);
+      const RunResult run = run_certification(impl, default_run(seed));
       std::string found;
       bool hit = false;
       for (const auto& co : run.clauses) {
@@ -145,13 +153,7 @@ void expect_kept_sentinel_is_the_create_rule(const char* fault_name, std::string
   ASSERT_GT(fault, 0);
   for (std::uint64_t seed = 1; seed <= 3; ++seed) {
     faults::FaultyImplementation impl(fault);
-    RunOptions o;
-    o.seed = seed;
-    o.cases = 200;
-    o.max_size = 50;
-    o.clause_glob = glob;
-    o.budget_seconds = 3600;  // load must not cut a test short; CTest's TIMEOUT guards a hang
-    const RunResult run = run_certification(impl, o);
+    const RunResult run = run_certification(impl, default_run(seed, glob));
     std::string found;
     bool hit = false, pick_blamed = false;
     for (const auto& co : run.clauses) {
@@ -204,13 +206,7 @@ TEST(FaultKill, ACrashBehindAMilderFindingOfItsClauseIsFoundAtSeedsOneToThree) {
       std::string error;
       auto impl = open_implementation(std::string("plugin:") + VGC_FAULT_PLUGIN, open, &error);
       ASSERT_NE(impl, nullptr) << error;
-      RunOptions o;  // a default `vgc certify` (200 cases, size 50), of the fault's clause
-      o.seed = seed;
-      o.cases = 200;
-      o.max_size = 50;
-      o.clause_glob = std::string(info.expected_clause);
-      o.budget_seconds = 3600;  // load must not cut a test short; CTest's TIMEOUT guards a hang
-      const RunResult run = run_certification(*impl, o);
+      const RunResult run = run_certification(*impl, default_run(seed, std::string(info.expected_clause)));
       unsetenv("VGC_FAULT");
       const ClauseOutcome* co = nullptr;
       std::string found;
