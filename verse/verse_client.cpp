@@ -7,6 +7,7 @@
 #include <functional>
 #include <set>
 
+#include "login_address_quarantine.h"
 #include "wire_endpoint.h"
 #include "wire_login.h"
 
@@ -47,6 +48,10 @@ struct ClientSession::Impl {
     dropped = why;
     return Status::dropped(why);
   }
+
+  // The login's address stays bound for a while after it ends
+  // (login_address_quarantine.h): no later login is given it.
+  void retire_socket() { quarantine_login_socket(socket.release()); }
 
   void note_protocol_error(const Status& st) {
     ++counters.protocol_errors;
@@ -173,12 +178,13 @@ Status ClientSession::connect(const std::string& host, std::uint16_t port, const
   if (!st.ok()) return st;
   st = s.socket.open("0.0.0.0", 0);
   if (!st.ok()) return st;
-  const RsaKey key = make_rsa_key();
+  RsaKey key = make_rsa_key();
   const Clock::time_point deadline = deadline_after(options.login_timeout_s);
   const auto resend = std::chrono::duration_cast<Clock::duration>(
       std::chrono::duration<double>(std::max(0.01, options.resend_interval_s)));
   std::string stage_packet = build_login_packet(login::Contact{key.e, key.n});
   const char* stage_name = "its key (login stage 1)";
+  int restarts = 0;  // logins started again from a new address (below)
   Clock::time_point sent_at = Clock::now();
   bool send_now = true;  // a new stage packet, or the resend interval passed
   const auto nudge_every = std::chrono::milliseconds(10);
@@ -202,11 +208,11 @@ Status ClientSession::connect(const std::string& host, std::uint16_t port, const
       nudged_at = now;
     }
     if (options.stop && options.stop()) {
-      s.socket.close();
+      s.retire_socket();
       return Status::timeout(std::string("stopped while waiting for ") + stage_name);
     }
     if (now >= deadline) {
-      s.socket.close();
+      s.retire_socket();
       return Status::timeout("no Verse host answered at " + s.host.to_string() + ": it did not send " + stage_name +
                              " within " + seconds_text(options.login_timeout_s));
     }
@@ -229,14 +235,14 @@ Status ClientSession::connect(const std::string& host, std::uint16_t port, const
     if (const auto* c = std::get_if<login::Challenge>(&m)) {
       s.host_release = c->version;
       if (c->version != kReleaseNumber) {
-        s.socket.close();
+        s.retire_socket();
         return Status::protocol_error("the host speaks Verse release " + std::to_string(c->version) + ", vgc speaks r" +
                                       std::to_string(kReleaseNumber));
       }
       login::Login l;
       st = rsa_apply(block, c->e, c->n, &l.encrypted);
       if (!st.ok()) {
-        s.socket.close();
+        s.retire_socket();
         return Status::protocol_error("the host's login key is unusable: " + st.detail);
       }
       stage_packet = build_login_packet(l);
@@ -247,9 +253,25 @@ Status ClientSession::connect(const std::string& host, std::uint16_t port, const
       if (stage_name[0] == 'i') continue;  // an accept before our login: not ours
       KeyBytes clear{};
       st = rsa_apply(a->encrypted_data_key, key.d, key.n, &clear);
+      if (!st.ok() && restarts < 3) {
+        // Encrypted under another key: the host still holds an earlier
+        // login from this address (login_address_quarantine.h says how it
+        // can get one). Start again from a new address, within the limit.
+        ++restarts;
+        s.retire_socket();
+        st = s.socket.open("0.0.0.0", 0);
+        if (!st.ok()) return st;
+        key = make_rsa_key();
+        stage_packet = build_login_packet(login::Contact{key.e, key.n});
+        stage_name = "its key (login stage 1)";
+        login_sent = awaiting_accept = false;
+        send_now = true;
+        continue;
+      }
       if (!st.ok()) {
-        s.socket.close();
-        return Status::protocol_error("connect_accept: " + st.detail);
+        s.retire_socket();
+        return Status::protocol_error("connect_accept: " + st.detail + ": " + std::to_string(restarts + 1) +
+                                      " logins, each from a new address, were answered with an accept for another key");
       }
       DataKey data_key;
       std::copy(clear.begin(), clear.end(), data_key.begin());
@@ -267,7 +289,7 @@ Status ClientSession::connect(const std::string& host, std::uint16_t port, const
       s.index_subscribed = false;
       return {};
     } else if (std::holds_alternative<login::Terminate>(m)) {
-      s.socket.close();
+      s.retire_socket();
       return Status::closed("the host refused the login");
     }
   }
@@ -277,6 +299,7 @@ bool ClientSession::connected() const { return impl_->connected; }
 std::uint32_t ClientSession::avatar() const { return impl_->avatar; }
 
 std::uint8_t ClientSession::host_release() const { return impl_->host_release; }
+std::uint16_t ClientSession::local_port() const { return impl_->connected ? impl_->socket.port() : 0; }
 BoneForm ClientSession::bone_form() const { return impl_->options.bone_form; }
 void ClientSession::set_bone_form(BoneForm form) {
   impl_->options.bone_form = form;
@@ -418,7 +441,7 @@ void ClientSession::disconnect(const std::string& bye) {
     s.connected = false;
   }
   s.channel.reset();
-  s.socket.close();
+  s.retire_socket();
 }
 
 ClientSession::Counters ClientSession::counters() const {

@@ -86,6 +86,8 @@ class ClientSession {
 
   // The release number the host announced in its login challenge (6 for r6).
   std::uint8_t host_release() const;
+  // The UDP port this session sends from (0 when not logged in).
+  std::uint16_t local_port() const;
   BoneForm bone_form() const;
   void set_bone_form(BoneForm form);
 

@@ -55,6 +55,12 @@ class UdpSocket {
   // datagram longer than kMaxPacketBytes is a ProtocolError (and dropped).
   Status receive(std::string* bytes, PeerAddress* from, double timeout_s);
   void close();
+  // Gives up the socket without closing it: its descriptor (-1 if none).
+  int release() {
+    const int fd = fd_;
+    fd_ = -1;
+    return fd;
+  }
 
  private:
   int fd_ = -1;
