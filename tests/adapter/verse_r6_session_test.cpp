@@ -48,9 +48,12 @@ TEST(VerseR6Session, ADroppedDriverIsSeenAtTheNextResetAndLoggedInAgainQuickly) 
     const Answer again = sut->reset();
     const double took = seconds_since(t);
     EXPECT_EQ(again.status, CallStatus::Ok) << again.detail;
-    // A round trip through r6 takes milliseconds even on a loaded machine;
-    // the old reset took 1 s for the node_create plus up to 1 s of login.
-    EXPECT_LT(took, 0.5) << "reset " << i << " after the drop took " << took << " s";
+    // The old reset waited a whole second for r6 to answer the node_create
+    // and up to another for the login (r6 answers an un-nudged login at its
+    // loop's next 1 s wake). Under 0.9 s means neither wait happened; the
+    // round trips themselves take milliseconds (the bound was 0.5 s, and
+    // failed once in 13 runs beside another r6-live test).
+    EXPECT_LT(took, 0.9) << "reset " << i << " after the drop took " << took << " s";
     const Answer b = sut->apply(vertex);
     EXPECT_EQ(b.status, CallStatus::Ok) << "the session after reset " << i << ": " << b.detail;
     const Document d = sut->snapshot();
