@@ -7,7 +7,7 @@
 
 #include "fast_check.h"
 #include "property.h"
-#include "runner.h"
+#include "check_step.h"
 
 namespace vgc {
 

@@ -289,4 +289,10 @@ std::optional<Finding> check_fresh_state(Implementation& sut) {
   return std::nullopt;
 }
 
+std::optional<Finding> reset_and_check_fresh(Implementation& sut) {
+  const Answer a = sut.reset();
+  if (a.status != CallStatus::Ok) return call_failure("STABLE-1", a.status, "resetting to a fresh node", a.detail);
+  return check_fresh_state(sut);
+}
+
 }  // namespace vgc

@@ -108,4 +108,8 @@ StepResult judge_step(const Node& before, const Command& c, const Answer& answer
 // node.base_layers (LAYER-BASE-1) or node.initial_creases (CREASE-INITIAL-1).
 std::optional<Finding> check_fresh_state(Implementation& sut);
 
+// Resets `sut` to a fresh node and compares it with the reference's fresh
+// node (check_fresh_state); a reset that fails is a STABLE-1 call failure.
+std::optional<Finding> reset_and_check_fresh(Implementation& sut);
+
 }  // namespace vgc

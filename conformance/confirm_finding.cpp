@@ -8,7 +8,7 @@
 #include "bounded_text.h"
 #include "cancel.h"
 #include "check_step.h"
-#include "runner.h"  // replay_program: a finding is confirmed by replaying it on a fresh instance
+#include "replay_program.h"  // a finding is confirmed by replaying it on a fresh instance
 #include "command_text.h"
 #include "program_checker.h"
 

@@ -10,7 +10,7 @@
 // only what is cheap after each command (the call answered, the line was
 // read, applied or rejected as the reference says, when the answer says it),
 // and the documents once, at the end. Only when any of that differs does
-// the exact path run: replay_program (runner.h) from a fresh node, step by
+// the exact path run: replay_program (replay_program.h) from a fresh node, step by
 // step with check_step, which names the first divergent command and its
 // clause exactly as `vgc certify` and `vgc replay` do.
 //
@@ -26,7 +26,7 @@
 
 #include "command.h"
 #include "implementation.h"
-#include "runner.h"
+#include "replay_program.h"
 
 namespace vgc {
 

@@ -10,7 +10,7 @@
 #include "confirm_finding.h"
 #include "node.h"
 #include "rule_clauses.h"
-#include "runner.h"
+#include "replay_program.h"
 
 namespace vgc {
 namespace {

@@ -30,11 +30,13 @@
 #include <utility>
 #include <vector>
 
+#include "capability_run.h"  // capability_clauses, run_capability_check: for the runner's callers
 #include "check_step.h"
 #include "clause.h"
 #include "clause_selection.h"
 #include "implementation.h"
 #include "program.h"
+#include "replay_program.h"  // replay_program: for the runner's callers
 #include "run_result.h"
 
 namespace vgc {
@@ -53,38 +55,5 @@ RunResult run_certification(Implementation& sut, const RunOptions& options);
 
 // The seed a property runs with (the run's seed mixed with the property id).
 std::uint64_t property_seed(std::uint64_t run_seed, std::string_view property_id);
-
-// Replays `program` from a fresh node, then repeats its capability request
-// if it has one, as certify checks it: the first finding, if any, and the
-// index of the command it was found on (-1 for the fresh-node check,
-// commands.size() for the capability request). A request that cannot be
-// judged (sut does not claim the capability, no check is registered for
-// it, or the check's oracle cannot be asked about this state:
-// FindingStatus::NotJudged) is no finding: `not_judged` says why, naming
-// the clause(s). Never
-// throws for anything the implementation does.
-struct ReplayResult {
-  std::optional<Finding> failure;
-  int failed_at = -1;
-  std::vector<Finding> notes;
-  std::string not_judged;  // empty, or why program.request could not be judged
-  // Other failures the program's end shows besides `failure` (the late
-  // view's: a document difference and a subscription kept in two formats;
-  // certify reports whichever its tolerated clauses leave first).
-  std::vector<Finding> also_failed;
-};
-ReplayResult replay_program(const Program& program, Implementation& sut);
-
-// The clause ids the properties of `capability` declare, comma-separated
-// ("SUBD-CATMARK-1"); empty for a capability no property checks.
-std::string capability_clauses(const std::string& capability);
-
-// Runs `check` as `request` says (check_drawn with the drawn value for a
-// check that draws), recording the last capability request and its answer
-// into the finding (Finding::shown_by, observed_document) when the check
-// did not: what report.html draws a capability finding from.
-struct CapabilityCheck;
-std::optional<Finding> run_capability_check(const CapabilityCheck& check, const Node& model, Implementation& sut,
-                                            const CapabilityRequest& request);
 
 }  // namespace vgc
