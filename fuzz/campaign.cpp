@@ -1,15 +1,16 @@
-// campaign.cpp — see campaign.h.
+// campaign.cpp — a libFuzzer campaign's spine (see campaign.h): run_campaign
+// and its steps in order (options, run directory, libFuzzer, signing and
+// findings, clauses, corpus and speed, coverage, reports). The children it
+// starts are campaign_process.h's, crashes are signed by crash_signature.h,
+// findings minimized and written by campaign_findings.cpp, the summaries
+// rendered by campaign_summary.cpp; campaign_run.h is what the steps share.
+//
+// Spec: docs/fuzzing.md "Running a campaign".
 #include "campaign.h"
-
-#include "campaign_html.h"
+#include "campaign_run.h"
 
 #include <fmt/core.h>
 #include <nlohmann/json.hpp>
-#include <fcntl.h>
-#include <poll.h>
-#include <signal.h>
-#include <sys/resource.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -23,28 +24,22 @@
 #include <iterator>
 #include <map>
 #include <regex>
-#include <sstream>
 
 #include "baseline.h"
 #include "clause.h"
 #include "command_binary.h"
 #include "command_text.h"
 #include "display_text.h"
-#include "program_command.h"
 #include "exec_implementation.h"
 #include "coverage_record.h"
 #include "live_implementation.h"
-#include "restartable_host.h"
-#include "minimize_finding.h"
-#include "minimize_input.h"
-#include "sign_budget.h"
 #include "symbolize_functions.h"
-#include "process_cpu.h"
+#include "campaign_process.h"
+#include "crash_signature.h"
 
 namespace vgc::fuzz {
-namespace {
+namespace campaign_steps {
 
-namespace fs = std::filesystem;
 
 bool read_file(const fs::path& p, std::string* out) {
   std::ifstream in(p, std::ios::binary);
@@ -86,10 +81,6 @@ fs::path fuzz_build_dir(const CampaignOptions& o) {
 }
 
 
-struct Progress {
-  long long execs = 0, exec_s = 0, cov = 0, ft = 0, corp = 0, crashes = 0;
-};
-
 // Reads one libFuzzer status line ("#1234 NEW cov: 5 ft: 6 corp: 7/80b ...
 // exec/s: 9", or in fork mode "#1234: cov: 5 ft: 6 corp: 7 exec/s 9
 // oom/timeout/crash: 0/0/1 ..."). Returns false for any other line.
@@ -110,243 +101,6 @@ bool parse_progress(const std::string& line, Progress* p) {
   field(R"(exec/s:? (\d+))", &p->exec_s);
   field(R"(oom/timeout/crash: \d+/\d+/(\d+))", &p->crashes);
   return true;
-}
-
-struct RunResult {
-  int exit = -1;
-  bool killed = false;  // still running at the deadline: its process group was killed
-  bool cpu_spent = false;  // stopped because the group had used its CPU budget (cpu_limit_s)
-  double cpu_s = 0;     // user + system of the child and the descendants it waited for
-};
-
-// The environment of a child: this process's, with env_add (NAME=value)
-// replacing or adding variables. Built before fork(), so that the child
-// only calls execve (a soak forks from several threads at once, and
-// putenv after fork is not safe there).
-std::vector<std::string> child_environment(const std::vector<std::string>& env_add) {
-  std::vector<std::string> env;
-  for (char** e = environ; e && *e; ++e) {
-    const std::string entry(*e);
-    const std::string name = entry.substr(0, entry.find('=') + 1);
-    const bool replaced = std::any_of(env_add.begin(), env_add.end(),
-                                      [&](const std::string& kv) { return kv.rfind(name, 0) == 0; });
-    if (!replaced) env.push_back(entry);
-  }
-  env.insert(env.end(), env_add.begin(), env_add.end());
-  return env;
-}
-
-// Runs argv (in a process group of its own) with env additions,
-// stdout+stderr into `on_line` line by line, until it exits or `deadline`
-// passes; then SIGTERM to the whole group, SIGKILL 2 s later. With
-// cpu_limit_s > 0 the group is also stopped so once it has used that many
-// CPU seconds (process_cpu.h, read at most once a second); its CPU time is
-// then the larger of that reading and the kernel's rusage, which misses a
-// job killed before its parent waited for it.
-RunResult run_streaming(const std::vector<std::string>& argv, const std::vector<std::string>& env_add,
-                        std::chrono::steady_clock::time_point deadline,
-                        const std::function<void(const std::string&)>& on_line,
-                        const std::function<bool()>& stop_now, double cpu_limit_s = 0) {
-  RunResult result;
-  const std::vector<std::string> env = child_environment(env_add);
-  std::vector<char*> args, envp;
-  for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
-  args.push_back(nullptr);
-  for (const std::string& kv : env) envp.push_back(const_cast<char*>(kv.c_str()));
-  envp.push_back(nullptr);
-  int fds[2];
-  if (pipe2(fds, O_CLOEXEC) != 0) return result;
-  const pid_t pid = fork();
-  if (pid < 0) return result;
-  if (pid == 0) {
-    setpgid(0, 0);
-    dup2(fds[1], 1);  // dup2 clears O_CLOEXEC on 1 and 2
-    dup2(fds[1], 2);
-    execve(args[0], args.data(), envp.data());
-    static const char msg[] = "execve failed\n";
-    (void)!write(2, msg, sizeof msg - 1);
-    _exit(127);
-  }
-  setpgid(pid, pid);  // also here: no race with the child's own call
-  close(fds[1]);
-  std::string pending;
-  char buf[4096];
-  bool open = true;
-  // waitpid that keeps the child's CPU time (its rusage counts the
-  // descendants it waited for: libFuzzer's fork-mode jobs).
-  auto reap = [&](int* status, int options) {
-    rusage ru{};
-    const pid_t w = wait4(pid, status, options, &ru);
-    if (w == pid)
-      result.cpu_s = static_cast<double>(ru.ru_utime.tv_sec + ru.ru_stime.tv_sec) +
-                     static_cast<double>(ru.ru_utime.tv_usec + ru.ru_stime.tv_usec) / 1e6;
-    return w;
-  };
-  auto kill_group = [&](bool late) {
-    result.killed = late;
-    kill(-pid, SIGTERM);
-    const auto hard = std::chrono::steady_clock::now() + std::chrono::seconds(2);
-    while (std::chrono::steady_clock::now() < hard) {
-      if (reap(nullptr, WNOHANG) == pid) {
-        kill(-pid, SIGKILL);  // any job of the group still alive
-        return true;
-      }
-      usleep(50 * 1000);
-    }
-    kill(-pid, SIGKILL);
-    return false;
-  };
-  bool reaped = false, stopped = false;
-  double cpu_read = 0;
-  auto next_cpu_read = std::chrono::steady_clock::now();
-  auto budget_spent = [&] {
-    if (cpu_limit_s <= 0 || std::chrono::steady_clock::now() < next_cpu_read) return false;
-    next_cpu_read = std::chrono::steady_clock::now() + std::chrono::seconds(1);
-    cpu_read = std::max(cpu_read, process_group_cpu_seconds(pid));
-    return cpu_read >= cpu_limit_s;
-  };
-  while (open) {
-    const auto now = std::chrono::steady_clock::now();
-    const bool late = now >= deadline;
-    const bool spent = !late && budget_spent();
-    if (late || spent || (stop_now && stop_now())) {
-      reaped = kill_group(late);
-      if (!late) reaped = reaped || reap(nullptr, 0) == pid;
-      stopped = !late;
-      result.cpu_spent = spent;
-      break;
-    }
-    const int ms = static_cast<int>(
-        std::min<long long>(1000, std::chrono::duration_cast<std::chrono::milliseconds>(deadline - now).count() + 1));
-    pollfd pfd{fds[0], POLLIN, 0};
-    const int r = poll(&pfd, 1, ms);
-    if (r < 0 && errno == EINTR) continue;
-    if (r <= 0) continue;
-    const ssize_t n = read(fds[0], buf, sizeof buf);
-    if (n <= 0) {
-      open = false;
-      break;
-    }
-    pending.append(buf, static_cast<std::size_t>(n));
-    for (std::size_t nl; (nl = pending.find('\n')) != std::string::npos;) {
-      std::string line = pending.substr(0, nl);
-      pending.erase(0, nl + 1);
-      if (!line.empty() && line.back() == '\r') line.pop_back();
-      on_line(line);
-    }
-  }
-  if (!pending.empty()) on_line(pending);
-  close(fds[0]);
-  int status = 0;
-  if (!reaped) {
-    // The pipe closed: the fuzzer is ending; give it until the deadline.
-    for (;;) {
-      const pid_t w = reap(&status, WNOHANG);
-      if (w == pid) break;
-      if (std::chrono::steady_clock::now() >= deadline) {
-        if (!kill_group(true)) reap(&status, 0);
-        break;
-      }
-      usleep(50 * 1000);
-    }
-  }
-  result.cpu_s = std::max(result.cpu_s, cpu_read);
-  if (result.cpu_spent) {
-    result.exit = 0;  // stopped at its budget: the end asked for, as -max_total_time's
-    return result;
-  }
-  if (reaped || result.killed || stopped) {
-    result.exit = 128 + SIGTERM;
-    return result;
-  }
-  result.exit = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-  return result;
-}
-
-std::string run_capture(const std::string& command) {
-  std::string out;
-  FILE* p = popen(command.c_str(), "r");
-  if (!p) return out;
-  char buf[4096];
-  std::size_t n;
-  while ((n = std::fread(buf, 1, sizeof buf, p)) > 0) out.append(buf, n);
-  pclose(p);
-  return out;
-}
-
-const std::regex& clause_re() {
-  static const std::regex clause(R"(\b[A-Z][A-Z0-9]*(-[A-Z0-9]+)*-[0-9]+\b)");
-  return clause;
-}
-
-// Digits folded to N, except inside clause ids (BONE-FOREST-1), which stay
-// exact: "bones.stateful: BONE-FOREST-1 (MUST, fail): bone 3" becomes
-// "bones.stateful: BONE-FOREST-1 (MUST, fail): bone N".
-std::string fold_digits_keep_clauses(const std::string& s) {
-  static const std::regex digits(R"(\d+)");
-  std::string out;
-  auto from = s.cbegin();
-  for (std::sregex_iterator it(s.begin(), s.end(), clause_re()), end; it != end; ++it) {
-    out += std::regex_replace(std::string(from, (*it)[0].first), digits, "N");
-    out += it->str();
-    from = (*it)[0].second;
-  }
-  return out + std::regex_replace(std::string(from, s.cend()), digits, "N");
-}
-
-// How a crash is signed, from the output of re-running it: `key` groups
-// crashes (digits folded everywhere, clause ids included, so that one bug
-// reached with different ids or counts is one crash); `shown` is what the
-// summary prints, the same text with clause ids exact.
-struct CrashSignature {
-  std::string key, shown;
-};
-
-// The fuzz target's own FINDING line (data in quotes dropped), else the
-// sanitizer's error kind and first frame of ours, else the first UBSan
-// "runtime error", else "unknown".
-CrashSignature crash_signature(const std::string& output) {
-  std::istringstream in(output);
-  std::string line, kind;
-  static const std::regex digits(R"(\d+)");
-  while (std::getline(in, line)) {
-    if (auto at = line.find("vgc-fuzz: FINDING in "); at != std::string::npos) {
-      std::string s = line.substr(at + 10);
-      s = s.substr(0, s.find('"'));
-      // A finding named by its clause is grouped by the target, the clause
-      // and its status ("CLAUSE (LEVEL, status)"), not by the message: one
-      // bug shown with other values or commands is one finding.
-      static const std::regex named(R"(^(.*?: [A-Z][A-Z0-9]*(?:-[A-Z0-9]+)*-[0-9]+ \([A-Z-]+, [a-z-]+\)): )");
-      std::smatch m;
-      if (std::regex_search(s, m, named)) return {std::regex_replace(m[1].str(), digits, "N"), fold_digits_keep_clauses(s)};
-      return {std::regex_replace(s, digits, "N"), fold_digits_keep_clauses(s)};
-    }
-    if (auto at = line.find("runtime error: "); at != std::string::npos) {
-      const std::string u =
-          "ubsan: " + std::regex_replace(line.substr(0, at), std::regex(R"(^.*/)"), "") + line.substr(at + 15);
-      return {u, u};
-    }
-    if (auto at = line.find("ERROR: AddressSanitizer: "); at != std::string::npos && kind.empty()) {
-      kind = line.substr(at + 25);
-      kind = kind.substr(0, kind.find(' '));
-    }
-    if (auto at = line.find("ERROR: libFuzzer: "); at != std::string::npos && kind.empty())
-      kind = line.substr(at + 18);
-    if (!kind.empty()) {
-      std::smatch m;
-      static const std::regex frame(R"(#\d+ 0x[0-9a-f]+ in (\S+))");
-      if (std::regex_search(line, m, frame)) {
-        const std::string f = m[1];
-        if (f.find("__sanitizer") == std::string::npos && f.find("fuzzer::") == std::string::npos &&
-            f.find("__asan") == std::string::npos && f.find("__ubsan") == std::string::npos &&
-            f != "abort" && f != "raise" && f != "__GI_abort" && f != "__GI_raise" &&
-            f.find("pthread_kill") == std::string::npos && f.find("libc.so") == std::string::npos)
-          return {kind + " in " + f, kind + " in " + f};
-      }
-    }
-  }
-  const std::string k = kind.empty() ? "unknown" : kind;
-  return {k, k};
 }
 
 std::string normalize_target(std::string t) {
@@ -381,21 +135,6 @@ std::optional<double> seconds_since(const fs::path& f, fs::file_time_type start)
   if (ec) return std::nullopt;
   return std::max(0.0, std::chrono::duration<double>(t - start).count());
 }
-
-// Which implementation a campaign fuzzes (--impl) and the environment
-// variables that name it to the target: VGC_FUZZ_PLUGIN for a plugin in
-// process; VGC_FUZZ_IMPL (and VGC_FUZZ_TIMEOUT, VGC_FUZZ_VERSE_BONE_FORM,
-// VGC_FUZZ_RESTART) for a live one (fuzz/live_implementation.h).
-struct ImplementationChoice {
-  std::string plugin;             // absolute path, or ""
-  std::optional<Route> live;      // exec:CMD or verse:..., or none
-  std::vector<std::string> env;   // NAME=value
-  std::string spec() const {
-    return live ? live->spec : plugin.empty() ? "reference" : route_spec(RouteKind::Plugin, plugin);
-  }
-  // Whether the live implementation is of `kind`.
-  bool live_on(RouteKind kind) const { return live && live->kind == kind; }
-};
 
 bool is_implementation_variable(const std::string& v) {
   for (const char* n : {"VGC_FUZZ_PLUGIN=", "VGC_FUZZ_IMPL=", "VGC_FUZZ_TIMEOUT=", "VGC_FUZZ_VERSE_BONE_FORM=",
@@ -467,13 +206,6 @@ bool choose_implementation(const CampaignOptions& o, const std::string& name, bo
   return true;
 }
 
-// The status a finding line names ("CLAUSE (LEVEL, status): ..."), or "".
-std::string status_of_finding(const std::string& line) {
-  static const std::regex form(R"(-[0-9]+ \([A-Z-]+, ([a-z-]+)\): )");
-  std::smatch m;
-  return std::regex_search(line, m, form) ? m[1].str() : std::string{};
-}
-
 // ` --timeout T --verse-bone-form F` for `vgc replay` of a live
 // implementation's counterexample, as the campaign ran it.
 std::string replay_options(const CampaignOptions& o) {
@@ -487,10 +219,10 @@ std::string replay_options(const CampaignOptions& o) {
 // while libFuzzer stopped at a finding and a second or more of --time
 // is left, it runs again on the same corpus with the next seed. Returns
 // the last round's result with the CPU time of all of them.
-RunResult run_more_rounds(std::vector<std::string> argv, const std::vector<std::string>& env_add,
+ChildRun run_more_rounds(std::vector<std::string> argv, const std::vector<std::string>& env_add,
                           std::chrono::steady_clock::time_point deadline,
                           const std::function<void(const std::string&)>& on_line, const CampaignOptions& o,
-                          std::chrono::steady_clock::time_point t0, RunResult rr, Progress* p,
+                          std::chrono::steady_clock::time_point t0, ChildRun rr, Progress* p,
                           long long* execs_before, std::ofstream* log) {
   using clock = std::chrono::steady_clock;
   for (unsigned round = 1; !rr.killed && rr.exit != 0; ++round) {
@@ -511,7 +243,9 @@ RunResult run_more_rounds(std::vector<std::string> argv, const std::vector<std::
   return rr;
 }
 
-}  // namespace
+}  // namespace campaign_steps
+
+using namespace campaign_steps;
 
 std::string stream_to_text(const std::string& bytes) {
   const auto* data = reinterpret_cast<const std::uint8_t*>(bytes.data());
@@ -534,48 +268,8 @@ std::string stream_to_text(const std::string& bytes) {
 std::string campaign_source_dir(const CampaignOptions& o) { return source_dir(o).string(); }
 std::string campaign_fuzz_build_dir(const CampaignOptions& o) { return fuzz_build_dir(o).string(); }
 
-std::string clause_of_finding(const std::string& line) {
-  // "CLAUSE (LEVEL, status): " — the form of clause_finding.h.
-  static const std::regex form(R"((?:^|: )([A-Z][A-Z0-9]*(?:-[A-Z0-9]+)*-[0-9]+) \([A-Z-]+, [a-z]+\): )");
-  std::smatch m;
-  if (!std::regex_search(line, m, form)) return {};
-  return find_clause(m[1].str()) ? m[1].str() : std::string{};
-}
+namespace campaign_steps {
 
-namespace {
-
-using clock = std::chrono::steady_clock;
-
-// What the steps of one campaign share (run_campaign runs them in order).
-struct CampaignRun {
-  explicit CampaignRun(const CampaignOptions& opts) : o(opts) {}
-  const CampaignOptions& o;
-  std::string name;  // the target without fuzz_
-  bool property = false, mesh = false;
-  Baseline baseline;
-  fs::path src, binary, dir, corpus, crashes, cex;
-  ImplementationChoice impl;             // --impl: a plugin, a live implementation or the reference
-  std::string plugin;                    // absolute path, "" for the reference or a live implementation
-  std::vector<std::string> env_add;      // what the target runs with beyond this process's environment
-  std::vector<std::string> run_env;      // VGC_* of this process, without the plugin (for vgc replay)
-  std::vector<std::string> target_env;   // run_env and the plugin (for the target)
-  CampaignSummary s;
-  clock::time_point t0;
-  fs::file_time_type sys0;
-  SignBudget sign;                       // the budget of signing, minimizing and replaying crashes
-  Progress progress;
-  std::vector<CampaignSample> samples;   // for report.html's plots
-  RunResult fuzzed;
-  long long execs_before = 0;            // live rounds: executions of the rounds before the last
-};
-
-// The crash inputs of one signature.
-struct CrashGroup {
-  std::map<fs::path, std::string> shown;    // per input: its signature with exact clause ids
-  std::vector<fs::path> files;              // smallest first
-  std::map<fs::path, std::string> printed;  // the target's own counterexample block, per input
-  std::map<fs::path, std::optional<double>> first_seen;
-};
 
 // The target's own counterexample block ("----8<---- counterexample.vgc"
 // or, for the mesh targets, "----8<---- mesh.txt") in its output.
@@ -820,7 +514,7 @@ void run_libfuzzer(CampaignRun* r) {
   r->fuzzed = run_streaming(argv, env, deadline, on_line, stop_now, o.cpu_time_s);
   if (live_rounds(*r))
     r->fuzzed = run_more_rounds(argv, env, deadline, on_line, o, t0, r->fuzzed, &p, &r->execs_before, &log);
-  const RunResult& rr = r->fuzzed;
+  const ChildRun& rr = r->fuzzed;
   if (rr.killed) log << "vgc fuzz: still running " << o.time_s + grace << " s after the start: process group killed\n";
   log.close();
   if (o.progress) o.progress("");
@@ -829,266 +523,6 @@ void run_libfuzzer(CampaignRun* r) {
   s.cpu_s = rr.cpu_s;
   s.cpu_budget_spent = rr.cpu_spent;
   if (rr.killed) fmt::print(stderr, "vgc fuzz: libFuzzer overran --time {} s: killed\n", o.time_s);
-}
-
-// Crashes: re-runs each saved input alone (smallest first, within a budget
-// of its own: at most 200 inputs and max(10 s, --time / 10), replays and
-// minimization of the counterexamples included), signs it, groups the
-// inputs by signature (key: digits folded).
-std::map<std::string, CrashGroup> sign_crash_inputs(CampaignRun* r) {
-  CampaignSummary& s = r->s;
-  std::map<std::string, CrashGroup> unique;
-  std::vector<fs::path> saved;
-  for (const auto& e : fs::directory_iterator(r->crashes))
-    if (e.is_regular_file()) saved.push_back(e.path());
-  std::sort(saved.begin(), saved.end(), [](const fs::path& a, const fs::path& b) {
-    const auto sa = fs::file_size(a), sb = fs::file_size(b);
-    return sa != sb ? sa < sb : a < b;
-  });
-  s.crash_inputs = saved.size();
-  for (const fs::path& f : saved)
-    if (auto t = seconds_since(f, r->sys0); t && (!s.time_to_first_finding_s || *t < *s.time_to_first_finding_s))
-      s.time_to_first_finding_s = t;
-  r->sign = SignBudget::starting_now(r->o.time_s);
-  // A live implementation costs a process or a login per input re-run:
-  // its inputs get half the budget, so that the unique findings are still
-  // minimized and replayed on a fresh instance in the other half.
-  const bool live = bool(r->impl.live);
-  for (const fs::path& f : saved) {
-    if (s.crash_inputs_signed >= 200) break;
-    if (live ? r->sign.half_spent() : r->sign.spent()) {
-      s.signing_stopped = r->sign.wall_guard_reached() ? "the wall guard" : "the CPU budget";
-      break;
-    }
-    ++s.crash_inputs_signed;
-    const std::string output = rerun_input(*r, f);
-    CrashSignature sig = crash_signature(output);
-    // A live implementation's finding that the input alone does not show
-    // again (it depended on the instance's history or on timing; the
-    // target's own confirmation says which in fuzzer.log): said so, not
-    // "unknown".
-    if (r->impl.live && sig.key == "unknown" && output.find("FINDING") == std::string::npos)
-      sig = {"not reproduced", "not reproduced: the input alone, re-run on a fresh instance, showed nothing (the "
-                               "finding depended on the implementation's history or timing; its FINDING line is in "
-                               "fuzzer.log)"};
-    CrashGroup& g = unique[sig.key];
-    g.shown[f] = sig.shown;
-    g.files.push_back(f);
-    g.first_seen[f] = seconds_since(f, r->sys0);
-    if (auto block = printed_block(*r, output)) g.printed[f] = *block;
-  }
-  return unique;
-}
-
-// The finding's summary fields from its group: signature, other forms,
-// inputs, first seen, clause, level, baseline.
-CampaignCrash describe_crash(const CampaignRun& r, const std::string& key, CrashGroup& g) {
-  CampaignCrash c;
-  const fs::path& rep = g.files.front();  // smallest (saved was sorted by size)
-  c.dedup_key = key;
-  c.signature = g.shown[rep];
-  for (const auto& [file, text] : g.shown)
-    if (text != c.signature && std::find(c.also.begin(), c.also.end(), text) == c.also.end()) c.also.push_back(text);
-  c.inputs = g.files.size();
-  c.input = rep.string();
-  for (const fs::path& f : g.files)
-    if (auto t = g.first_seen[f]; t && (!c.first_seen_s || *t < *c.first_seen_s)) c.first_seen_s = t;
-  c.clause = clause_of_finding(c.signature);
-  if (!c.clause.empty()) {
-    if (const Clause* cl = find_clause(c.clause)) c.level = clause_level_name(cl->level);
-    c.in_baseline = r.baseline.reasons.count(c.clause) > 0;
-  }
-  c.replay_fuzzer = env_prefix(r.target_env) + shell_quote(r.binary.string()) + " " + shell_quote(rep.string());
-  return c;
-}
-
-// Whether the finding's counterexample is a command program that
-// minimize_finding shrinks (a clause finding of a command-stream target);
-// every other finding is raw bytes, minimized by libFuzzer.
-bool shrinks_as_program(const CampaignRun& r, const CampaignCrash& c) {
-  const bool command_stream = r.name != "text" && r.name != "verse_packet" && !r.mesh;
-  return command_stream && !c.clause.empty();
-}
-
-// A raw-bytes finding's input minimized with libFuzzer's crash-minimizing
-// steps (minimize_input.h) into minimized/, kept only when a fresh run signs
-// it with the group's key. The minimization is bounded by steps, mutations
-// and CPU seconds, seeded by the campaign's seed, so the same finding
-// minimizes to the same bytes on an idle or a loaded machine; it is not cut
-// by the signing budget (a wall-clock share of which used to leave it
-// larger under load). Its wall guard (10 min) only stops a stuck step. On
-// success the group's smallest input becomes the minimized one (with the
-// target's printed block of it), and *bytes its contents.
-void minimize_raw_input(CampaignRun* r, const std::string& key, CrashGroup& g, CampaignCrash* c,
-                        std::string* bytes) {
-  std::error_code ec;
-  fs::create_directories(r->dir / "minimized", ec);
-  const fs::path rep = c->input;
-  const fs::path out = r->dir / "minimized" / rep.filename();
-  std::string output;
-  MinimizeLimits limits;
-  limits.seed = r->o.seed;
-  limits.cpu_seconds = 60;
-  const MinimizedInput m = minimize_input(
-      env_prefix(r->target_env) + shell_quote(r->binary.string()), rep.string(), out.string(),
-      [&](const std::string& candidate) {
-        output = rerun_input(*r, candidate);
-        return crash_signature(output).key == key;
-      },
-      limits, clock::now() + std::chrono::minutes(10));
-  c->minimize_note = m.note;
-  if (!m.kept) return;
-  c->minimized_input = m.file;
-  c->input_bytes = m.before;
-  c->minimized_bytes = m.after;
-  read_file(m.file, bytes);
-  if (auto block = printed_block(*r, output)) g.printed[m.file] = *block;
-  g.files.front() = m.file;
-  c->replay_fuzzer = env_prefix(r->target_env) + shell_quote(r->binary.string()) + " " + shell_quote(m.file);
-}
-
-// The counterexample of a finding of text, verse_packet or a mesh target:
-// the input itself (text), its bytes in hex (a datagram) or the mesh the
-// target printed; each replays through the target.
-void write_input_counterexample(const CampaignRun& r, const CrashGroup& g, const std::string& bytes,
-                                CampaignCrash* c) {
-  const fs::path cex_file = c->counterexample;
-  const std::string& target = r.s.target;
-  auto printed = g.printed.find(g.files.front());
-  c->replay = c->replay_fuzzer;
-  if (r.name == "text") {
-    write_file(cex_file, bytes);  // the input is text already
-  } else if (r.name == "verse_packet") {  // one datagram: no command file; the input replays
-    std::string text = "# vgc fuzz " + target + " counterexample: " + c->signature + "\n# from " +
-                       g.files.front().string() + "\n# replay: " + c->replay_fuzzer + "\n# the datagram, " +
-                       std::to_string(bytes.size()) + " bytes, in hex:\n";
-    static const char* hex = "0123456789abcdef";
-    for (std::size_t i = 0; i < bytes.size(); ++i) {
-      const auto b = static_cast<unsigned char>(bytes[i]);
-      text += hex[b >> 4];
-      text += hex[b & 15];
-      text += (i % 16 == 15 || i + 1 == bytes.size()) ? '\n' : ' ';
-    }
-    if (printed != g.printed.end()) text += printed->second;
-    write_file(cex_file, text);
-  } else {  // a mesh: no command file (a mesh the node may not hold); the input replays
-    std::string text = "# vgc fuzz " + target + " counterexample: " + c->signature + "\n# from " +
-                       g.files.front().string() + "\n# replay: " + c->replay_fuzzer + "\n";
-    text += printed != g.printed.end() ? printed->second : "# the target printed no mesh (a sanitizer finding)\n";
-    write_file(cex_file, text);
-  }
-}
-
-// The counterexample of a finding of a command-stream target (stream,
-// differential, property_*): a command file. A finding named by clause
-// replays as a certify counterexample, against the same implementation,
-// with the same environment, minimized as certify shrinks. So does a crash
-// of a plugin in fuzz_differential (in process it takes the fuzzer down
-// unnamed): `vgc replay` runs the plugin isolated and names the clause, as
-// certify would.
-void write_program_counterexample(const CampaignRun& r, const CrashGroup& g, const std::string& bytes,
-                                  CampaignCrash* c) {
-  const fs::path cex_file = c->counterexample;
-  const std::string vgc = r.o.vgc_binary.empty() ? self_exe().string() : r.o.vgc_binary;
-  const std::string impl_spec = r.impl.spec();
-  const CampaignOptions& o = r.o;
-  const bool plugin_crash = c->clause.empty() && r.name == "differential" && !r.plugin.empty();
-  const bool replayable = !c->clause.empty() || plugin_crash;
-  const auto replay_line = [&] {
-    return env_prefix(r.run_env) + program_command() + " replay " + shell_quote(cex_file.string()) + " --impl " +
-           shell_quote(impl_spec) + replay_options(o);
-  };
-  const auto apply_line = [&] { return env_prefix(r.run_env) + program_command() + " apply " + shell_quote(cex_file.string()); };
-  c->replay = replayable ? replay_line() : apply_line();
-  std::string body;
-  auto printed = g.printed.find(g.files.front());
-  if (printed != g.printed.end()) body = printed->second;
-  else if (r.property) body = "# the target printed no command file (a sanitizer finding): replay the input\n";
-  else body = stream_to_text(bytes);
-  const std::string status = status_of_finding(c->signature);
-  const bool call_failure = status == "crash" || status == "timeout";
-  // A wire host that crashed or hung cannot be replayed on a fresh
-  // instance without the user's restart command.
-  const bool wire = r.impl.live && !r.impl.live->traits().restartable;
-  const bool confirmable = !call_failure || !wire || !o.restart.empty();
-  if (!c->clause.empty() && !r.sign.spent() && !(call_failure && wire)) {
-    // Minimized as certify shrinks, before it is written (minimize_finding.h);
-    // a crash stays a crash (an exec: program crashed is restarted by the replay).
-    OpenOptions open;
-    if (o.call_timeout_s > 0) open.timeout_seconds = o.call_timeout_s;
-    if (!o.verse_bone_form.empty()) open.verse_bone_form = o.verse_bone_form;
-    const Minimized min = minimize_finding(body, c->clause, impl_spec, r.sign.wall_guard, 200, status, open);
-    if (min.reproduced && min.after < min.before)
-      body = fmt::format("# minimized from {} to {} commands ({} replays); the input replays the original\n",
-                         min.before, min.after, min.replays) + min.text;
-  }
-  if (call_failure && !confirmable)
-    c->confirmation = "not confirmed: the host is not restarted without --restart CMD, so the counterexample "
-                      "was not replayed on a fresh instance";
-  auto write_cex = [&] {
-    write_file(cex_file, "# vgc fuzz " + r.s.target + " counterexample: " + c->signature + "\n# from " +
-                             g.files.front().string() + "\n# replay: " + c->replay + "\n" + body);
-  };
-  write_cex();
-  if (replayable && confirmable && fs::exists(vgc) && !r.sign.spent()) {
-    // Which clause does it replay to? (`vgc replay` exits 1 naming it.)
-    // For a crash or hang of a live implementation this is the
-    // confirmation on a fresh instance: `vgc replay` starts a new exec:
-    // process; a wire host is restarted by the user's command first.
-    std::string restarted;
-    if (call_failure && wire && !run_restart_command(o.restart, 60, &restarted))
-      c->confirmation = "not confirmed: " + restarted;
-    const std::string out = run_capture("timeout 60 env " + env_prefix(r.run_env) + shell_quote(vgc) + " replay " +
-                                        shell_quote(cex_file.string()) + " --impl " + shell_quote(impl_spec) +
-                                        replay_options(o) + " 2>&1; echo \"vgc-replay-exit=$?\"");
-    static const std::regex named(R"(\b([A-Z][A-Z0-9]*(?:-[A-Z0-9]+)*-[0-9]+)\b)");
-    std::string found;
-    if (out.find("vgc-replay-exit=1") != std::string::npos)
-      for (std::sregex_iterator it(out.begin(), out.end(), named), end; it != end; ++it)
-        if (find_clause((*it)[1].str())) {
-          if (found.empty() || (*it)[1].str() == c->clause) found = (*it)[1].str();
-          if (found == c->clause) break;
-        }
-    c->replayed_clause = found;
-    if (call_failure && c->confirmation.empty())
-      c->confirmation = found == c->clause && out.find(status + " ") != std::string::npos
-                            ? "confirmed: `vgc replay` on a fresh instance (" +
-                                  std::string(wire ? "restarted by --restart" : "a new process") + ") shows the " +
-                                  status + " again"
-                            : "not confirmed: `vgc replay` on a fresh instance did not show the " + status +
-                                  " (depends on the instance's history, or flaky)";
-    if (plugin_crash) {
-      if (!found.empty()) {
-        c->clause = found;  // certify's name for the crash
-        if (const Clause* cl = find_clause(c->clause)) c->level = clause_level_name(cl->level);
-        c->in_baseline = r.baseline.reasons.count(c->clause) > 0;
-      } else {
-        c->replay = apply_line();
-        write_cex();
-      }
-    }
-  } else if (plugin_crash) {
-    c->replay = apply_line();
-    write_cex();
-  }
-}
-
-// One finding per signature: described, its input minimized (raw bytes)
-// or its program shrunk (clause findings), its counterexample written.
-void write_findings(CampaignRun* r, std::map<std::string, CrashGroup>& unique) {
-  std::size_t k = 0;
-  for (auto& [key, g] : unique) {
-    CampaignCrash c = describe_crash(*r, key, g);
-    std::string bytes;
-    read_file(c.input, &bytes);
-    if (!shrinks_as_program(*r, c)) minimize_raw_input(r, key, g, &c, &bytes);
-    ++k;
-    const char* ext = r->name == "text" ? "txt" : r->mesh ? "mesh.txt" : r->name == "verse_packet" ? "packet.txt" : "vgc";
-    c.counterexample = (r->cex / fmt::format("crash-{}{}.{}", k, c.clause.empty() ? "" : "-" + c.clause, ext)).string();
-    if (r->name == "text" || r->name == "verse_packet" || r->mesh) write_input_counterexample(*r, g, bytes, &c);
-    else write_program_counterexample(*r, g, bytes, &c);
-    r->s.crashes.push_back(std::move(c));
-  }
 }
 
 // The findings grouped by clause ("" last), and the count of new ones.
@@ -1236,7 +670,7 @@ int write_campaign_reports(CampaignRun* r) {
   return 0;
 }
 
-}  // namespace
+}  // namespace campaign_steps
 
 int run_campaign(const CampaignOptions& o, CampaignSummary* out) {
   CampaignRun r(o);
@@ -1257,169 +691,6 @@ int run_campaign(const CampaignOptions& o, CampaignSummary* out) {
     return 2;
   }
   return r.s.new_crashes == 0 ? 0 : 1;
-}
-
-std::string summary_json(const CampaignSummary& s) {
-  using nlohmann::json;
-  auto opt = [](const std::optional<double>& v) { return v ? json(*v) : json(nullptr); };
-  json crashes = json::array();
-  for (const CampaignCrash& c : s.crashes)
-    crashes.push_back({{"signature", c.signature},
-                       {"also", c.also},
-                       {"dedup_key", c.dedup_key},
-                       {"clause", c.clause},
-                       {"level", c.level},
-                       {"in_baseline", c.in_baseline},
-                       {"inputs", c.inputs},
-                       {"input", c.input},
-                       {"counterexample", c.counterexample},
-                       {"replay", c.replay},
-                       {"replay_fuzzer", c.replay_fuzzer},
-                       {"replayed_clause", c.replayed_clause ? json(*c.replayed_clause) : json(nullptr)},
-                       {"confirmation", c.confirmation},
-                       {"first_seen_s", opt(c.first_seen_s)},
-                       {"minimized", c.minimized_input.empty()
-                                         ? json(nullptr)
-                                         : json{{"input", c.minimized_input},
-                                                {"from_bytes", c.input_bytes},
-                                                {"to_bytes", c.minimized_bytes},
-                                                {"by", "libFuzzer -minimize_crash_internal_step"},
-                                                {"stopped", c.minimize_note}}},
-                       {"minimize_note", c.minimize_note}});
-  json clauses = json::array();
-  for (const CampaignClause& g : s.clauses)
-    clauses.push_back({{"clause", g.clause},
-                       {"level", g.level},
-                       {"in_baseline", g.in_baseline},
-                       {"baseline_reason", g.baseline_reason},
-                       {"crashes", g.crashes},
-                       {"inputs", g.inputs},
-                       {"first_seen_s", opt(g.first_seen_s)}});
-  json j = {{"target", s.target},
-            {"run", s.run},
-            {"run_dir", s.run_dir},
-            {"binary", s.binary},
-            {"implementation", s.implementation},
-            {"environment", s.environment},
-            {"seed", s.seed},
-            {"jobs", s.jobs},
-            {"time_s", s.time_s},
-            {"wall_s", s.wall_s},
-            {"cpu_s", s.cpu_s},
-            {"killed_at_deadline", s.killed_at_deadline},
-            {"cpu_budget_spent", s.cpu_budget_spent},
-            {"empty_corpus", s.empty_corpus},
-            {"stop_at_first", s.stop_at_first},
-            {"baseline", s.baseline},
-            {"executions", s.executions},
-            {"exec_per_s_last", s.exec_per_s_last},
-            {"exec_per_s_mean", s.exec_per_s_mean},
-            {"coverage", {{"cov", s.cov}, {"ft", s.ft}}},
-            {"implementation_coverage",
-             s.impl_coverage_mode.empty()
-                 ? json(nullptr)
-                 : json{{"mode", s.impl_coverage_mode},
-                        {"seen", s.impl_coverage_seen},
-                        {"counters", s.impl_counters},
-                        {"counters_reached", s.impl_counters_reached},
-                        {"function_entries", s.impl_function_entries},
-                        {"functions_entered", s.impl_functions_entered},
-                        {"counters_dropped", s.impl_counters_dropped},
-                        {"modules", s.impl_modules},
-                        {"over_time", s.impl_timeline},
-                        {"coverage_report", s.coverage_report.empty() ? json(nullptr) : json(s.coverage_report)},
-                        {"coverage_report_note", s.coverage_report_note},
-                        {"functions_never_entered_count", s.functions_never_entered_count},
-                        {"functions_never_entered", s.functions_never_entered}}},
-            {"corpus", {{"files", s.corpus_files}, {"bytes", s.corpus_bytes}, {"seed_files", s.seed_files}}},
-            {"crash_inputs", s.crash_inputs},
-            {"crash_inputs_signed", s.crash_inputs_signed},
-            {"signing_stopped_by", s.signing_stopped},
-            {"time_to_first_finding_s", opt(s.time_to_first_finding_s)},
-            {"new_crashes", s.new_crashes},
-            {"crashes", crashes},
-            {"clauses", clauses},
-            {"libfuzzer_exit", s.libfuzzer_exit},
-            {"command", s.command}};
-  // Invalid UTF-8 from an implementation (a crash signature, a message)
-  // becomes U+FFFD instead of an exception that loses the summary.
-  return j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
-}
-
-std::string implementation_coverage_line(const CampaignSummary& s) {
-  if (s.impl_coverage_mode == "off") return "off (--impl-coverage off)";
-  if (s.impl_coverage_mode == "wire")
-    return "not seen: a host on the Verse wire is not yet given the shared memory (exec: only); libFuzzer was "
-           "guided by vgc's own code only";
-  if (!s.impl_coverage_seen)
-    return "not seen: the implementation was not built with -fsanitize-coverage=inline-8bit-counters and "
-           "-lvgc_coverage (docs/fuzzing.md \"Coverage of the implementation\"); libFuzzer was guided by vgc's "
-           "own code only";
-  std::string line = fmt::format("{} of {} counters reached ({:.1f} %)", s.impl_counters_reached, s.impl_counters,
-                                 s.impl_counters ? 100.0 * s.impl_counters_reached / s.impl_counters : 0.0);
-  if (s.impl_function_entries)
-    line += fmt::format(", {} of {} functions entered", s.impl_functions_entered, s.impl_function_entries);
-  if (s.impl_counters_dropped) line += fmt::format(", {} counters not seen (past the region's size)", s.impl_counters_dropped);
-  line += s.impl_coverage_mode == "guide"          ? "; guiding libFuzzer by edges"
-          : s.impl_coverage_mode == "guide-counts" ? "; guiding libFuzzer by edges and hit counts"
-                                                   : "; counted only (--impl-coverage observe)";
-  return line;
-}
-
-std::string summary_markdown(const CampaignSummary& s) {
-  auto secs = [](const std::optional<double>& v) { return v ? fmt::format("{:.1f} s", *v) : std::string("-"); };
-  std::string md = fmt::format(
-      "# vgc fuzz {} — {}\n\n"
-      "| | |\n|---|---|\n| implementation | {} |\n| seed, jobs, time | {}, {}, {} s (wall {:.0f} s{}) |\n"
-      "| CPU | {:.0f} s |\n"
-      "| executions | {} |\n| exec/s | {:.0f} mean, {} last reported |\n| coverage | cov {}, ft {} |\n"
-      "| corpus | {} files, {} bytes ({} seeds{}) |\n| crash inputs | {} ({} re-run and signed{}; {} unique, {} new) |\n"
-      "| time to first finding | {} |\n",
-      s.target, s.run, s.implementation, s.seed, s.jobs, s.time_s, s.wall_s,
-      s.killed_at_deadline ? "; libFuzzer overran and was killed"
-      : s.cpu_budget_spent ? "; stopped at its CPU budget"
-                           : "",
-      s.cpu_s, s.executions, s.exec_per_s_mean,
-      s.exec_per_s_last, s.cov, s.ft, s.corpus_files, s.corpus_bytes, s.seed_files,
-      s.empty_corpus ? ", started empty" : "", s.crash_inputs, s.crash_inputs_signed,
-      s.signing_stopped.empty() ? "" : ", stopped by " + s.signing_stopped, s.crashes.size(),
-      s.new_crashes, secs(s.time_to_first_finding_s));
-  if (!s.impl_coverage_mode.empty()) md += "| implementation coverage | " + implementation_coverage_line(s) + " |\n";
-  if (!s.coverage_report.empty())
-    md += fmt::format("| functions never entered | {} (every function, named: `{}`) |\n",
-                      s.functions_never_entered_count, s.coverage_report);
-  else if (!s.coverage_report_note.empty())
-    md += "| functions never entered | " + s.coverage_report_note + " |\n";
-  if (!s.baseline.empty()) md += fmt::format("| baseline | {} |\n", s.baseline);
-  md += fmt::format("\nCommand: `{}`\n\n", s.command);
-  if (s.crashes.empty()) return escape_unprintable(md);
-  md += "## Findings by clause\n\n";
-  for (const CampaignClause& g : s.clauses) {
-    md += fmt::format("### {}{}{} — {} crash(es), {} input(s), first after {}\n\n",
-                      g.clause.empty() ? "(no clause: sanitizer or oracle finding)" : g.clause,
-                      g.level.empty() ? "" : " (" + g.level + ")",
-                      g.in_baseline ? " [baseline: " + g.baseline_reason + "]" : "", g.crashes.size(), g.inputs,
-                      secs(g.first_seen_s));
-    for (std::size_t i : g.crashes) {
-      const CampaignCrash& c = s.crashes[i];
-      md += fmt::format("- **{}** ({} inputs)\n", c.signature, c.inputs);
-      for (const auto& a : c.also) md += fmt::format("  - also: {}\n", a);
-      md += fmt::format("  - counterexample: `{}`\n  - replay: `{}`\n  - replay the input: `{}`\n", c.counterexample,
-                        c.replay, c.replay_fuzzer);
-      if (!c.minimized_input.empty())
-        md += fmt::format("  - input minimized from {} to {} bytes (libFuzzer's minimizing steps; {}): `{}`\n",
-                          c.input_bytes, c.minimized_bytes, c.minimize_note, c.minimized_input);
-      else if (!c.minimize_note.empty())
-        md += fmt::format("  - input not minimized: {}\n", c.minimize_note);
-      if (!c.confirmation.empty()) md += fmt::format("  - {}\n", c.confirmation);
-      if (c.replayed_clause)
-        md += fmt::format("  - replayed: {}\n", c.replayed_clause->empty() ? "no clause named (did not reproduce)"
-                                                 : *c.replayed_clause == c.clause ? "same clause"
-                                                                                  : "names " + *c.replayed_clause);
-    }
-    md += "\n";
-  }
-  return escape_unprintable(md);  // signatures and messages are the implementation's bytes
 }
 
 // The run directories' time stamp (UTC, to the second).

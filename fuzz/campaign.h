@@ -30,6 +30,7 @@
 #include <utility>
 #include <vector>
 
+#include "crash_signature.h"  // clause_of_finding
 #include "route.h"
 
 namespace vgc::fuzz {
@@ -193,8 +194,5 @@ std::string summary_markdown(const CampaignSummary& s);
 // commands that decode, then a comment naming the bytes that do not.
 std::string stream_to_text(const std::string& bytes);
 
-// The clause id a FINDING line names ("fuzz_x: [property: ]CLAUSE (LEVEL,
-// status): ..."), if it is one of the catalog; "" otherwise.
-std::string clause_of_finding(const std::string& finding_line);
 
 }  // namespace vgc::fuzz
