@@ -2,7 +2,7 @@
 // re-running its input, so that one bug is one finding.
 //
 // Spec: docs/fuzzing.md "Running a campaign" (findings deduplicated by
-// signature, named by clause); the FINDING line of fuzz/clause_finding.h
+// signature, named by clause); the FINDING line of fuzz/targets/clause_finding.h
 // ("CLAUSE (LEVEL, status): ..."); clause ids of the catalog
 // (conformance/clause.h).
 //

@@ -35,7 +35,7 @@ struct Progress {
 // Which implementation a campaign fuzzes (--impl) and the environment
 // variables that name it to the target: VGC_FUZZ_PLUGIN for a plugin in
 // process; VGC_FUZZ_IMPL (and VGC_FUZZ_TIMEOUT, VGC_FUZZ_VERSE_BONE_FORM,
-// VGC_FUZZ_RESTART) for a live one (fuzz/live_implementation.h).
+// VGC_FUZZ_RESTART) for a live one (fuzz/targets/live_implementation.h).
 struct ImplementationChoice {
   std::string plugin;             // absolute path, or ""
   std::optional<Route> live;      // exec:CMD or verse:..., or none
