@@ -1,5 +1,5 @@
 // cmd_fuzz.cpp — `vgc fuzz`: the options of a libFuzzer campaign on one fuzz
-// target (run and summarized by fuzz/campaign.h), and conversions between
+// target (run and summarized by fuzz/campaign/campaign.h), and conversions between
 // binary streams and command files.
 //
 //   vgc fuzz TARGET [--time S] [--jobs N] [--impl plugin:PATH] [--seed N]
@@ -11,12 +11,12 @@
 //                                      adapters certify uses
 //   vgc fuzz wire --impl verse:HOST[:PORT] [--time S] [--seed N] [--restart CMD]
 //                   [--max-inputs N] [--stop-at-first]
-//                                      hostile wire traffic (fuzz/wire_fuzz.h)
+//                                      hostile wire traffic (fuzz/wire/wire_fuzz.h)
 //   vgc fuzz wire --write-seeds DIR [--seed N] [--max-inputs N]
 //                                      its inputs as fuzz_verse_packet seeds
 //   vgc fuzz --all [--time S] [--target-time NAME=S]... [--jobs N] [--seed N]
 //                  [--targets A,B] [--work-corpus DIR]
-//                                      a soak of every target (fuzz/soak.h)
+//                                      a soak of every target (fuzz/campaign/soak.h)
 //   vgc fuzz --to-text STREAM          binary stream -> command file (stdout)
 //   vgc fuzz --to-binary FILE -o OUT   command file -> binary stream
 //

@@ -44,7 +44,7 @@ struct Options {
   std::string file;
   ImplOptions impl;  // --impl and its family (open_impl.h)
   bool strict = false;  // as certify --strict: IMPLEMENTATION-DEFINED readings gate
-  bool wire = false;    // the file is a `vgc fuzz wire` transcript (fuzz/wire_fuzz.h)
+  bool wire = false;    // the file is a `vgc fuzz wire` transcript (fuzz/wire/wire_fuzz.h)
 };
 
 int run(const Options& o) {

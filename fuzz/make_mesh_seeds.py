@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 # make_mesh_seeds.py — writes the hand-made seeds of the mesh fuzz targets
 # (corpora/fuzz/fuzz_mesh_manifold/ and fuzz_mesh_subdivision/) in the byte
-# form of fuzz/mesh_bytes.h. Run from the repository root:
+# form of fuzz/targets/mesh_bytes.h. Run from the repository root:
 #   python3 fuzz/make_mesh_seeds.py
 # tests/fuzz (mesh_bytes_test.cpp) checks that seed-cube.bin decodes to the
 # spec's cube as the reference node extracts it (corpora/examples/cube.vgc).

@@ -12,7 +12,7 @@
 #
 # --target mesh_subdivision times the mesh subdivision target instead, on
 # the seeded faults of the reference's subdivision (VGC_FUZZ_MESH_FAULT,
-# fuzz/fuzz_mesh_subdivision.cpp: every one by default); its findings are
+# fuzz/targets/fuzz_mesh_subdivision.cpp: every one by default); its findings are
 # disagreements with OpenSubdiv, named by scheme, not by clause.
 #
 # Defaults: cap 120 s, seeds 1 2 3, both corpora, every fault the

@@ -3,8 +3,8 @@
 
 The layers are one-way (README "Layout"): runtime (the coverage runtime
 linked into implementations, C, standard library only) -> reference/node -> reference/geometry
--> verse -> conformance -> oracles -> fuzz, bench, cli (the last three side by
-side). A product file may include a project header of its own layer or of a
+-> verse -> conformance -> oracles -> fuzz/targets and bench (side by side)
+-> fuzz/campaign -> fuzz/wire -> cli (fuzz/'s three rooms, one-way). A product file may include a project header of its own layer or of a
 lower one, never of a higher one; and no two files may include each other,
 directly or through others (a cycle). Tests, examples and plugins sit above
 everything and are not checked.
@@ -26,7 +26,10 @@ LAYERS = [
     ("verse",),
     ("conformance", "conformance/adapter", "conformance/report", "conformance/gen"),
     ("oracles",),
-    ("fuzz", "bench", "cli"),
+    ("fuzz/targets", "bench"),
+    ("fuzz/campaign",),
+    ("fuzz/wire",),
+    ("cli",),
 ]
 INCLUDE = re.compile(r'^\s*#\s*include\s+"([^"]+)"')
 

@@ -109,7 +109,7 @@ class Channel {
   Status on_datagram(const std::uint8_t* data, std::size_t size, Clock::time_point now,
                      std::vector<WireCommand>* delivered);
 
-  // Hostile traffic (`vgc fuzz wire`, fuzz/wire_fuzz.h): `clear` (any bytes,
+  // Hostile traffic (`vgc fuzz wire`, fuzz/wire/wire_fuzz.h): `clear` (any bytes,
   // parsed or not) as the body of one datagram under packet id `id`,
   // encrypted with the data key. Nothing is queued, remembered or resent;
   // the peer's ack or nak for it is ignored like any for an unknown id.

@@ -14,7 +14,9 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <mutex>
 #include <thread>
+#include <vector>
 
 extern char** environ;
 
@@ -95,7 +97,8 @@ void kill_children() {
 
 // The program's side of the fork: its own process group, its descriptors,
 // default signals, then exec.
-[[noreturn]] void exec_program(const char* path, char* const argv[], int in_fd, int out_fd, int err_fd) {
+[[noreturn]] void exec_program(const char* path, char* const argv[], char* const* envp, int in_fd, int out_fd,
+                               int err_fd) {
   setpgid(0, 0);
   dup2(in_fd, 0);  // dup2 clears O_CLOEXEC on 0, 1 and 2
   dup2(out_fd, 1);
@@ -108,8 +111,8 @@ void kill_children() {
   sigset_t none;
   sigemptyset(&none);
   sigprocmask(SIG_SETMASK, &none, nullptr);
-  execve(path, argv, environ);
-  static const char msg[] = "vgc: cannot start the implementation's /bin/sh\n";
+  execve(path, argv, envp ? envp : environ);
+  static const char msg[] = "vgc: cannot start a child process (execve failed)\n";
   (void)!write(2, msg, sizeof msg - 1);
   _exit(127);
 }
@@ -133,10 +136,38 @@ void kill_children() {
   _exit(WIFEXITED(status) ? WEXITSTATUS(status) : 125);
 }
 
+void write_all(int fd, const void* data, std::size_t size) {
+  const char* p = static_cast<const char*>(data);
+  while (size > 0) {
+    const ssize_t n = write(fd, p, size);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) return;
+    p += n;
+    size -= static_cast<std::size_t>(n);
+  }
+}
+
+// keep_descendants, once the program has ended (its status sent): what it
+// started lives on, its orphans reaped, until the control pipe's end of
+// file (vgc stopped it or ended) or until no child is left.
+void keep_descendants(int control_fd) {
+  for (;;) {
+    pollfd pfd{control_fd, POLLIN, 0};
+    if (poll(&pfd, 1, 100) > 0) return;
+    pid_t w;
+    while ((w = waitpid(-1, nullptr, WNOHANG)) > 0) {
+    }
+    if (w < 0 && errno == ECHILD) return;
+  }
+}
+
 // The reaper: a subreaper holding the control pipe's read end, the
-// program's parent. Waits for the program's end or the pipe's, then kills
-// everything left (5 s at most) and ends as the program did.
-[[noreturn]] void reap_main(int control_fd, const char* path, char* const argv[], int in_fd, int out_fd, int err_fd) {
+// program's parent. Tells vgc the program's pid (report_fd), waits for the
+// program's end or the pipe's, then kills everything left (5 s at most) and
+// ends as the program did. With `keep`, the program's end sends its status
+// on report_fd and what it started is kept first (keep_descendants).
+[[noreturn]] void reap_main(int control_fd, int report_fd, bool keep, const char* path, char* const argv[],
+                            char* const* envp, int in_fd, int out_fd, int err_fd) {
   setpgid(0, 0);  // out of vgc's group: the terminal's Ctrl-C and a CI's group kill reach vgc, not the reaper
   struct sigaction ignore {};
   ignore.sa_handler = SIG_IGN;
@@ -152,20 +183,27 @@ void kill_children() {
     (void)!write(err_fd, msg, sizeof msg - 1);
   }
   const pid_t program = fork();
-  if (program == 0) exec_program(path, argv, in_fd, out_fd, err_fd);
+  if (program == 0) exec_program(path, argv, envp, in_fd, out_fd, err_fd);
   if (program > 0) setpgid(program, program);  // also here: no race with the program's own call
-  // Hold nothing of vgc's but the control pipe (not a CI log's pipe, not
-  // the program's pipes: their end of file is how vgc sees the program end).
-  if (control_fd != 3) {
-    dup2(control_fd, 3);
-    control_fd = 3;
+  write_all(report_fd, &program, sizeof program);
+  // Hold nothing of vgc's but the control pipe and, with `keep`, the report
+  // pipe (not a CI log's pipe, not the program's pipes: their end of file
+  // is how vgc sees the program end). Both first above 9, so that moving
+  // one to 3 or 4 cannot close the other.
+  const int control_high = fcntl(control_fd, F_DUPFD, 10);
+  const int report_high = keep ? fcntl(report_fd, F_DUPFD, 10) : -1;
+  dup2(control_high, 3);
+  control_fd = 3;
+  if (keep) {
+    dup2(report_high, 4);
+    report_fd = 4;
   }
   const int null_fd = open("/dev/null", O_RDWR);
   for (int fd = 0; fd < 3; ++fd)
     if (null_fd >= 0 && null_fd != fd) dup2(null_fd, fd);
-  syscall(SYS_close_range, 4u, ~0u, 0u);
+  syscall(SYS_close_range, keep ? 5u : 4u, ~0u, 0u);
   int status = 0;
-  bool ended = program < 0;
+  bool ended = program < 0, stop = false;
   if (program < 0) status = 127 << 8;
   while (!ended) {
     pollfd pfd{control_fd, POLLIN, 0};
@@ -173,9 +211,19 @@ void kill_children() {
     siginfo_t info{};  // not reaped yet: while it is unreaped its group id is not reused
     if (waitid(P_PID, static_cast<id_t>(program), &info, WEXITED | WNOHANG | WNOWAIT) == 0 && info.si_pid == program)
       ended = true;
-    if (r > 0) break;  // end of file (or a byte): stop
+    if (r > 0) {  // end of file (or a byte): stop
+      stop = true;
+      break;
+    }
   }
-  if (program > 0) {
+  if (keep && !stop) {
+    if (program > 0) {
+      while (waitpid(program, &status, 0) < 0 && errno == EINTR) {
+      }
+    }
+    write_all(report_fd, &status, sizeof status);
+    keep_descendants(control_fd);
+  } else if (program > 0) {
     kill(-program, SIGKILL);  // the program's group
     kill(program, SIGKILL);
     while (waitpid(program, &status, 0) < 0 && errno == EINTR) {
@@ -196,33 +244,100 @@ void kill_children() {
 }  // namespace
 
 bool spawn_reaped(const char* path, char* const argv[], int in_fd, int out_fd, int err_fd, ReapedProcess* out,
-                  std::string* error) {
-  int control[2];
+                  std::string* error, const ReapedStart& how) {
+  int control[2], report[2];
   if (pipe2(control, O_CLOEXEC) != 0) {
     *error = std::string("cannot create the reaper's pipe: ") + strerror(errno);
     return false;
   }
-  const pid_t pid = fork();
-  if (pid < 0) {
-    *error = std::string("cannot start the implementation's reaper: ") + strerror(errno);
+  if (pipe2(report, O_CLOEXEC) != 0) {
+    *error = std::string("cannot create the reaper's pipe: ") + strerror(errno);
     close(control[0]);
     close(control[1]);
     return false;
   }
+  const pid_t pid = fork();
+  if (pid < 0) {
+    *error = std::string("cannot start a child process's reaper: ") + strerror(errno);
+    for (int fd : {control[0], control[1], report[0], report[1]}) close(fd);
+    return false;
+  }
   if (pid == 0) {
     close(control[1]);
-    reap_main(control[0], path, argv, in_fd, out_fd, err_fd);
+    close(report[0]);
+    reap_main(control[0], report[1], how.keep_descendants, path, argv, how.envp, in_fd, out_fd, err_fd);
   }
   close(control[0]);
+  close(report[1]);
+  // The program's pid comes at once (the reaper's first act after forking
+  // it); end of file instead means the reaper died.
+  pid_t program = -1;
+  std::size_t got = 0;
+  while (got < sizeof program) {
+    const ssize_t n = read(report[0], reinterpret_cast<char*>(&program) + got, sizeof program - got);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) break;
+    got += static_cast<std::size_t>(n);
+  }
+  if (got < sizeof program) program = -1;
   out->pid = pid;
   out->control_fd = control[1];
+  out->program = program;
+  if (how.keep_descendants) {
+    out->status_fd = report[0];
+  } else {
+    close(report[0]);
+    out->status_fd = -1;
+  }
   return true;
+}
+
+bool wait_program_status(const ReapedProcess& p, int bound_ms, int* status) {
+  if (p.status_fd < 0) return false;
+  const auto until = std::chrono::steady_clock::now() + std::chrono::milliseconds(bound_ms);
+  int value = 0;
+  std::size_t got = 0;
+  while (got < sizeof value) {
+    const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(until - std::chrono::steady_clock::now());
+    if (left.count() < 0) return false;
+    pollfd pfd{p.status_fd, POLLIN, 0};
+    const int r = poll(&pfd, 1, static_cast<int>(std::min<long long>(left.count() + 1, 1000)));
+    if (r < 0 && errno != EINTR) return false;
+    if (r <= 0) continue;
+    const ssize_t n = read(p.status_fd, reinterpret_cast<char*>(&value) + got, sizeof value - got);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) return false;
+    got += static_cast<std::size_t>(n);
+  }
+  *status = value;
+  return true;
+}
+
+void keep_until_exit(ReapedProcess* p) {
+  static std::mutex mutex;
+  static auto* kept_reapers = new std::vector<ReapedProcess>;  // never destroyed: their pipes close with vgc
+  std::vector<ReapedProcess>& kept = *kept_reapers;
+  const std::lock_guard<std::mutex> lock(mutex);
+  for (auto it = kept.begin(); it != kept.end();) {
+    if (waitpid(it->pid, nullptr, WNOHANG) == it->pid) {  // nothing it started is left
+      close(it->control_fd);
+      if (it->status_fd >= 0) close(it->status_fd);
+      it = kept.erase(it);
+    } else {
+      ++it;
+    }
+  }
+  kept.push_back(*p);
+  *p = ReapedProcess{};
 }
 
 int stop_reaped(ReapedProcess* p, int bound_ms) {
   int status = 0;
   if (p->control_fd >= 0) close(p->control_fd);
   p->control_fd = -1;
+  if (p->status_fd >= 0) close(p->status_fd);
+  p->status_fd = -1;
+  p->program = -1;
   if (p->pid > 0) {
     const auto until = std::chrono::steady_clock::now() + std::chrono::milliseconds(bound_ms);
     for (;;) {

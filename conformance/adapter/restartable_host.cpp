@@ -11,6 +11,7 @@
 #include <utility>
 
 #include "forwarding_implementation.h"
+#include "reaped_process.h"
 
 namespace vgc {
 namespace {
@@ -73,38 +74,34 @@ bool run_restart_command(const std::string& command, double limit_s, std::string
     *why = "no restart command (--restart CMD)";
     return false;
   }
-  const pid_t pid = fork();
-  if (pid < 0) {
-    *why = "cannot fork to run the restart command";
+  // Under a reaper that keeps what the command starts (the host) until vgc
+  // ends (reaped_process.h, keep_descendants): the host outlives the
+  // command, not vgc. No terminal and no pipe of ours: a host left running
+  // must not hold vgc's output open.
+  const int null = open("/dev/null", O_RDWR | O_CLOEXEC);
+  if (null < 0) {
+    *why = "cannot open /dev/null to run the restart command";
     return false;
   }
-  if (pid == 0) {
-    // A session of its own (the host it starts outlives it, outside vgc's
-    // process group), no terminal and no pipe of ours: a host left running
-    // must not hold vgc's output open.
-    setsid();
-    const int null = open("/dev/null", O_RDWR);
-    if (null >= 0) {
-      dup2(null, 0);
-      dup2(null, 1);
-      dup2(null, 2);
-    }
-    execl("/bin/sh", "sh", "-c", command.c_str(), static_cast<char*>(nullptr));
-    _exit(127);
+  std::string sh = "/bin/sh", dash_c = "-c", text = command;
+  char* argv[] = {sh.data(), dash_c.data(), text.data(), nullptr};
+  ReapedProcess proc;
+  ReapedStart how;
+  how.keep_descendants = true;
+  std::string error;
+  const bool started = spawn_reaped("/bin/sh", argv, null, null, null, &proc, &error, how);
+  close(null);
+  if (!started) {
+    *why = "cannot run the restart command: " + error;
+    return false;
   }
-  const auto until = Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(limit_s));
   int status = 0;
-  for (;;) {
-    const pid_t w = waitpid(pid, &status, WNOHANG);
-    if (w == pid) break;
-    if (Clock::now() >= until) {
-      kill(-pid, SIGKILL);
-      waitpid(pid, &status, 0);
-      *why = "the restart command did not finish within " + std::to_string(static_cast<int>(limit_s)) + " s";
-      return false;
-    }
-    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  if (!wait_program_status(proc, static_cast<int>(limit_s * 1000), &status)) {
+    stop_reaped(&proc);
+    *why = "the restart command did not finish within " + std::to_string(static_cast<int>(limit_s)) + " s";
+    return false;
   }
+  keep_until_exit(&proc);
   if (WIFEXITED(status) && WEXITSTATUS(status) == 0) return true;
   *why = "the restart command failed (" +
          (WIFEXITED(status) ? "exit " + std::to_string(WEXITSTATUS(status))

@@ -35,9 +35,11 @@ namespace vgc {
 std::unique_ptr<Implementation> open_restartable(const Route& route, const OpenOptions& options,
                                                  const std::string& restart_command, std::string* error);
 
-// Runs `command` with /bin/sh -c in a session of its own (no terminal, no
-// pipe of ours), at most `limit_s` seconds (then its process group is
-// killed). true when it exited 0; *why otherwise.
+// Runs `command` with /bin/sh -c under a reaper (reaped_process.h) that
+// keeps what it starts (the host) until vgc ends, then kills it; no
+// terminal, no pipe of ours; at most `limit_s` seconds (then the command
+// and everything it started are killed). true when it exited 0; *why
+// otherwise.
 bool run_restart_command(const std::string& command, double limit_s, std::string* why);
 
 }  // namespace vgc

@@ -144,7 +144,7 @@ class VerseImplementation final : public Implementation {
   std::string late_view_wrong_format() override { return late_wrong_format_; }
 
   // The geometry node the commands go to now (changes at every reset()),
-  // and the bone_create form spoken: for `vgc fuzz wire` (fuzz/wire_fuzz.h),
+  // and the bone_create form spoken: for `vgc fuzz wire` (fuzz/wire/wire_fuzz.h),
   // which sends its own traffic to the same node from a session of its own.
   std::uint32_t node_id() const { return node_; }
   verse::BoneForm bone_form() const { return bone_form_; }

@@ -104,7 +104,7 @@ TEST(Route, EveryRowOfTheRegistryReadsBackWhatItWrites) {
 // prefix outside the registry: no "exec:" / "plugin:" / "verse:" literal
 // tested with rfind, compare or starts_with, cut off with substr, or
 // written in front of a target. Seen failing on the tree before the route
-// value (16 tests in 7 files: fuzz/campaign.cpp, cli/open_impl.cpp, ...).
+// value (16 tests in 7 files: fuzz/campaign/campaign.cpp, cli/open_impl.cpp, ...).
 TEST(Route, NoRoutePrefixIsTestedOutsideTheRouteParser) {
   namespace fs = std::filesystem;
   const fs::path root = VGC_SOURCE_DIR;

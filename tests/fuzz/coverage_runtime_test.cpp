@@ -1,6 +1,6 @@
 // coverage_runtime_test.cpp — vgc's coverage runtime (runtime/vgc_coverage.c)
-// against the region the fuzz target makes (fuzz/coverage_region.h), and
-// the record the campaign reads (fuzz/coverage_record.h).
+// against the region the fuzz target makes (fuzz/targets/coverage_region.h), and
+// the record the campaign reads (fuzz/targets/coverage_record.h).
 //
 // Spec: runtime/vgc_coverage_shm.h; docs/fuzzing.md "Coverage of the
 // implementation".

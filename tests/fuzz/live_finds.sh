@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # live_finds.sh ROUTE FUZZ_DIFFERENTIAL VGC FAULT_PLUGIN FAULT INPUT EXPECTED WORK
 # fuzz_differential against a live implementation (VGC_FUZZ_IMPL,
-# fuzz/live_implementation.h): ROUTE exec (`vgc serve` of the faulty node
+# fuzz/targets/live_implementation.h): ROUTE exec (`vgc serve` of the faulty node
 # over the exec protocol) or verse (`vgc serve --verse` of it on loopback),
 # the node's seeded fault VGC_FAULT=FAULT. On the known-bad INPUT the target
 # must stop with a FINDING matching the extended regex EXPECTED, naming a

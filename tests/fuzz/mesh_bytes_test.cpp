@@ -1,4 +1,4 @@
-// mesh_bytes_test.cpp — fuzz/mesh_bytes.h: the committed cube seed is the
+// mesh_bytes_test.cpp — fuzz/targets/mesh_bytes.h: the committed cube seed is the
 // spec's cube as the reference node extracts it; the decoding is total and
 // follows the documented table; encode and decode are inverse.
 #include "mesh_bytes.h"

@@ -1,4 +1,4 @@
-// node_invariants_test.cpp — fuzz/node_invariants.h has teeth: every rule
+// node_invariants_test.cpp — fuzz/targets/node_invariants.h has teeth: every rule
 // passes on real reference states and fails on a state broken in exactly
 // that one way.
 #include "node_invariants.h"

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # wire_fuzz.sh VGC FAULT_PLUGIN WORK
-# `vgc fuzz wire` (fuzz/wire_fuzz.h) against `vgc serve --verse` on
+# `vgc fuzz wire` (fuzz/wire/wire_fuzz.h) against `vgc serve --verse` on
 # loopback, bounded by --max-inputs:
 #  1. the reference host: every input answered, the node as the model says:
 #     no finding (the model of what a host acts on is right);

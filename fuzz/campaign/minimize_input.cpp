@@ -11,6 +11,7 @@
 #include <fstream>
 
 #include "exec_implementation.h"  // shell_quote
+#include "reaped_command.h"
 
 namespace vgc::fuzz {
 namespace {
@@ -27,9 +28,8 @@ std::size_t size_of(const std::string& path) {
 // Runs `command` through the shell, its output (stdout and stderr) appended
 // to `log`; its exit status (-1 when it could not be run or was signalled).
 int run_logged(const std::string& command, const std::string& log) {
-  FILE* p = popen((command + " >>" + shell_quote(log) + " 2>&1").c_str(), "r");
-  if (!p) return -1;
-  const int status = pclose(p);
+  std::string ignored;
+  const int status = run_reaped_shell(command + " >>" + shell_quote(log) + " 2>&1", &ignored);
   return status != -1 && WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
 

@@ -17,6 +17,7 @@
 
 #include "campaign.h"
 #include "exec_implementation.h"  // shell_quote
+#include "reaped_command.h"
 
 namespace vgc::fuzz {
 namespace {
@@ -74,7 +75,7 @@ bool merge_into_work(const fs::path& binary, const std::string& name, const fs::
       "timeout -k 5 {} {} -merge=1 -timeout=10 -max_len={} {} {} >{} 2>&1", static_cast<long long>(limit_s),
       shell_quote(binary.string()), max_len_of(name), shell_quote(work.string()),
       shell_quote((run_dir / "corpus").string()), shell_quote((run_dir / "merge.log").string()));
-  return std::system(cmd.c_str()) == 0;
+  return run_reaped_shell(cmd, nullptr) == 0;
 }
 
 SoakRow run_one(const SoakOptions& o, const std::string& name, const fs::path& src, const fs::path& work_root,

@@ -8,7 +8,7 @@
 //
 // Rationale: a campaign's findings must be triaged like certify's: each
 // unique crash is signed from the target's FINDING line, named by the
-// clause the target attributed it to (fuzz/clause_finding.h), grouped by
+// clause the target attributed it to (fuzz/targets/clause_finding.h), grouped by
 // clause, and marked when the clause is in a --baseline; each gets a
 // counterexample and a replay command carrying every VGC_* variable of the
 // run. The summary is a plain struct (CampaignSummary) so that other
@@ -30,6 +30,7 @@
 #include <utility>
 #include <vector>
 
+#include "crash_signature.h"  // clause_of_finding
 #include "route.h"
 
 namespace vgc::fuzz {
@@ -45,7 +46,7 @@ struct CampaignOptions {
   // --impl, read (route.h): none (the reference), "reference" or a plugin
   // (differential, property_*; loaded into the target's process), or a route
   // that is not in process, exec:CMD or verse:HOST[:PORT] (differential: a
-  // live implementation, fuzz/live_implementation.h).
+  // live implementation, fuzz/targets/live_implementation.h).
   std::optional<Route> impl;
   // A live implementation (exec:, verse:): seconds per call (0: 5), the
   // bone_create form of a Verse host ("": auto), and for verse: a shell
@@ -54,7 +55,7 @@ struct CampaignOptions {
   double call_timeout_s = 0;
   std::string verse_bone_form;
   std::string restart;
-  // An exec: implementation's own coverage (fuzz/live_coverage.h): "guide"
+  // An exec: implementation's own coverage (fuzz/targets/live_coverage.h): "guide"
   // (default: its counters are libFuzzer features when it was built with
   // vgc's coverage runtime: its edges), "guide-counts" (its counters with
   // hit counts), "observe" (counted for the summary, not guiding: an
@@ -193,8 +194,5 @@ std::string summary_markdown(const CampaignSummary& s);
 // commands that decode, then a comment naming the bytes that do not.
 std::string stream_to_text(const std::string& bytes);
 
-// The clause id a FINDING line names ("fuzz_x: [property: ]CLAUSE (LEVEL,
-// status): ..."), if it is one of the catalog; "" otherwise.
-std::string clause_of_finding(const std::string& finding_line);
 
 }  // namespace vgc::fuzz

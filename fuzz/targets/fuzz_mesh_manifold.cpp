@@ -6,7 +6,7 @@
 // or two polygons, disc / half-disc vertex neighbourhoods), 000 section
 // 2.6 (consistent front side).
 //
-// Per input: the bytes decode to a MeshArrays (fuzz/mesh_bytes.h: up to 16
+// Per input: the bytes decode to a MeshArrays (fuzz/targets/mesh_bytes.h: up to 16
 // vertices, up to 24 faces of 0..6 corners, repeated and out-of-range
 // indices, any mix of orientations). classify_mesh and cgal_classify_mesh
 // run on it and compare_topology_with_cgal (oracles/topology_comparison.h,

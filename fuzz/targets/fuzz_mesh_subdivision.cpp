@@ -7,7 +7,7 @@
 // edge creases), 2.6.2 (crease values, via crease_sharpness.h), 004 (Loop
 // subdivision of triangles), 001 (children named by parent).
 //
-// Per input: the bytes decode to a MeshArrays (fuzz/mesh_bytes.h: lattice
+// Per input: the bytes decode to a MeshArrays (fuzz/targets/mesh_bytes.h: lattice
 // positions, creases smooth / fractional / semi-sharp / infinite, faces of
 // 3..6 corners). Compared on every mesh that passes check_mesh (every mesh
 // a geometry node can hold, and n-gons besides), non-manifold included:

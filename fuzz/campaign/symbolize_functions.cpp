@@ -16,6 +16,7 @@
 #include <sstream>
 
 #include "exec_implementation.h"  // shell_quote
+#include "reaped_command.h"
 
 namespace vgc::fuzz {
 namespace {
@@ -77,12 +78,7 @@ std::vector<std::pair<std::string, std::string>> run_symbolizer(const std::strin
                               " --functions=linkage --demangle --no-inlines < " +
                               shell_quote(input) + " 2>/dev/null";
   std::vector<std::pair<std::string, std::string>> out;
-  if (FILE* p = popen(command.c_str(), "r")) {
-    std::string text;
-    char buf[4096];
-    for (std::size_t n; (n = std::fread(buf, 1, sizeof buf, p)) > 0 && text.size() < (std::size_t{64} << 20);)
-      text.append(buf, n);
-    pclose(p);
+  if (std::string text; run_reaped_shell(command, &text, std::size_t{64} << 20) != -1) {
     // One block per address: the function's name, its file:line:column,
     // then an empty line.
     std::istringstream lines(text);
