@@ -7,6 +7,7 @@
 #include <cstring>
 #include <limits>
 #include <memory>
+#include <optional>
 
 #include "crease.h"                 // corner_count
 #include "gen/arbitrary_command.h"  // gen_quaternion_extreme
@@ -620,6 +621,99 @@ Gen<Command> build_polygon(const View& v) {
   return gen::weightedOneOf<Command>({{5, grow_vertex(v)}, {1, set_polygon(v)}});
 }
 
+// The highest live id of `live` (sorted), or nothing.
+std::optional<std::uint32_t> highest(const std::vector<std::uint32_t>& live) {
+  if (live.empty()) return std::nullopt;
+  return live.back();
+}
+
+// A valid polygon (set_polygon's shape) far past the live ones: 30 to 90
+// ids above the highest live polygon (or the lowest free id). A node that
+// grows its storage in chunks grows it here, and the ids it skipped are
+// where it may take an unused slot for a live polygon (r6 fills grown
+// polygon storage with corners 0, not the unused marker: docs/verse_wire.md
+// section 11, "What the watching session is not told").
+Gen<Command> sparse_polygon(const View& v) {
+  std::uint32_t next = 0;
+  for (std::uint32_t id : v.polygons)
+    if (id == next) ++next;
+  const std::uint32_t base = std::max(next, highest(v.polygons).value_or(0) + 1);
+  return gen::exec([pv = std::make_shared<const View>(v), base]() -> Command {
+    Command c = *set_polygon(*pv);
+    std::get<cmd::PolygonSetCornerUint32>(c).polygon_id = base + *uniform<std::uint32_t>(30, 91);
+    return c;
+  });
+}
+
+// Whether some polygon is live far past the lowest free id (sparse_polygon
+// made one, or a magnitude id): ids below it, and just above it, were never
+// created.
+bool polygons_sparse(const View& v) {
+  std::uint32_t next = 0;
+  for (std::uint32_t id : v.polygons)
+    if (id == next) ++next;
+  return highest(v.polygons).value_or(0) > next + 8;
+}
+
+// A polygon delete (either form), or a pick, after a polygon far past the
+// others (polygons_sparse): the delete names an id near the highest live
+// one, below or above it, that no polygon has; POLY-DELETE-1 refuses it.
+// A node that took the ids its storage grew by for live polygons applies
+// it. The pick (1 in 4) asks for the lowest free id (VERTEX-ID-PICK-1),
+// which such a node may skip.
+Gen<Command> delete_unused_polygon(const View& v) {
+  const std::uint32_t h = highest(v.polygons).value_or(0);
+  std::vector<std::uint32_t> unused;
+  const std::uint32_t lo = h > 40 ? h - 40 : 0;
+  for (std::uint32_t id = lo; id < h + 32; ++id)
+    if (!std::binary_search(v.polygons.begin(), v.polygons.end(), id)) unused.push_back(id);
+  return gen::exec([pv = std::make_shared<const View>(v), unused]() -> Command {
+    if (*uniform(0, 4) == 0) {
+      Command c = *set_polygon(*pv);
+      std::get<cmd::PolygonSetCornerUint32>(c).polygon_id = kNone32;
+      return c;
+    }
+    const std::uint32_t id = *gen::elementOf(unused);
+    if (*uniform(0, 2) == 0) return Command{cmd::PolygonSetCornerUint32{Node::kPolygonLayer, id, {kNone32, 0, 0, 0}}};
+    return Command{cmd::PolygonDelete{id}};
+  });
+}
+
+// A vertex or polygon re-created at an id most likely deleted earlier in
+// the case (dead_ids), with a finite position or three or four live
+// corners: its slots in the other layers must hold their defaults
+// (LAYER-DEFAULT-1, element.create.slot_default), not what the deleted
+// element held there. r6 keeps the old values (its delete marks only the
+// base layer) and sends them to a new subscriber (docs/verse_wire.md
+// section 11). Before, a case rarely wrote a value, deleted its element
+// and created one at the same id again.
+Gen<Command> recreate_dead(const View& v) {
+  const bool vertex_gap = has_gap(v.vertices), polygon_gap = has_gap(v.polygons) && v.vertices.size() >= 3;
+  return gen::exec([pv = std::make_shared<const View>(v), vertex_gap, polygon_gap]() -> Command {
+    const View& v = *pv;
+    if (polygon_gap && (!vertex_gap || *uniform(0, 2) == 0)) {
+      Command c = *set_polygon(v);
+      std::get<cmd::PolygonSetCornerUint32>(c).polygon_id = *gen::elementOf(dead_ids(v.polygons));
+      return c;
+    }
+    const std::uint32_t id = *gen::elementOf(dead_ids(v.vertices));
+    const auto at = gen::map(uniform<int>(-16, 17), [](int i) { return i / 4.0; });
+    return cmd::VertexSetXyzReal64{0, id, *at, *at, *at};
+  });
+}
+
+// A delete of a live vertex or polygon that has values in a layer of
+// another type (value_step wrote them), so that recreate_dead follows.
+Gen<Command> delete_written(const View& v) {
+  const bool vertex_values =
+      !v.vertices.empty() && (!v.vertex_uint_layers.empty() || !v.vertex_real_layers.empty() || !v.vertex_xyz_layers.empty());
+  if (v.vertices.empty() && v.polygons.empty()) return set_vertex(v);
+  return gen::exec([vs = v.vertices, ps = v.polygons, vertex_values]() -> Command {
+    if (ps.empty() || (vertex_values && *uniform(0, 2) == 0)) return cmd::VertexDelete{*gen::elementOf(vs)};
+    return cmd::PolygonDelete{*gen::elementOf(ps)};
+  });
+}
+
 Gen<Command> set_crease(const View& v) {
   return gen::exec([pv = std::make_shared<const View>(v)]() -> Command {
     const View& v = *pv;  // one copy, shared by the copies RapidCheck makes of this lambda
@@ -799,7 +893,9 @@ Gen<Command> gen_command(const Node& model, Focus focus) {
                                           W{v.polygons.empty() ? 1u : 4u, L(delete_polygon)}, W{1, L(create_layer)},
                                           W{v.polygons.empty() ? 0u : 3u, L(value_step)},
                                           W{has_gap(v.polygons) || has_gap(v.vertices) ? 2u : 0u, L(write_dead)},
-                                          W{v.polygons.empty() ? 0u : 2u, L(non_manifold_polygon)}});
+                                          W{v.polygons.empty() ? 0u : 2u, L(non_manifold_polygon)},
+                                          W{v.vertices.size() >= 3 && !polygons_sparse(v) ? 1u : 0u, L(sparse_polygon)},
+                                          W{polygons_sparse(v) ? 3u : 0u, L(delete_unused_polygon)}});
     case Focus::Creases: {
       // A crease rule is seen only in a state with all of: polygons, a
       // crease layer, a setting naming it, and unequal values in it (equal
@@ -836,7 +932,11 @@ Gen<Command> gen_command(const Node& model, Focus focus) {
            // a polygon delete once there are face layers, then writes to
            // the deleted (the share of value_step grows to match)
            W{mesh && faces ? 1u : 0u, L(delete_polygon)},
-           W{has_gap(v.polygons) || has_gap(v.vertices) ? 5u : 0u, L(write_dead)}});
+           W{has_gap(v.polygons) || has_gap(v.vertices) ? 5u : 0u, L(write_dead)},
+           // a delete of a written element, then its re-creation at the
+           // same id (whose slots hold the defaults again)
+           W{types > 0 && (!v.vertices.empty() || !v.polygons.empty()) ? 1u : 0u, L(delete_written)},
+           W{has_gap(v.vertices) || (has_gap(v.polygons) && v.vertices.size() >= 3) ? 4u : 0u, L(recreate_dead)}});
     }
     case Focus::Ids:
       return rc::gen::weightedOneOf<Command>({W{3, L(create_layer)}, W{4, L(set_vertex)}, W{3, L(build_polygon)},

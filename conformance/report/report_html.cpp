@@ -15,6 +15,7 @@
 #include <map>
 #include <sstream>
 
+#include "finding_cause.h"
 #include "finding_picture.h"
 #include "html_page.h"
 #include "program_text.h"
@@ -208,6 +209,24 @@ void add_unjudged(pugi::xml_node body, const RunResult& run, const Verdict& v) {
 
 // The findings, a section per kind of failure, then the stale baseline.
 void add_findings(pugi::xml_node body, const RunResult& run, const Verdict& v, const ReportContext& ctx) {
+  // Findings with one cause (finding_cause.h): the cause once, each
+  // clause linked to its own finding below, its status unchanged.
+  const std::vector<CauseGroup> groups = group_findings_by_cause(run);
+  if (!groups.empty()) {
+    add(body, "h2", "Findings with one cause");
+    auto ul = add(body, "ul", {}, "cause-groups");
+    for (const auto& g : groups) {
+      auto li = add(ul, "li");
+      for (std::size_t i = 0; i < g.clauses.size(); ++i) {
+        if (i) add_text(li, ", ");
+        auto a = add(li, "a", g.clauses[i]);
+        a.append_attribute("href") = ("#finding-" + g.clauses[i]).c_str();
+      }
+      std::string cause = g.cause;  // the markdown's code quotes, unquoted
+      cause.erase(std::remove(cause.begin(), cause.end(), '`'), cause.end());
+      add_text(li, ": " + cause + ".");
+    }
+  }
   auto section = [&](const std::vector<std::string>& ids, const std::string& heading, const std::string& intro) {
     if (ids.empty()) return;
     add(body, "h2", heading);

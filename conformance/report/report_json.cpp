@@ -5,6 +5,7 @@
 #include <filesystem>
 
 #include "command_text.h"
+#include "finding_cause.h"
 #include "finding_picture.h"
 #include "report.h"
 #include "version.h"
@@ -142,6 +143,11 @@ std::string render_report_json(const RunResult& run, const Verdict& v, const Rep
   for (const ClauseOutcome& co : run.clauses) clauses.push_back(clause_json(co, v, ctx));
   j["counts"] = shown_counts_json(run, v);
   j["clauses"] = clauses;
+  // Findings of several clauses with one cause (finding_cause.h): the
+  // cause once, the clauses' statuses as they are above.
+  json groups = json::array();
+  for (const CauseGroup& g : group_findings_by_cause(run)) groups.push_back({{"cause", g.cause}, {"clauses", g.clauses}});
+  j["cause_groups"] = groups;
   json props = json::array();
   for (const PropertyOutcome& p : run.properties) props.push_back(property_json(p));
   j["properties"] = props;

@@ -6,6 +6,7 @@
 #include <map>
 
 #include "command_text.h"
+#include "finding_cause.h"
 #include "program_text.h"
 #include "report.h"
 #include "rule_clauses.h"
@@ -57,6 +58,18 @@ std::string render_summary(const RunResult& run, const Verdict& v, const ReportC
     out += "\n";
   }
 
+  // Findings with one cause (finding_cause.h), said once before the
+  // findings; each grouped finding points here.
+  const std::vector<CauseGroup> groups = group_findings_by_cause(run);
+  if (!groups.empty()) {
+    out += "## Findings with one cause\n\n";
+    for (const auto& g : groups) {
+      std::string ids;
+      for (const auto& c : g.clauses) ids += (ids.empty() ? "" : ", ") + c;
+      out += fmt::format("- **{}**: {}. Each clause keeps its own status below.\n", ids, g.cause);
+    }
+    out += "\n";
+  }
   auto section = [&](const std::vector<std::string>& ids, const std::string& title, const std::string& intro) {
     if (ids.empty()) return;
     out += "## " + title + "\n\n";
@@ -67,6 +80,12 @@ std::string render_summary(const RunResult& run, const Verdict& v, const ReportC
       const std::string file = (std::filesystem::path(ctx.run_dir) / counterexample_path(co)).string();
       out += fmt::format("### {} ({}) — {}\n\n", co.clause->id, clause_level_name(co.clause->level),
                          shown_status(co, v));
+      if (const CauseGroup* g = cause_group_of(groups, std::string(co.clause->id))) {
+        std::string others;
+        for (const auto& c : g->clauses)
+          if (c != co.clause->id) others += (others.empty() ? "" : ", ") + c;
+        out += fmt::format("One cause with {} (\"Findings with one cause\" above).\n\n", others);
+      }
       out += fmt::format("> {} ({})\n\n", co.clause->text, co.clause->source);
       out += fmt::format("Suite's reading: {}\n\n", co.clause->reading);
       out += fmt::format("**What the implementation did:** {}\n\n", co.finding->message);

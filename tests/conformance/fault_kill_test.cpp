@@ -138,6 +138,40 @@ TEST(FaultKill, FaultsPastTheOldGeneratorsReachFailAtSeedsOneToThree) {
   }
 }
 
+// Two behaviours of the r6 host its wire hides from the session that
+// watches (issue 27; docs/verse_wire.md section 11), as nodes that show
+// them: a deleted element's values kept and given to one re-created at its
+// id (LAYER-DEFAULT-1, SHOULD: the verdict stays conformant), and polygon
+// ids that grown storage took for live polygons, whose delete is answered
+// ok (POLY-DELETE-1, MUST). Each is found by a default run at seeds 1 to 3.
+// Seen to fail: with the generators before sparse_polygon and
+// delete_unused_polygon, grown-polygon-ids-live certified conformant at
+// seeds 1 and 2.
+TEST(FaultKill, TwoBehavioursTheR6WireHidesAreFoundAtSeedsOneToThree) {
+  const std::vector<std::pair<std::string, std::string>> faults = {
+      {"recreated-element-keeps-slots", "LAYER-DEFAULT-1"},
+      {"grown-polygon-ids-live", "POLY-DELETE-1"},
+  };
+  for (const auto& [name, clause] : faults) {
+    const int fault = faults::find_fault(name);
+    ASSERT_GT(fault, 0) << name;
+    for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+      faults::FaultyImplementation impl(fault);
+      const RunResult run = run_certification(impl, default_run(seed));
+      std::string found;
+      bool hit = false;
+      for (const auto& co : run.clauses) {
+        if (!co.finding) continue;
+        found += std::string(co.clause->id) + "(" + clause_status_name(co.status) + ") ";
+        hit = hit || (co.clause->id == clause && co.status == ClauseStatus::Fail);
+      }
+      std::printf("%-30s seed %llu: %s\n", name.c_str(), static_cast<unsigned long long>(seed), found.c_str());
+      EXPECT_TRUE(hit) << name << " at seed " << seed << ": found " << found;
+      EXPECT_EQ(judge(run, nullptr).exit_code, clause == "LAYER-DEFAULT-1" ? 0 : 1) << name << " at seed " << seed;
+    }
+  }
+}
+
 // Issue 27 (blame that isolates): a node that keeps the "pick a free id"
 // sentinel as the layer id (layer_create 0xFFFF stored as layer 65535) made
 // no pick at all: it breaks the create rule (LAYER-CREATE-1, MUST), not the

@@ -90,6 +90,16 @@ std::vector<FaultInfo> build_catalog() {
       {"bone-kept-at-pick-id", "BONE-CREATE-1", "fail",
        "stores bone_create 0xFFFF as bone 65535 (the \"pick a free id\" sentinel kept as the id, which is also "
        "the \"no parent\" id), and a later bone_create 0xFFFF re-creates that bone"},
+      // Issue 27: two behaviours of the r6 host that its wire hides from
+      // the session that watches (docs/verse_wire.md section 11), each as a
+      // node that shows them on its documents and answers.
+      {"recreated-element-keeps-slots", "LAYER-DEFAULT-1", "fail",
+       "a deleted vertex or polygon keeps its values in the other layers, and one created at its id again has "
+       "them instead of the layers' defaults (r6: a delete marks only the base layer)"},
+      {"grown-polygon-ids-live", "POLY-DELETE-1", "fail",
+       "polygon storage starts at 32 ids and grows to 32 past a new id beyond it; the ids it grew by and no "
+       "polygon has are taken as live polygons no document shows: a delete of one is answered ok, and a pick "
+       "skips them (r6 fills grown polygon storage with 0, not the unused marker)"},
       // The three MUST bugs of issue 17, each breaking one node rule alone.
       {"moved-vertex-slots-reset", "VERTEX-SET-1", "fail",
        "a moved vertex's slots in the other vertex layers are reset to their defaults", Rule::VertexMoveKeepsSlots},
@@ -375,6 +385,38 @@ FaultyAnswer FaultyNode::apply(const Command& original) {
       largest_vertex_id_ = std::max(largest_vertex_id_.value_or(0), x->vertex_id);
     }
   }
+  // grown-polygon-ids-live
+  std::optional<std::uint32_t> grown_polygon_set;
+  if (is("grown-polygon-ids-live")) {
+    const auto phantom = [this](std::uint32_t id) {
+      return id >= 32 && id < polygon_storage_ && !node_.polygons().count(id) && !unused_polygons_.count(id);
+    };
+    std::optional<std::uint32_t> deleted;
+    if (auto* x = std::get_if<cmd::PolygonDelete>(&c)) deleted = x->polygon_id;
+    if (auto* x = std::get_if<cmd::PolygonSetCornerUint32>(&c); x && x->layer_id == 1 && x->v[0] == kNone32)
+      deleted = x->polygon_id;
+    if (deleted && phantom(*deleted)) {
+      unused_polygons_.insert(*deleted);  // marked unused, as r6's delete does
+      return {true, ""};
+    }
+    if (auto* x = std::get_if<cmd::PolygonSetCornerUint32>(&c); x && x->layer_id == 1 && x->v[0] != kNone32) {
+      if (x->polygon_id == kNone32) {  // the pick skips the phantoms
+        std::uint32_t id = 0;
+        while (node_.polygons().count(id) || phantom(id)) ++id;
+        x->polygon_id = id;
+      }
+      grown_polygon_set = x->polygon_id;  // marked and grown once applied (below)
+    }
+  }
+  // recreated-element-keeps-slots: the deleted elements' slots are kept
+  // (by stack, id and layer) and given to an element created at the id.
+  std::optional<Node> before_delete;
+  if (is("recreated-element-keeps-slots") &&
+      (std::holds_alternative<cmd::VertexDelete>(c) || std::holds_alternative<cmd::PolygonDelete>(c) ||
+       is_vertex_delete_alias(c) ||
+       (std::holds_alternative<cmd::PolygonSetCornerUint32>(c) &&
+        std::get<cmd::PolygonSetCornerUint32>(c).layer_id == 1 && std::get<cmd::PolygonSetCornerUint32>(c).v[0] == kNone32)))
+    before_delete = node_;
   // hang-on-subscribe-real64
   if (auto* x = std::get_if<cmd::LayerSubscribe>(&c); x && is("hang-on-subscribe-real64") && x->real_format == 1)
     for (;;) std::this_thread::sleep_for(std::chrono::seconds(1));
@@ -389,6 +431,28 @@ FaultyAnswer FaultyNode::apply(const Command& original) {
     if (vertex_stack) apply_node(cmd::VertexDelete{new_id});
     else apply_node(cmd::PolygonDelete{new_id});
     return {true, ""};
+  }
+  if (grown_polygon_set && r == Reason::Ok) {
+    const std::uint32_t id = *grown_polygon_set;
+    unused_polygons_.insert(id);  // a polygon's corners, or once deleted the unused marker
+    if (id >= polygon_storage_ && id - polygon_storage_ <= 4096) polygon_storage_ = id + 32;
+  }
+  if (before_delete && r == Reason::Ok) {
+    for (const auto& [lid, layer] : before_delete->layers()) {
+      if (lid < 2) continue;
+      for (const auto& [eid, slot] : layer.slots) {
+        const bool gone = is_vertex_layer_type(layer.type) ? !node_.vertices().count(eid) : !node_.polygons().count(eid);
+        if (gone) kept_slots_[{is_vertex_layer_type(layer.type), eid, lid, layer.type}] = slot;
+      }
+    }
+  }
+  if (r == Reason::Ok && creating && new_id != kNone32 && is("recreated-element-keeps-slots")) {
+    for (const auto& [lid, layer] : node_.layers()) {
+      const auto it = kept_slots_.find({vertex_stack, new_id, lid, layer.type});
+      if (it == kept_slots_.end() || !layer.slots.count(new_id)) continue;
+      const_cast<Layer&>(layer).slots.at(new_id) = it->second;  // test-only: reach into the node's storage
+      node_changed();
+    }
   }
   // no-default-on-new-slots: zero every other layer's new slot.
   if (r == Reason::Ok && creating && is("no-default-on-new-slots")) {

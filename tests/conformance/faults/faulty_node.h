@@ -14,6 +14,7 @@
 #include <map>
 #include <string>
 #include <string_view>
+#include <tuple>
 #include <optional>
 #include <set>
 #include <vector>
@@ -105,6 +106,14 @@ class FaultyNode {
   std::set<std::uint16_t> destroyed_layers_;
   bool vertex_deleted_ = false;
   std::optional<std::uint32_t> largest_vertex_id_;
+  // grown-polygon-ids-live: the polygon storage's size, and the ids in it
+  // that held a polygon or were deleted (the others from 32 on are live to
+  // the fault: grown storage filled with 0).
+  std::uint32_t polygon_storage_ = 32;
+  std::set<std::uint32_t> unused_polygons_;
+  // recreated-element-keeps-slots: a deleted element's slots, by (vertex
+  // stack, element id, layer id, layer type).
+  std::map<std::tuple<bool, std::uint32_t, std::uint16_t, LayerType>, Slot> kept_slots_;
   NodeDigest digest_;
   ChangeLog changes_;
   bool digest_stale_ = false;
