@@ -47,7 +47,7 @@ struct StepResult {
   bool derived_judged = true;
   // Set when the implementation's state after the command was read and is
   // the state before it (it dropped the command): the runner can then take
-  // a tolerated command out of a case without resetting (runner.cpp).
+  // a tolerated command out of a case without resetting (property_case.cpp, take_step_out).
   bool implementation_unchanged = false;
   // Set when the model followed an implementation's choice (follow_choices):
   // the command the model applied instead (the id written).

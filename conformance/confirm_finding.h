@@ -86,7 +86,7 @@ std::string finding_kind(const Finding& f);
 // watchers were told something else than is stored: worse than a state
 // every watcher sees), a protocol error 2, a time-out 3, a crash (a
 // sanitizer report included) 4. A finding of one
-// kind in a clause hides nothing worse in it (runner.cpp tolerates a
+// kind in a clause hides nothing worse in it (property_run.cpp tolerates a
 // clause only up to the worst kind found there), and a clause's outcome
 // shows its worst finding (clause_status.h prefer_finding).
 int finding_severity(const Finding& f);

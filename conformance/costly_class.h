@@ -15,7 +15,7 @@
 // So the first time-out on a command names a class: "vertex ids of 2^22 or
 // more" (the kind of element the command's largest element id names, from
 // the power of two at or below it). The runner then sends no command of an
-// avoided class for the rest of the run (runner.cpp, Step::run): the
+// avoided class for the rest of the run (property_case.cpp, Step::run): the
 // classes avoided are listed in the run's report, so a reader knows what
 // was not drawn again and why.
 #pragma once

@@ -36,7 +36,7 @@ struct PropertySpec {
   bool at_scale = false;
   // What a default run of it costs, in seconds of the reference behind
   // exec: on this project's 2-core machine (one default run at seed 1, at
-  // load 10-17, rounded): how `--shard` balances the shards (runner.cpp
+  // load 10-17, rounded): how `--shard` balances the shards (shard_plan.cpp
   // assign_shards; docs/ci.md "Shards"). Only the ratios matter; the
   // balance itself is checked by judged commands per shard
   // (tests/ci/verse_shards_test.sh).

@@ -102,7 +102,7 @@ struct PropertyOutcome {
   int cases = 0;            // cases run to the end: judged + set aside + not judged
   int cases_target = 0;     // cases it should run
   int judged = 0;           // cases judged to the end (their tolerated commands taken out)
-  long steps_taken_out = 0; // commands taken out of cases for a tolerated divergence (runner.cpp take_step_out)
+  long steps_taken_out = 0; // commands taken out of cases for a tolerated divergence (property_case.cpp take_step_out)
   int set_aside = 0;        // cases whose first divergence was a tolerated clause
   int not_judged = 0;       // capability cases the oracle could not judge (FindingStatus::NotJudged)
   int rounds = 0;           // RapidCheck runs (1 + one per new finding)

@@ -34,7 +34,7 @@ inline constexpr int kScaleMaxElements = 100000;
 // A case draws its size from this band, and shrinks towards
 // kScaleMinElements: every case then costs about the same (within 1.5x),
 // so that `--shard` can split the property's cases over the shards evenly
-// (runner.cpp assign_shards); a size drawn anywhere from 10^4 to 10^5 made
+// (shard_plan.cpp assign_shards); a size drawn anywhere from 10^4 to 10^5 made
 // one shard's single case ten times another's.
 inline constexpr int kScaleDrawLow = 40000;
 inline constexpr int kScaleDrawHigh = 60000;

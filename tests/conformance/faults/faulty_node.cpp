@@ -572,6 +572,20 @@ std::uint32_t target_element(const Command& c) {
 
 }  // namespace
 
+// A rule no command applies (a fresh node's state: node.base_layers,
+// node.initial_creases) is broken on the fresh node itself: the lines it
+// wrote there show corrupted until a command writes them again. Without
+// this, "rule:node.initial_creases" changed nothing (apply_breaking only
+// sees the rules of a command's trace).
+FaultyNode::FaultyNode(std::vector<int> faults) : faults_(std::move(faults)) {
+  for (int f : faults_) {
+    const Rule broken = fault_catalog()[static_cast<std::size_t>(f)].breaks;
+    if (broken == Rule::None) continue;
+    for (const auto& l : lines_of(print_snapshot(node_)))
+      if (auto w = line_written(node_, l); w && w->rule == broken && w->step == 0) corrupted_[key_of(l)] = 0;
+  }
+}
+
 FaultyAnswer FaultyNode::apply_breaking(const Command& c, Rule broken) {
   RuleTrace t;
   const Reason r = apply_node(c, &t);

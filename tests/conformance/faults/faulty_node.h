@@ -58,8 +58,8 @@ struct FaultyAnswer {
 
 class FaultyNode {
  public:
-  explicit FaultyNode(int fault) : faults_{fault} {}
-  explicit FaultyNode(std::vector<int> faults) : faults_(std::move(faults)) {}
+  explicit FaultyNode(int fault) : FaultyNode(std::vector<int>{fault}) {}
+  explicit FaultyNode(std::vector<int> faults);
   FaultyAnswer apply(const Command& c);  // may abort() or hang, for the crash and hang faults
   std::string snapshot() const;
   std::string derived() const;
