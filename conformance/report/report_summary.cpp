@@ -13,8 +13,10 @@
 
 namespace vgc {
 
-std::string render_summary(const RunResult& run, const Verdict& v, const ReportContext& ctx) {
-  std::string out;
+namespace {
+
+// The headline, the tallies, the re-run line and the route's limits.
+void write_summary_head(const RunResult& run, const Verdict& v, const ReportContext& ctx, std::string& out) {
   const char* headline = v.name == "conformant"       ? "CONFORMANT"
                          : v.name == "not-conformant" ? "NOT CONFORMANT"
                                                       : "INCOMPLETE";
@@ -40,6 +42,11 @@ std::string render_summary(const RunResult& run, const Verdict& v, const ReportC
     else  // a declared profile of words this vgc does not know (declared_profile.h): named all the same
       out += fmt::format("Route: {}.\n\n", run.route);
   }
+}
+
+// What could not be judged: avoided classes, a failed preflight, stopped
+// properties and unchecked clauses.
+void write_summary_unjudged(const RunResult& run, const Verdict& v, std::string& out) {
   if (!run.avoided_classes.empty()) {
     out += "Classes of input that cost a time-out, found once and not drawn again:\n\n";
     for (const auto& note : run.avoided_classes) out += "- " + note + "\n";
@@ -57,58 +64,56 @@ std::string render_summary(const RunResult& run, const Verdict& v, const ReportC
       if (co.status == ClauseStatus::Unchecked) out += fmt::format("- clause {} is unchecked: {}\n", co.clause->id, co.note);
     out += "\n";
   }
+}
 
-  // Findings with one cause (finding_cause.h), said once before the
-  // findings; each grouped finding points here.
-  const std::vector<CauseGroup> groups = group_findings_by_cause(run);
-  if (!groups.empty()) {
-    out += "## Findings with one cause\n\n";
-    for (const auto& g : groups) {
-      std::string ids;
-      for (const auto& c : g.clauses) ids += (ids.empty() ? "" : ", ") + c;
-      out += fmt::format("- **{}**: {}. Each clause keeps its own status below.\n", ids, g.cause);
-    }
-    out += "\n";
+// Findings with one cause (finding_cause.h), said once before the
+// findings; each grouped finding points here.
+void write_summary_cause_groups(const std::vector<CauseGroup>& groups, std::string& out) {
+  if (groups.empty()) return;
+  out += "## Findings with one cause\n\n";
+  for (const auto& g : groups) {
+    std::string ids;
+    for (const auto& c : g.clauses) ids += (ids.empty() ? "" : ", ") + c;
+    out += fmt::format("- **{}**: {}. Each clause keeps its own status below.\n", ids, g.cause);
   }
-  auto section = [&](const std::vector<std::string>& ids, const std::string& title, const std::string& intro) {
-    if (ids.empty()) return;
-    out += "## " + title + "\n\n";
-    if (!intro.empty()) out += intro + "\n\n";
-    for (const auto& co : run.clauses) {
-      if (!co.finding) continue;
-      if (std::find(ids.begin(), ids.end(), std::string(co.clause->id)) == ids.end()) continue;
-      const std::string file = (std::filesystem::path(ctx.run_dir) / counterexample_path(co)).string();
-      out += fmt::format("### {} ({}) — {}\n\n", co.clause->id, clause_level_name(co.clause->level),
-                         shown_status(co, v));
-      if (const CauseGroup* g = cause_group_of(groups, std::string(co.clause->id))) {
-        std::string others;
-        for (const auto& c : g->clauses)
-          if (c != co.clause->id) others += (others.empty() ? "" : ", ") + c;
-        out += fmt::format("One cause with {} (\"Findings with one cause\" above).\n\n", others);
-      }
-      out += fmt::format("> {} ({})\n\n", co.clause->text, co.clause->source);
-      out += fmt::format("Suite's reading: {}\n\n", co.clause->reading);
-      out += fmt::format("**What the implementation did:** {}\n\n", co.finding->message);
-      if (ctx.baseline && ctx.baseline->reasons.count(std::string(co.clause->id)))
-        out += fmt::format("Baseline says: {}\n\n", ctx.baseline->reasons.at(std::string(co.clause->id)));
-      const std::string drawn = co.program_origin.empty() ? fmt::format(", seed {}", co.seed) : "";
-      out += fmt::format("{} ({} commands, from a fresh node; found by `{}`{}):\n\n```\n{}```\n\n",
-                         counterexample_heading(co), co.program.commands.size(), co.found_by, drawn,
-                         inline_program(co));
-      out += fmt::format("Replay: `{}`\n\n", replay_command(file, ctx));
+  out += "\n";
+}
+
+// One section of findings: each clause in ids that has a finding, with
+// its counterexample and replay line.
+void write_summary_findings(const RunResult& run, const Verdict& v, const ReportContext& ctx,
+                            const std::vector<CauseGroup>& groups, const std::vector<std::string>& ids,
+                            const std::string& title, const std::string& intro, std::string& out) {
+  if (ids.empty()) return;
+  out += "## " + title + "\n\n";
+  if (!intro.empty()) out += intro + "\n\n";
+  for (const auto& co : run.clauses) {
+    if (!co.finding) continue;
+    if (std::find(ids.begin(), ids.end(), std::string(co.clause->id)) == ids.end()) continue;
+    const std::string file = (std::filesystem::path(ctx.run_dir) / counterexample_path(co)).string();
+    out += fmt::format("### {} ({}) — {}\n\n", co.clause->id, clause_level_name(co.clause->level),
+                       shown_status(co, v));
+    if (const CauseGroup* g = cause_group_of(groups, std::string(co.clause->id))) {
+      std::string others;
+      for (const auto& c : g->clauses)
+        if (c != co.clause->id) others += (others.empty() ? "" : ", ") + c;
+      out += fmt::format("One cause with {} (\"Findings with one cause\" above).\n\n", others);
     }
-  };
-  section(v.new_failures, "Failures", "");
-  section(v.profile_differences, "Profile differences (IMPLEMENTATION-DEFINED: the spec is silent)",
-          "The implementation chose differently from the suite's reading of a point the spec leaves open. "
-          "Reported, tolerated (so it hides nothing else), and not gating; `--strict` makes them gate.");
-  section(v.known_failures, "Known deviations (in the baseline)", "");
-  section(v.should_failures, "SHOULD clauses not met (the verdict stands)", "");
-  if (!v.stale_baseline.empty()) {
-    out += "## Baseline entries no case diverged on — remove them\n\n";
-    for (const auto& id : v.stale_baseline) out += "- " + id + "\n";
-    out += "\n";
+    out += fmt::format("> {} ({})\n\n", co.clause->text, co.clause->source);
+    out += fmt::format("Suite's reading: {}\n\n", co.clause->reading);
+    out += fmt::format("**What the implementation did:** {}\n\n", co.finding->message);
+    if (ctx.baseline && ctx.baseline->reasons.count(std::string(co.clause->id)))
+      out += fmt::format("Baseline says: {}\n\n", ctx.baseline->reasons.at(std::string(co.clause->id)));
+    const std::string drawn = co.program_origin.empty() ? fmt::format(", seed {}", co.seed) : "";
+    out += fmt::format("{} ({} commands, from a fresh node; found by `{}`{}):\n\n```\n{}```\n\n",
+                       counterexample_heading(co), co.program.commands.size(), co.found_by, drawn,
+                       inline_program(co));
+    out += fmt::format("Replay: `{}`\n\n", replay_command(file, ctx));
   }
+}
+
+// The tables: clauses, properties, commands judged, rules used.
+void write_summary_tables(const RunResult& run, const Verdict& v, std::string& out) {
   out += "## Clauses\n\n| clause | level | status | exercised |\n|---|---|---|---|\n";
   for (const auto& co : run.clauses)
     out += fmt::format("| {} | {} | {}{} | {} |\n", co.clause->id, clause_level_name(co.clause->level), shown_status(co, v),
@@ -137,6 +142,31 @@ std::string render_summary(const RunResult& run, const Verdict& v, const ReportC
       out += fmt::format("| {} | {} | {} |\n", rule, rule_clause(r), n);
     }
   }
+}
+
+}  // namespace
+
+std::string render_summary(const RunResult& run, const Verdict& v, const ReportContext& ctx) {
+  std::string out;
+  write_summary_head(run, v, ctx, out);
+  write_summary_unjudged(run, v, out);
+  const std::vector<CauseGroup> groups = group_findings_by_cause(run);
+  write_summary_cause_groups(groups, out);
+  auto findings = [&](const std::vector<std::string>& ids, const std::string& title, const std::string& intro) {
+    write_summary_findings(run, v, ctx, groups, ids, title, intro, out);
+  };
+  findings(v.new_failures, "Failures", "");
+  findings(v.profile_differences, "Profile differences (IMPLEMENTATION-DEFINED: the spec is silent)",
+           "The implementation chose differently from the suite's reading of a point the spec leaves open. "
+           "Reported, tolerated (so it hides nothing else), and not gating; `--strict` makes them gate.");
+  findings(v.known_failures, "Known deviations (in the baseline)", "");
+  findings(v.should_failures, "SHOULD clauses not met (the verdict stands)", "");
+  if (!v.stale_baseline.empty()) {
+    out += "## Baseline entries no case diverged on — remove them\n\n";
+    for (const auto& id : v.stale_baseline) out += "- " + id + "\n";
+    out += "\n";
+  }
+  write_summary_tables(run, v, out);
   return out;
 }
 
