@@ -62,7 +62,7 @@ case "$target" in
   mesh_subdivision)
     fault_var=VGC_FUZZ_MESH_FAULT impl=()
     expected_clause() { :; }
-    [ -n "$faults" ] || faults=$(sed -nE 's/.*fault == "([a-z-]+)".*/\1/p' "$root/fuzz/fuzz_mesh_subdivision.cpp" | tr '\n' ' ')
+    [ -n "$faults" ] || faults=$(sed -nE 's/.*fault == "([a-z-]+)".*/\1/p' "$root/fuzz/targets/fuzz_mesh_subdivision.cpp" | tr '\n' ' ')
     ;;
   *) echo "time_to_find: --target is differential or mesh_subdivision, not $target" >&2; exit 2 ;;
 esac

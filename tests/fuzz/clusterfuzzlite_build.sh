@@ -3,7 +3,7 @@
 # Runs .clusterfuzzlite/build.sh as the OSS-Fuzz image would (libFuzzer
 # engine; no sanitizer, see CFLAGS below), here with the Debian packages instead of the
 # image's source-built libraries, and checks that EVERY fuzz target — one
-# per fuzz/fuzz_*.cpp and one fuzz_property_<group> per corpus directory
+# per fuzz/targets/fuzz_*.cpp and one fuzz_property_<group> per corpus directory
 # corpora/fuzz/fuzz_property_<group>/ — landed in OUT with its seed corpus
 # zip, its options file and (when the corpus has one) its dictionary, and
 # that each binary runs up to 40 of its seed inputs cleanly. The expected
@@ -37,7 +37,7 @@ start=$(date +%s)
 "$root/.clusterfuzzlite/build.sh" || { echo "build.sh failed" >&2; exit 1; }
 echo "clusterfuzzlite_build: build.sh took $(($(date +%s) - start)) s"
 expected=()
-for src in "$root"/fuzz/fuzz_*.cpp; do expected+=("$(basename "$src" .cpp)"); done
+for src in "$root"/fuzz/targets/fuzz_*.cpp; do expected+=("$(basename "$src" .cpp)"); done
 for d in "$root"/corpora/fuzz/fuzz_property_*/; do expected+=("$(basename "$d")"); done
 status=0
 for t in "${expected[@]}"; do
