@@ -38,6 +38,22 @@ RunOptions default_run(std::uint64_t seed, const std::string& glob = "*") {
   return o;
 }
 
+// A run's findings as "CLAUSE(status) ..." (for the message), and whether
+// one of `clauses` is among them as a fail.
+struct FailedAnyOf {
+  std::string found;
+  bool hit = false;
+};
+FailedAnyOf failed_any_of(const RunResult& run, const std::vector<std::string>& clauses) {
+  FailedAnyOf r;
+  for (const auto& co : run.clauses) {
+    if (!co.finding) continue;
+    r.found += std::string(co.clause->id) + "(" + clause_status_name(co.status) + ") ";
+    for (const auto& c : clauses) r.hit = r.hit || (co.clause->id == c && co.status == ClauseStatus::Fail);
+  }
+  return r;
+}
+
 struct Outcome {
   bool killed = false;
   std::string detail;
@@ -124,13 +140,7 @@ TEST(FaultKill, FaultsPastTheOldGeneratorsReachFailAtSeedsOneToThree) {
     for (std::uint64_t seed = 1; seed <= 3; ++seed) {
       faults::FaultyImplementation impl(fault);
       const RunResult run = run_certification(impl, default_run(seed));
-      std::string found;
-      bool hit = false;
-      for (const auto& co : run.clauses) {
-        if (!co.finding) continue;
-        found += std::string(co.clause->id) + "(" + clause_status_name(co.status) + ") ";
-        for (const auto& c : clauses) hit = hit || (co.clause->id == c && co.status == ClauseStatus::Fail);
-      }
+      const auto [found, hit] = failed_any_of(run, clauses);
       std::printf("%-34s seed %llu: %s\n", name.c_str(), static_cast<unsigned long long>(seed), found.c_str());
       EXPECT_TRUE(hit) << name << " at seed " << seed << ": found " << found;
       EXPECT_EQ(judge(run, nullptr).exit_code, 1) << name << " at seed " << seed;
@@ -158,13 +168,7 @@ TEST(FaultKill, TwoBehavioursTheR6WireHidesAreFoundAtSeedsOneToThree) {
     for (std::uint64_t seed = 1; seed <= 3; ++seed) {
       faults::FaultyImplementation impl(fault);
       const RunResult run = run_certification(impl, default_run(seed));
-      std::string found;
-      bool hit = false;
-      for (const auto& co : run.clauses) {
-        if (!co.finding) continue;
-        found += std::string(co.clause->id) + "(" + clause_status_name(co.status) + ") ";
-        hit = hit || (co.clause->id == clause && co.status == ClauseStatus::Fail);
-      }
+      const auto [found, hit] = failed_any_of(run, {clause});
       std::printf("%-30s seed %llu: %s\n", name.c_str(), static_cast<unsigned long long>(seed), found.c_str());
       EXPECT_TRUE(hit) << name << " at seed " << seed << ": found " << found;
       EXPECT_EQ(judge(run, nullptr).exit_code, clause == "LAYER-DEFAULT-1" ? 0 : 1) << name << " at seed " << seed;
