@@ -17,6 +17,7 @@
 #include "command_text.h"
 #include "exec_implementation.h"
 #include "faulty_implementation.h"
+#include "forwarding_implementation.h"
 #include "implementation.h"
 #include "reference_implementation.h"
 #include "report.h"
@@ -416,6 +417,31 @@ TEST(Capability, ExecAndIsolatedPluginRoutesCertifyTheReferenceWithAll) {
     EXPECT_TRUE(judge(run, nullptr).new_failures.empty()) << spec;
     EXPECT_TRUE(run.complete) << spec;
   }
+}
+
+// A count or a level that is not a whole number is a malformed answer
+// (capability_answer.cpp reads it exactly), not a count of 0 that a mesh
+// with no polygons would then pass: an answer that spells the face count
+// "O" (a letter) for the empty node is a finding naming the line.
+TEST(Capability, AnUnreadableFaceCountIsAFindingNotAZero) {
+  class SpelledCount final : public ForwardingImplementation {
+   public:
+    explicit SpelledCount(Implementation* to) : ForwardingImplementation(to) {}
+    Document request(const std::string& line) override {
+      Document d = ForwardingImplementation::request(line);
+      const auto at = d.text.find("faces 0\n");
+      if (at != std::string::npos) d.text.replace(at, 8, "faces O\n");
+      return d;
+    }
+  };
+  ReferenceImplementation good;
+  SpelledCount spelled(&good);
+  const Node empty;
+  EXPECT_FALSE(check_subdivision(empty, good, 1).has_value());
+  const auto f = check_subdivision(empty, spelled, 1);
+  ASSERT_TRUE(f.has_value());
+  EXPECT_EQ(f->clause, "SUBD-CATMARK-1");
+  EXPECT_NE(f->message.find("unreadable line \"faces O\""), std::string::npos) << f->message;
 }
 
 }  // namespace
