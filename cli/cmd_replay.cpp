@@ -137,6 +137,13 @@ int run(const Options& o) {
   say("{} {} ({}): {}\n", shown, r.failure->clause, clause_level_name(clause->level), r.failure->message);
   for (const Finding& also : r.also_failed)  // what the same end shows besides (the late view's)
     say("also {} {}: {}\n", finding_status_name(also.status), also.clause, also.message);
+  if (r.failure->host_sent_seen) {  // the Verse wire: what the host sent back after the command
+    say("the host sent back {} message(s) after it{}\n", r.failure->host_sent_count,
+        r.failure->host_sent.empty() ? "" : ", as vgc's mirror applied them:");
+    for (const std::string& line : r.failure->host_sent) say("  {}\n", line);
+    if (r.failure->host_sent_count > r.failure->host_sent.size())
+      say("  ... and {} more\n", r.failure->host_sent_count - r.failure->host_sent.size());
+  }
   say("spec ({}): {}\n", clause->source, clause->text);
   if (clause->level == ClauseLevel::Should)
     say("verdict: a SHOULD clause not met: certify reports it as \"{}\" and the verdict stands (not "

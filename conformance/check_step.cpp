@@ -246,20 +246,39 @@ void judge_derived(Judging& j) {
   }
 }
 
-}  // namespace
-
 // The step in check_step.h's order: did the call answer, was the command
 // carried and read; (1) the verdict, (2) the reason code, (3) the snapshot,
-// (4) the derived document. The first step that decides ends it.
+// (4) the derived document. The first step that decides ends it (true).
+bool decide_step(Judging& j) {
+  if (call_failed(j) || not_sent(j) || unreadable(j)) return true;
+  take_reported_verdict(j);
+  if (read_verdict_from_state(j) || verdict_differs(j)) return true;
+  if (auto note = reason_note(j.c, j.result.expected, j.answer)) j.result.notes.push_back(std::move(*note));
+  if (snapshot_unread(j) || snapshot_differs(j)) return true;
+  judge_derived(j);
+  return false;
+}
+
+// Every finding of the step carries what the host sent back after it, as
+// the route's mirror applied it (Answer::host_sent; the Verse wire).
+void attach_host_sent(const Answer& answer, StepResult* result) {
+  if (!answer.host_sent_seen) return;
+  auto stamp = [&answer](Finding& f) {
+    f.host_sent_seen = true;
+    f.host_sent = answer.host_sent;
+    f.host_sent_count = answer.host_sent_count;
+  };
+  if (result->failure) stamp(*result->failure);
+  for (Finding& note : result->notes) stamp(note);
+}
+
+}  // namespace
+
 StepResult judge_step(const Node& before, const Command& c, const Answer& answer, StepResult result,
                       Implementation& sut, Node* after, bool follow_choices) {
   Judging j{before, c, answer, sut, after, follow_choices, std::move(result), print_command(c), {}, {}, false, {}};
-  if (call_failed(j) || not_sent(j) || unreadable(j)) return std::move(j.result);
-  take_reported_verdict(j);
-  if (read_verdict_from_state(j) || verdict_differs(j)) return std::move(j.result);
-  if (auto note = reason_note(c, j.result.expected, answer)) j.result.notes.push_back(std::move(*note));
-  if (snapshot_unread(j) || snapshot_differs(j)) return std::move(j.result);
-  judge_derived(j);
+  decide_step(j);
+  attach_host_sent(answer, &j.result);
   return std::move(j.result);
 }
 

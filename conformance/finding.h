@@ -11,6 +11,7 @@
 // name.
 #pragma once
 
+#include <cstddef>
 #include <string>
 #include <utility>
 #include <vector>
@@ -47,6 +48,15 @@ struct Finding {
   // the blamed one first; empty for a finding no node rule decided (a
   // derived line, a capability check, a fresh node).
   std::vector<Rule> rules;
+  // What the implementation sent back after the step, on a route that
+  // watches it (the Verse wire, Answer::host_sent): the host's messages for
+  // the node, printed as commands in the order vgc's mirror applied them,
+  // the first kHostSentKept of host_sent_count. host_sent_count 0 with
+  // host_sent_seen: the host sent nothing. Not seen (false) on routes that
+  // answer for themselves, and for findings no step made.
+  bool host_sent_seen = false;
+  std::vector<std::string> host_sent;
+  std::size_t host_sent_count = 0;
 };
 
 }  // namespace vgc

@@ -62,7 +62,21 @@ struct Answer {
   // effect it announced was applied, even when the state shows no change
   // (a delete of an element the watching session never saw). check_step.h.
   std::string broadcast;
+  // For a route that watches what the implementation sends back (the Verse
+  // wire): every message the host sent for the node after the command,
+  // printed as a command, in the order the route's mirror applied them (the
+  // first kHostSentKept; host_sent_count counts all). A finding on the step
+  // carries them (Finding::host_sent), so a person reading it sees what the
+  // host said, not only what vgc concluded. Empty when the host sent
+  // nothing, and on routes that answer for themselves (exec, plugin).
+  bool host_sent_seen = false;  // the route watched (host_sent is meaningful, empty or not)
+  std::vector<std::string> host_sent;
+  std::size_t host_sent_count = 0;
 };
+// How many of the messages a host sent for one command an Answer and a
+// Finding keep (Answer::host_sent): a command writes at most a few slots;
+// a host that floods is bounded.
+inline constexpr std::size_t kHostSentKept = 16;
 
 // The text documents of snapshot.h and derived_document.h, as the
 // implementation printed them.

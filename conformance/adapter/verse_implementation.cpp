@@ -602,7 +602,11 @@ bool VerseImplementation::absorb(const verse::WireCommand& w, std::string* error
   const bool pooled = pool_.holds(g->node_id);
   if (!pooled && !(have_node_ && g->node_id == node_)) return true;  // another node
   VerseNodeMirror& m = pooled ? *pool_.mirror(g->node_id) : mirror_;
-  if (!pooled && counting_broadcasts_ && first_broadcast_.empty()) first_broadcast_ = print_command(g->command);
+  if (!pooled && counting_broadcasts_) {
+    if (first_broadcast_.empty()) first_broadcast_ = print_command(g->command);
+    if (host_sent_.size() < kHostSentKept) host_sent_.push_back(print_command(g->command));
+    ++host_sent_count_;
+  }
   const bool follow_layers = !pooled || !pool_.settled(g->node_id);
   if (const auto* lc = std::get_if<cmd::LayerCreate>(&g->command); lc && !lc->name.empty() && follow_layers) {
     // (While a batch settles, mirror_ lacks only the slot writes of the
@@ -856,12 +860,18 @@ Answer VerseImplementation::apply_one(const Command& c) {
   ++commands_sent_;
   if (may_desynchronise_r6(c)) desync_risk_ = true;
   first_broadcast_.clear();
+  host_sent_.clear();
+  host_sent_count_ = 0;
   counting_broadcasts_ = true;
   Answer a = settle(what);
   counting_broadcasts_ = false;
   if (a.status != CallStatus::Ok) return a;
   a.verdict_reported = false;  // `done`: a host acknowledges nothing
   a.broadcast = first_broadcast_;  // ... but what it tells its subscribers is its verdict
+  a.host_sent_seen = true;
+  a.host_sent = std::move(host_sent_);
+  a.host_sent_count = host_sent_count_;
+  host_sent_.clear();
   since_fresh_.push_back(c);
   return a;
 }
@@ -934,9 +944,12 @@ Answer VerseImplementation::apply_batch(const std::vector<Command>& batch, bool 
 Answer VerseImplementation::answer_from_batch(const Command& c, const std::vector<verse::WireCommand>& received,
                                               std::size_t counted) {
   Answer a;
+  a.host_sent_seen = true;
   for (std::size_t k = 0; k < received.size(); ++k) {
     const auto& g = std::get<verse::wire::Geometry>(received[k]);
     if (a.broadcast.empty() && k < counted) a.broadcast = print_command(g.command);
+    if (a.host_sent.size() < kHostSentKept) a.host_sent.push_back(print_command(g.command));
+    ++a.host_sent_count;
     std::string error;
     if (!mirror_.apply(g.command, &error))
       return failed(CallStatus::ProtocolError, "after `" + print_command(c) + "`: " + error);

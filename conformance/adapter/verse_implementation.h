@@ -258,6 +258,10 @@ class VerseImplementation final : public Implementation {
   // first one the observer received for the current node, printed.
   bool counting_broadcasts_ = false;
   std::string first_broadcast_;
+  // What the host sent for the node while the last command settled, in the
+  // order the mirror applied it (Answer::host_sent).
+  std::vector<std::string> host_sent_;
+  std::size_t host_sent_count_ = 0;
   std::uint32_t node_ = 0;
   bool have_node_ = false;
   bool broken_ = true;  // reset() must log in again

@@ -186,6 +186,11 @@ ClauseOutcome clause_from(const Clause& clause, const json& c) {
     co.finding->observed_document = c.value("observed_document", std::string());
     co.finding->expected_line = c.value("expected_line", std::string());
     co.finding->observed_line = c.value("observed_line", std::string());
+    if (c.contains("host_sent")) {
+      co.finding->host_sent_seen = true;
+      for (const auto& line : c["host_sent"]) co.finding->host_sent.push_back(line.get<std::string>());
+      co.finding->host_sent_count = c.value("host_sent_count", co.finding->host_sent.size());
+    }
     std::string text;
     for (const auto& line : c.value("counterexample_commands", json::array())) text += line.get<std::string>() + "\n";
     TextError e;

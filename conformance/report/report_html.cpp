@@ -118,6 +118,22 @@ void finding_section(pugi::xml_node parent, const ClauseOutcome& co, const Verdi
     add(r2, "th", "observed");
     add(add(r2, "td"), "code", f.observed_line.empty() ? "(no such line)" : f.observed_line);
   }
+  if (f.host_sent_seen) {  // the Verse wire: what the host sent back after the last command
+    auto p = add(sec, "p");
+    add(p, "strong", "What the host sent back after the last command: ");
+    if (f.host_sent.empty()) {
+      add_text(p, "nothing (no message for the node).");
+    } else {
+      add_text(p, "as vgc's mirror applied it, in order" +
+                      (f.host_sent_count > f.host_sent.size()
+                           ? ", the first " + std::to_string(f.host_sent.size()) + " of " +
+                                 std::to_string(f.host_sent_count)
+                           : std::string()) +
+                      ":");
+      auto list = add(sec, "ol", {}, "host-sent");
+      for (const std::string& line : f.host_sent) add(add(list, "li"), "code", line);
+    }
+  }
   if (ctx.baseline && ctx.baseline->reasons.count(id)) {
     auto p = add(sec, "p");
     add(p, "strong", "Baseline says: ");

@@ -94,6 +94,10 @@ void add_finding_fields(json& c, const ClauseOutcome& co, const ReportContext& c
     c["observed_document"] = f.observed_document;
   if (!f.expected_line.empty()) c["expected_line"] = f.expected_line;
   if (!f.observed_line.empty()) c["observed_line"] = f.observed_line;
+  if (f.host_sent_seen) {  // the Verse wire: what the host sent back after the last command
+    c["host_sent"] = f.host_sent;
+    c["host_sent_count"] = f.host_sent_count;
+  }
   if (co.program.request) {  // the capability check vgc replay repeats after the commands
     c["capability_check"] = {{"capability", co.program.request->capability},
                              {"variant", co.program.request->variant}};

@@ -15,6 +15,20 @@ namespace vgc {
 
 namespace {
 
+// The Verse wire: what the host sent back after the counterexample's last
+// command, as vgc's mirror applied it (Finding::host_sent); empty on
+// routes that answer for themselves.
+std::string host_sent_paragraph(const Finding& f) {
+  if (!f.host_sent_seen) return {};
+  if (f.host_sent.empty()) return "**What the host sent back after the last command:** nothing.\n\n";
+  std::string out = "**What the host sent back after the last command** (as vgc's mirror applied it";
+  if (f.host_sent_count > f.host_sent.size())
+    out += fmt::format(", the first {} of {}", f.host_sent.size(), f.host_sent_count);
+  out += "):\n\n```\n";
+  for (const std::string& line : f.host_sent) out += line + "\n";
+  return out + "```\n\n";
+}
+
 // The headline, the tallies, the re-run line and the route's limits.
 void write_summary_head(const RunResult& run, const Verdict& v, const ReportContext& ctx, std::string& out) {
   const char* headline = v.name == "conformant"       ? "CONFORMANT"
@@ -102,6 +116,7 @@ void write_summary_findings(const RunResult& run, const Verdict& v, const Report
     out += fmt::format("> {} ({})\n\n", co.clause->text, co.clause->source);
     out += fmt::format("Suite's reading: {}\n\n", co.clause->reading);
     out += fmt::format("**What the implementation did:** {}\n\n", co.finding->message);
+    out += host_sent_paragraph(*co.finding);
     if (ctx.baseline && ctx.baseline->reasons.count(std::string(co.clause->id)))
       out += fmt::format("Baseline says: {}\n\n", ctx.baseline->reasons.at(std::string(co.clause->id)));
     const std::string drawn = co.program_origin.empty() ? fmt::format(", seed {}", co.seed) : "";

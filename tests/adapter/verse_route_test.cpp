@@ -307,6 +307,57 @@ TEST(VerseRoute, ABroadcastOfARefusedCommandIsItsVerdict) {
   EXPECT_TRUE(named);
 }
 
+// Issue 29 item 7: a finding on the wire carries what the host sent back
+// after the counterexample's last command, as the route's mirror applied
+// it (Finding::host_sent), so that a person reading it at 2 a.m. sees what
+// the host said and not only what vgc concluded from it. A host that
+// announces a delete it did not apply shows that delete; a host that
+// ignores a polygon delete shows that it sent nothing.
+TEST(VerseRoute, AFindingCarriesWhatTheHostSentBackAfterItsLastCommand) {
+  {
+    ServedHost host({"--r6-deviation", "announce-missing-deletes"}, {});
+    ASSERT_NE(host.port(), 0) << "no port in \"" << host.line() << "\"";
+    auto sut = open_verse(host);
+    ASSERT_NE(sut, nullptr);
+    RunOptions o = options(40);
+    o.clause_glob = "VERTEX-DELETE-*";
+    const RunResult run = run_certification(*sut, o);
+    bool seen = false;
+    for (const ClauseOutcome& co : run.clauses) {
+      if (co.clause->id != "VERTEX-DELETE-1" || !co.finding) continue;
+      seen = true;
+      // What the host announced for the last command (the deviation sends
+      // a vertex_delete, whatever the command) is what it sent back first.
+      EXPECT_TRUE(co.finding->host_sent_seen);
+      ASSERT_EQ(co.finding->host_sent_count, co.finding->host_sent.size());
+      ASSERT_FALSE(co.finding->host_sent.empty()) << co.finding->message;
+      EXPECT_EQ(co.finding->host_sent.front().rfind("vertex_delete ", 0), 0u) << co.finding->host_sent.front();
+      EXPECT_NE(co.finding->message.find("the host sent its subscribers `" + co.finding->host_sent.front() + "`"),
+                std::string::npos)
+          << co.finding->message;
+    }
+    EXPECT_TRUE(seen);
+  }
+  {
+    ServedHost host({"--impl", std::string("plugin:") + VGC_FAULT_PLUGIN}, {"VGC_FAULT=polygon-delete-ignored"});
+    ASSERT_NE(host.port(), 0) << "no port in \"" << host.line() << "\"";
+    auto sut = open_verse(host);
+    ASSERT_NE(sut, nullptr);
+    RunOptions o = options(40);
+    o.clause_glob = "POLY-DELETE-*";
+    const RunResult run = run_certification(*sut, o);
+    bool seen = false;
+    for (const ClauseOutcome& co : run.clauses) {
+      if (co.clause->id != "POLY-DELETE-1" || !co.finding) continue;
+      seen = true;
+      EXPECT_TRUE(co.finding->host_sent_seen) << co.finding->message;
+      EXPECT_EQ(co.finding->host_sent_count, 0u) << co.finding->host_sent.front();
+      EXPECT_TRUE(co.finding->host_sent.empty());
+    }
+    EXPECT_TRUE(seen);
+  }
+}
+
 // Issue 27 item 3: a late subscriber. A host that tells a session
 // subscribing later another default for a VERTEX_XYZ layer than it told
 // those who watched the layer's creation (`--r6-deviation xyz-no-default`,

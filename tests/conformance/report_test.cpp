@@ -18,6 +18,7 @@
 #include "command_text.h"
 #include "exec_implementation.h"  // shell_quote
 #include "faulty_implementation.h"
+#include "merge_runs.h"
 #include "property.h"
 #include "reference_implementation.h"
 #include "report.h"
@@ -215,6 +216,56 @@ TEST_F(Report, SummaryStartsWithTheVerdictAndShowsTheReplay) {
       << "the shrunk counterexample is not inline";
   const std::string replay = replay_command((w_.dir / counterexample_path(co)).string(), "exec:./my host --serve");
   EXPECT_NE(s.find("Replay: `" + replay + "`"), std::string::npos) << replay;
+}
+
+// Issue 29 item 7: what a host sent back after the last command (the
+// Verse wire, Finding::host_sent) is in summary.md, report.html and
+// report.json, bounded, and `vgc merge` reads it back; a finding from a
+// route that answers for itself (this in-process fault) shows no such line.
+TEST(ReportHostSent, WhatTheHostSentBackIsShownBoundedAndReadBack) {
+  RunResult run = faulty_run();
+  ClauseOutcome* failing = nullptr;
+  for (auto& co : run.clauses)
+    if (co.clause->id == kClause) failing = &co;
+  ASSERT_TRUE(failing && failing->finding);
+  TempDir tmp;
+  {
+    const Written plain = write(tmp.path() / "plain", run, "verse:127.0.0.1:4950", "2026-11-22T04:00:00Z");
+    ASSERT_TRUE(plain.ok) << plain.error;
+    EXPECT_EQ(read(plain.dir / "summary.md").find("What the host sent back"), std::string::npos);
+  }
+  failing->finding->host_sent_seen = true;
+  failing->finding->host_sent = {"bone_destroy 1", "layer_destroy 3"};
+  failing->finding->host_sent_count = 20;
+  const Written w = write(tmp.path() / "wire", run, "verse:127.0.0.1:4950", "2026-11-22T04:00:00Z");
+  ASSERT_TRUE(w.ok) << w.error;
+  const std::string summary = read(w.dir / "summary.md");
+  EXPECT_NE(summary.find("**What the host sent back after the last command** (as vgc's mirror applied it, the "
+                         "first 2 of 20):\n\n```\nbone_destroy 1\nlayer_destroy 3\n```"),
+            std::string::npos)
+      << summary;
+  const std::string html = read(w.dir / "report.html");
+  EXPECT_NE(html.find("What the host sent back after the last command"), std::string::npos);
+  EXPECT_NE(html.find("<code>layer_destroy 3</code>"), std::string::npos);
+  const auto j = nlohmann::json::parse(read(w.dir / "report.json"));
+  bool in_json = false;
+  for (const auto& c : j["clauses"])
+    if (c["id"] == kClause) {
+      in_json = true;
+      EXPECT_EQ(c["host_sent"], nlohmann::json::array({"bone_destroy 1", "layer_destroy 3"}));
+      EXPECT_EQ(c["host_sent_count"], 20);
+    }
+  EXPECT_TRUE(in_json);
+  MergedRun merged;
+  std::string error;
+  ASSERT_TRUE(merge_runs({w.dir.string()}, &merged, &error)) << error;
+  bool read_back = false;
+  for (const auto& co : merged.run.clauses)
+    if (co.clause->id == kClause && co.finding) {
+      read_back = co.finding->host_sent_seen && co.finding->host_sent_count == 20 &&
+                  co.finding->host_sent == std::vector<std::string>{"bone_destroy 1", "layer_destroy 3"};
+    }
+  EXPECT_TRUE(read_back);
 }
 
 TEST_F(Report, CounterexamplesParseAndReplayToTheSameClause) {

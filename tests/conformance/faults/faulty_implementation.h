@@ -16,11 +16,16 @@ class FaultyImplementation final : public Implementation {
   std::string name() const override { return "fault:" + fault_list_name(faults_); }
   Answer reset() override {
     node_ = FaultyNode(faults_);
-    return Answer{CallStatus::Ok, true, "", ""};
+    Answer a;
+    a.applied = true;
+    return a;
   }
   Answer apply(const Command& c) override {
-    const FaultyAnswer a = node_.apply(c);
-    return Answer{CallStatus::Ok, a.applied, a.reason, ""};
+    const FaultyAnswer f = node_.apply(c);
+    Answer a;
+    a.applied = f.applied;
+    a.reason = f.reason;
+    return a;
   }
   Document snapshot() override { return {CallStatus::Ok, node_.snapshot(), ""}; }
   Document derived() override { return {CallStatus::Ok, node_.derived(), ""}; }
