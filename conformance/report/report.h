@@ -59,6 +59,9 @@ std::string inline_program(const ClauseOutcome& co);
 // What the inline program is, for its heading: "Shrunk counterexample",
 // the first program a tolerated clause was seen on, or program_origin.
 std::string counterexample_heading(const ClauseOutcome& co);
+// "1 command" or "N commands": the counterexample's length as the report
+// pages and the .vgc file's header say it.
+std::string commands_counted(std::size_t n);
 // The one-line command that replays a counterexample file.
 std::string replay_command(const std::string& file, const std::string& implementation_spec);
 // The same for this run's implementation and environment (ctx).

@@ -98,6 +98,10 @@ std::string inline_program(const ClauseOutcome& co) {
          " in all: " + counterexample_path(co) + " holds every one) ...\n" + print_program(tail);
 }
 
+std::string commands_counted(std::size_t n) {
+  return std::to_string(n) + (n == 1 ? " command" : " commands");
+}
+
 std::string counterexample_heading(const ClauseOutcome& co) {
   if (!co.program_origin.empty()) return co.program_origin;
   return co.tolerated_from_start ? "First program it was seen on (tolerated from the start, not shrunk)"
@@ -149,12 +153,12 @@ std::string render_counterexample(const ClauseOutcome& co, const ReportContext& 
   out += "# spec (" + std::string(co.clause->source) + "): " + std::string(co.clause->text) + "\n";
   out += "# replay: " + replay_command(file, ctx) + "\n";
   if (co.program.request) {
-    out += "# " + std::to_string(co.program.commands.size()) +
-           " commands from a fresh node; then the check of the capability \"" + co.program.request->capability +
+    out += "# " + commands_counted(co.program.commands.size()) +
+           " from a fresh node; then the check of the capability \"" + co.program.request->capability +
            "\" (variant " + std::to_string(co.program.request->variant) +
            ") shows it. The last line (\"#! capability\") tells vgc replay to repeat that check.\n";
   } else {
-    out += "# " + std::to_string(co.program.commands.size()) + " commands from a fresh node; the last one shows it.\n";
+    out += "# " + commands_counted(co.program.commands.size()) + " from a fresh node; the last one shows it.\n";
   }
   out += print_program(co.program);
   return out;

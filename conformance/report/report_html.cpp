@@ -156,8 +156,8 @@ void finding_section(pugi::xml_node parent, const ClauseOutcome& co, const Verdi
 
   const std::string file = (std::filesystem::path(ctx.run_dir) / counterexample_path(co)).string();
   auto h4 = add(sec, "h4");
-  add_text(h4, counterexample_heading(co) + " — " + std::to_string(co.program.commands.size()) +
-                   " commands from a fresh node; found by " + co.found_by +
+  add_text(h4, counterexample_heading(co) + " — " + commands_counted(co.program.commands.size()) +
+                   " from a fresh node; found by " + co.found_by +
                    (co.program_origin.empty() ? ", seed " + std::to_string(co.seed) : std::string()) + " (");
   auto link = add(h4, "a", counterexample_path(co));
   link.append_attribute("href") = counterexample_path(co).c_str();

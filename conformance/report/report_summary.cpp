@@ -120,8 +120,8 @@ void write_summary_findings(const RunResult& run, const Verdict& v, const Report
     if (ctx.baseline && ctx.baseline->reasons.count(std::string(co.clause->id)))
       out += fmt::format("Baseline says: {}\n\n", ctx.baseline->reasons.at(std::string(co.clause->id)));
     const std::string drawn = co.program_origin.empty() ? fmt::format(", seed {}", co.seed) : "";
-    out += fmt::format("{} ({} commands, from a fresh node; found by `{}`{}):\n\n```\n{}```\n\n",
-                       counterexample_heading(co), co.program.commands.size(), co.found_by, drawn,
+    out += fmt::format("{} ({}, from a fresh node; found by `{}`{}):\n\n```\n{}```\n\n",
+                       counterexample_heading(co), commands_counted(co.program.commands.size()), co.found_by, drawn,
                        inline_program(co));
     out += fmt::format("Replay: `{}`\n\n", replay_command(file, ctx));
   }

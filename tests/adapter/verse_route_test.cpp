@@ -220,8 +220,9 @@ TEST(VerseRoute, AHostLikeR6IsCertifiedToTheEndInItsBoneForm) {
     EXPECT_NE(co.status, ClauseStatus::Unchecked) << co.clause->id << ": " << co.note;
     EXPECT_NE(co.status, ClauseStatus::Timeout) << co.clause->id << ": " << (co.finding ? co.finding->message : co.note);
     EXPECT_NE(co.status, ClauseStatus::Crash) << co.clause->id << ": " << (co.finding ? co.finding->message : co.note);
-    if (co.clause->id == "BONE-CREATE-1" || co.clause->id == "BONE-DESTROY-1" || co.clause->id == "BONE-NAME-1")
+    if (co.clause->id == "BONE-CREATE-1" || co.clause->id == "BONE-DESTROY-1" || co.clause->id == "BONE-NAME-1") {
       EXPECT_EQ(co.status, ClauseStatus::Pass) << co.clause->id << ": " << (co.finding ? co.finding->message : co.note);
+    }
   }
 }
 
