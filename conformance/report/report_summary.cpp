@@ -134,13 +134,9 @@ void write_summary_tables(const RunResult& run, const Verdict& v, std::string& o
     out += fmt::format("| {} | {} | {} | {} |\n", kind, k.sent, k.applied, rej.empty() ? "-" : rej);
   }
   if (!run.rule_uses.empty()) {
-    out += "\n## Rules used\n\nJudged uses of each rule of the reference node (docs/clauses.md lists a clause's "
-           "rules): how often a judged step reached it.\n\n| rule | clause | judged uses |\n|---|---|---|\n";
-    for (const auto& [rule, n] : run.rule_uses) {
-      Rule r = Rule::None;
-      parse_rule_name(rule, &r);
-      out += fmt::format("| {} | {} | {} |\n", rule, rule_clause(r), n);
-    }
+    out += "\n## Rules used\n\nJudged uses of each rule of the reference node and of its derived document "
+           "(docs/clauses.md lists a clause's rules): how often a judged step reached it.\n\n| rule | clause | judged uses |\n|---|---|---|\n";
+    for (const auto& [rule, n] : run.rule_uses) out += fmt::format("| {} | {} | {} |\n", rule, rule_name_clause(rule), n);
   }
 }
 
