@@ -32,6 +32,12 @@ const char* finding_status_name(FindingStatus s) {
   return "?";
 }
 
+std::optional<FindingStatus> finding_status_named(std::string_view name) {
+  for (FindingStatus s : {FindingStatus::Fail, FindingStatus::Crash, FindingStatus::Timeout, FindingStatus::NotJudged})
+    if (name == finding_status_name(s)) return s;
+  return std::nullopt;
+}
+
 Finding call_failure(std::string_view clause, CallStatus s, const std::string& what, const std::string& detail) {
   Finding f;
   f.status = status_of(s);

@@ -507,7 +507,7 @@ bool check_late_view(CaseContext& c) {
   if (!case_still_judged(c)) return false;
   const auto localize = [&c](const std::string& shape) {
     if (c.shrinking)
-      return c.last_failure && finding_kind(*c.last_failure) == "hidden-state" && shape == c.sought_late_shape;
+      return c.last_failure && finding_kind_of(*c.last_failure) == FindingKind::HiddenState && shape == c.sought_late_shape;
     const auto it = c.late_shapes.find(shape);
     return it == c.late_shapes.end() || !is_tolerated(c, it->second);
   };

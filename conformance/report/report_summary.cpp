@@ -17,9 +17,7 @@ namespace {
 
 // The headline, the tallies, the re-run line and the route's limits.
 void write_summary_head(const RunResult& run, const Verdict& v, const ReportContext& ctx, std::string& out) {
-  const char* headline = v.name == "conformant"       ? "CONFORMANT"
-                         : v.name == "not-conformant" ? "NOT CONFORMANT"
-                                                      : "INCOMPLETE";
+  const char* headline = verdict_kind_headline(v.kind);
   out += fmt::format("# vgc certify: {} — {}\n\n", ctx.implementation_spec, headline);
   const std::string tally = shown_status_tally(run, v);  // the same counts as every other report
   out += fmt::format("{} clauses: {}. Seed {}, {} cases per property, {:.1f} s{}.\n\n", run.clauses.size(), tally,
@@ -55,9 +53,10 @@ void write_summary_unjudged(const RunResult& run, const Verdict& v, std::string&
   if (run.preflight)
     out += fmt::format("**The implementation could not show a fresh node** ({}: {}); nothing else was judged.\n\n",
                        run.preflight->clause, run.preflight->message);
-  if (v.name == "incomplete" || !v.unchecked.empty()) {
-    out += v.name == "incomplete" ? "The run is incomplete: the verdict is neither a pass nor a failure.\n\n"
-                                  : "Not everything could be judged:\n\n";
+  const bool incomplete = v.kind == VerdictKind::Incomplete;
+  if (incomplete || !v.unchecked.empty()) {
+    out += incomplete ? "The run is incomplete: the verdict is neither a pass nor a failure.\n\n"
+                      : "Not everything could be judged:\n\n";
     for (const auto& p : run.properties)
       if (p.status == PropertyStatus::Stopped) out += fmt::format("- property `{}` stopped: {}\n", p.id, p.note);
     for (const auto& co : run.clauses)
