@@ -267,9 +267,11 @@ int run_mesh(const Options& o) {
     say("  built       the mesh: {} commands, the same snapshot as the reference ({:.1f} s)\n", r.commands,
         r.build_seconds);
   }
-  std::map<std::string, int> tally;
+  std::map<std::string, int> tally;  // by name: printed in that order
+  bool checks_judged = false;        // a check passed or failed
   for (const MeshCheckOutcome& c : r.checks) {
     ++tally[mesh_check_status_name(c.status)];
+    checks_judged = checks_judged || c.status == MeshCheckStatus::Pass || c.status == MeshCheckStatus::Fail;
     const std::string what = c.capability + (c.level ? fmt::format(" level {}", c.level) : "");
     const std::string detail = c.finding ? c.finding->message : c.note;
     say("  {:<11} {:<18} {:<20} {:>6.2f} s  {}\n", mesh_check_status_name(c.status), c.clause, what, c.seconds,
@@ -281,14 +283,16 @@ int run_mesh(const Options& o) {
     if (co.finding)
       say("           replay {}: {}\n", co.clause->id,
           replay_command((std::filesystem::path(ctx.run_dir) / counterexample_path(co)).string(), ctx));
-  const bool checks_judged = tally.count("pass") || tally.count("fail");
   std::string counts;
   for (const auto& [status, n] : tally) counts += fmt::format("{}{} {}", counts.empty() ? "" : ", ", n, status);
   if (!r.build_failure) counts += std::string(counts.empty() ? "" : "; ") + "stored as the reference stores it";
   // The verdict is the report's (verdict.h, from the clauses' statuses).
-  const char* verdict_name = verdict.name == "not-conformant" ? "not conformant"
-                             : verdict.name == "incomplete"  ? "incomplete"
-                                                             : "conformant";
+  const char* verdict_name = "conformant";
+  switch (verdict.kind) {
+    case VerdictKind::Conformant: break;
+    case VerdictKind::NotConformant: verdict_name = "not conformant"; break;
+    case VerdictKind::Incomplete: verdict_name = "incomplete"; break;
+  }
   say("{}: {} on {} ({})\n", o.impl.route.spec, verdict_name, one_line_text(o.mesh),
       counts.empty() ? "no check run" : counts);
   if (verdict.new_failures.empty() && !checks_judged)
@@ -296,7 +300,7 @@ int run_mesh(const Options& o) {
         "normals, loop (docs/adapters.md section 5)\n");
   say("report: {}/summary.md\n", ctx.run_dir);
   if (!r.stopped_why.empty()) say("  stopped: {}; the verdict is incomplete\n", r.stopped_why);
-  else if (verdict.name == "incomplete")
+  else if (verdict.kind == VerdictKind::Incomplete)
     say("  a check stopped at a limit of vgc's (time or answer size), not at anything the implementation did: "
         "give --timeout more seconds (it scales with the mesh already) and run again\n");
   const int code = cancel_signal() ? 128 + cancel_signal() : verdict.exit_code;
@@ -414,9 +418,9 @@ int run(const Options& o) {
   // report.json give them: "N of M clauses pass, 1 fail, 2 fail (SHOULD), ...".
   int passed = 0;
   std::string tally;
-  for (const auto& [status, n] : shown_status_counts(result, verdict)) {
-    if (status == "pass") passed = n;
-    else tally += fmt::format(", {} {}", n, status);
+  for (const auto& [shown, n] : shown_counts(result, verdict)) {
+    if (shown == ClauseShown{ClauseStatus::Pass, ShownQualifier::None}) passed = n;
+    else tally += fmt::format(", {} {}", n, shown_status_name(shown));
   }
   say("{}: {} ({} of {} clauses pass{}; {:.1f} s)\n", o.impl.route.spec, verdict.name, passed, result.clauses.size(),
              tally, result.seconds);

@@ -7,6 +7,7 @@
 
 #include "clause.h"
 #include "command_text.h"
+#include "derived_document.h"
 #include "rule_clauses.h"
 #include "snapshot.h"
 
@@ -111,6 +112,29 @@ std::string written_by(const std::optional<Written>& w) {
   if (!w || w->rule == Rule::None) return "";
   return " (last written by rule " + std::string(rule_name(w->rule)) +
          (w->step == 0 ? " on the fresh node)" : " at command " + std::to_string(w->step) + ")");
+}
+
+// The node rule that wrote the crease setting a derived crease rule reads
+// (the setting's Written), or Rule::None for a rule that reads no setting.
+Rule setting_rule(const Node& node, DerivedRule r) {
+  switch (r) {
+    case DerivedRule::VertexCreaseConstant:
+    case DerivedRule::VertexCreaseLayer:
+    case DerivedRule::VertexCreaseLayerMissing:
+    case DerivedRule::VertexCreaseInitial: return node.vertex_crease().written.rule;
+    case DerivedRule::EdgeCreaseConstant:
+    case DerivedRule::EdgeCreaseLayer:
+    case DerivedRule::EdgeCreaseLayerMissing:
+    case DerivedRule::EdgeCreaseInitial: return node.edge_crease().written.rule;
+    case DerivedRule::None:
+    case DerivedRule::EdgePerCorner:
+    case DerivedRule::BonePoseRoot:
+    case DerivedRule::BonePoseParentMissing:
+    case DerivedRule::BonePoseChained:
+    case DerivedRule::BonePosePerBone:
+    case DerivedRule::kCount: break;
+  }
+  return Rule::None;
 }
 
 }  // namespace
@@ -265,73 +289,61 @@ std::string difference_shape(const Node& after, const DocumentDifference& d) {
   return shape;
 }
 
-static std::string_view crease_clause(const Node& n, const std::string& name, LayerType required) {
-  if (name.empty()) return "CREASE-DEFAULT-1";
-  const Layer* l = n.find_layer_by_name(name);
-  if (!l || l->type != required) return "CREASE-LAYER-MISSING-1";
-  return required == LayerType::VertexUint32 ? "CREASE-VERTEX-LAYER-1" : "CREASE-EDGE-LAYER-1";
-}
-
 Blame blame_fresh(const Node& fresh, const DocumentDifference& d, bool derived) {
   const std::string& line = d.expected_line.empty() ? d.observed_line : d.expected_line;
   const std::string kind = first_word(line);
   Rule rule = Rule::BaseLayers;
-  if (const auto w = derived ? std::nullopt : line_written(fresh, line); w && w->rule != Rule::None)
+  if (derived) {
+    // An effective crease is read from a crease setting: the rule that
+    // wrote the setting (on a fresh node, node.initial_creases). A fresh
+    // node has no other derived line: any other is the base layers'.
+    if (const Rule wrote = setting_rule(fresh, derived_rule_of(fresh, line)); wrote != Rule::None) rule = wrote;
+  } else if (const auto w = line_written(fresh, line); w && w->rule != Rule::None) {
     rule = w->rule;
-  else if (derived ? kind == "vertex_crease" || kind == "edge_crease"
-                   : (line_kind_bit(kind) & rule_info(Rule::InitialCreases).lines) != 0)
+  } else if ((line_kind_bit(kind) & rule_info(Rule::InitialCreases).lines) != 0) {
     rule = Rule::InitialCreases;
+  }
   Blame b = make_blame({rule}, "");
   b.explanation.erase(0, 1);  // "Blamed on ...": the difference says what the two sides show
   return b;
 }
 
-std::string_view clause_for_derived(const Node& after, std::string_view kind, long bone_id) {
-  if (kind == "vertex_crease") {
-    const auto clause = crease_clause(after, after.vertex_crease().layer, LayerType::VertexUint32);
-    if (clause == "CREASE-DEFAULT-1" && after.vertex_crease().def_crease == 0) return "CREASE-INITIAL-1";
-    return clause;
-  }
-  if (kind == "edge_crease") {
-    const auto clause = crease_clause(after, after.edge_crease().layer, LayerType::PolygonCornerUint32);
-    if (clause == "CREASE-DEFAULT-1" && after.edge_crease().def_crease == 0) return "CREASE-INITIAL-1";
-    return clause;
-  }
-  if (kind == "bone_pose") {
-    auto it = after.bones().find(static_cast<std::uint16_t>(bone_id));
-    if (it != after.bones().end() && !after.bones().count(it->second.parent)) return "BONE-PARENT-1";
-    return "BONE-DOWNSTREAM-1";
-  }
-  return "ATOMIC-1";
+DerivedBlame blame_derived(const Node& after, const DocumentDifference& d) {
+  DerivedBlame b;
+  const std::string& line = d.expected_line.empty() ? d.observed_line : d.expected_line;
+  // The two sides list different lines (one side lacks a line, or the first
+  // difference pairs lines of different identities): for a kind whose
+  // lines a derived rule places, the placement is what differs.
+  const bool other_lines =
+      d.expected_line.empty() || d.observed_line.empty() || line_key(d.expected_line) != line_key(d.observed_line);
+  const DerivedRule place = derived_place_rule(d.kind);
+  // Bone lines follow the live bones, which the snapshot judged equal
+  // first: a bone the model has is blamed on the rule that poses it.
+  b.rule = other_lines && place == DerivedRule::EdgePerCorner ? place : derived_rule_of(after, line);
+  b.clause = std::string(derived_rule_clause(b.rule));
+  const Clause* c = find_clause(b.clause);
+  b.explanation = "Blamed on derived rule " + std::string(derived_rule_name(b.rule)) + " (" + b.clause +
+                  (c ? ", " + std::string(clause_level_name(c->level)) : "") +
+                  "): " + std::string(derived_rule_info(b.rule).says) + ".";
+  return b;
 }
 
-std::string_view clause_for_derived(const Node& after, const DocumentDifference& d, long bone_id) {
-  if (d.kind == "edge_crease") {
-    // "edge_crease <polygon> <corner> <crease>": the two sides list
-    // different edges (a line missing, extra, or for another polygon or
-    // corner) when they disagree on how many corners a polygon has, i.e.
-    // whether its fourth corner is a vertex reference: POLY-TRIANGLE-1.
-    // Only a different crease on the same edge is about creases.
-    if (d.expected_line.empty() || d.observed_line.empty() || line_key(d.expected_line) != line_key(d.observed_line))
-      return "POLY-TRIANGLE-1";
-  }
-  return clause_for_derived(after, d.kind, bone_id);
+std::string_view clause_for_derived(const Node& node, std::string_view kind, long bone_id) {
+  const std::string line = bone_id < 0 ? std::string(kind) : std::string(kind) + " " + std::to_string(bone_id);
+  return derived_rule_clause(derived_rule_of(node, line));
 }
 
 const std::vector<std::string_view>& derived_only_clauses() {
-  static const std::vector<std::string_view> clauses = {"BONE-PARENT-1", "BONE-DOWNSTREAM-1"};
+  static const std::vector<std::string_view> clauses = [] {
+    std::vector<std::string_view> out;
+    for (std::size_t i = 1; i < kDerivedRuleCount; ++i) {
+      const std::string_view clause = derived_rule_clause(static_cast<DerivedRule>(i));
+      if (rules_of_clause(clause).empty() && std::find(out.begin(), out.end(), clause) == out.end())
+        out.push_back(clause);
+    }
+    return out;
+  }();
   return clauses;
-}
-
-long bone_id_of(const std::string& line) {
-  // "bone_pose <id> ..."
-  const auto sp = line.find(' ');
-  if (sp == std::string::npos) return -1;
-  try {
-    return std::stol(line.substr(sp + 1));
-  } catch (...) {
-    return -1;
-  }
 }
 
 }  // namespace vgc

@@ -18,10 +18,13 @@
 // IMPLEMENTATION-DEFINED, then SHOULD): a MUST rule is never hidden behind
 // a weaker one.
 //
-// What remains of the old shape-based attribution is clause_for_derived:
-// the derived document (effective creases, bone world poses) is computed by
-// reference/geometry from the stored state, not decided by a node rule, so
-// a derived line is blamed on the geometry clause of its kind.
+// The derived document (effective creases, bone world poses) is written by
+// no command: the reference reads it from the stored state, and each
+// reading is a named rule of its own (reference/geometry/derived_rule.h).
+// A derived line is blamed the same way, by provenance: on the derived rule
+// that decided the model's line (derived_rule_of), or, where the two sides
+// list different lines of a kind whose lines a derived rule places, on that
+// rule; never on a clause guessed from the line's shape.
 #pragma once
 
 #include <string>
@@ -29,6 +32,7 @@
 #include <vector>
 
 #include "command.h"
+#include "derived_rule.h"
 #include "document_diff.h"
 #include "node.h"
 #include "reason.h"
@@ -62,26 +66,30 @@ Blame blame_snapshot(const Node& before, const Node& after, Reason expected, con
 // nothing else).
 Blame blame_fresh(const Node& fresh, const DocumentDifference& d, bool derived);
 
-// The derived documents differ at a line of `line_kind` ("vertex_crease",
-// "edge_crease", "bone_pose") in the state `after`; `bone_id` is the bone
-// of a bone_pose line.
-std::string_view clause_for_derived(const Node& after, std::string_view line_kind, long bone_id);
+// The derived documents differ at `d` in the state `after` of an applied
+// command: the derived rule that decided the difference (the rule that
+// places lines of its kind, derived_place_rule, where the two sides list
+// different edges of a polygon; otherwise derived_rule_of the model's line,
+// or of the implementation's where the model has none), its clause
+// (rule_clauses.h, derived_rule_clause) and an explanation naming it.
+struct DerivedBlame {
+  DerivedRule rule = DerivedRule::None;
+  std::string clause;
+  std::string explanation;  // "Blamed on derived rule derived.edge_crease.layer (CREASE-EDGE-LAYER-1, MUST): ..."
+};
+DerivedBlame blame_derived(const Node& after, const DocumentDifference& d);
 
-// The same from the whole difference `d` (kind d.kind): edge_crease lines
-// that name different edges (or one side lacking the line) mean the two
-// sides disagree on a polygon's corners (POLY-TRIANGLE-1: a fourth corner
-// that is a vertex reference makes a quad), not on a crease.
-std::string_view clause_for_derived(const Node& after, const DocumentDifference& d, long bone_id);
+// The clause of the derived rule that decides a derived line of
+// `line_kind` ("vertex_crease", "edge_crease", "bone_pose") in `node`;
+// `bone_id` is the bone of a bone_pose line (derived_rule_of answers it).
+std::string_view clause_for_derived(const Node& node, std::string_view line_kind, long bone_id);
 
-// The clauses only the derived document decides: no rule of the node
-// (rule_clauses.h) maps to them, and clause_for_derived can name them
-// (BONE-PARENT-1, BONE-DOWNSTREAM-1: a bone's world pose). A route that
-// carries no derived document cannot judge them at all, whatever its cases
-// draw (clause_status.h).
+// The clauses only the derived document decides: a derived rule maps to
+// them (derived_rule_clause) and no rule of the node does (BONE-PARENT-1,
+// BONE-DOWNSTREAM-1: a bone's world pose). A route that carries no derived
+// document cannot judge them at all, whatever its cases draw
+// (clause_status.h).
 const std::vector<std::string_view>& derived_only_clauses();
-
-// The bone id of a derived document's "bone_pose <id> ..." line, or -1.
-long bone_id_of(const std::string& line);
 
 // A short name for the shape of a snapshot difference from the model
 // `after`: the kind of line, which side lacks it, and the rule that last

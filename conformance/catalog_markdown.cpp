@@ -21,13 +21,17 @@ std::string properties_of(std::string_view clause) {
 
 // The node rules of a clause (rule_clauses.h), one Markdown bullet each,
 // with the seeded fault that certifies a MUST clause's rule (the fault
-// matrix, tests/conformance/fault_matrix_test.cpp) or why it has none.
+// matrix, tests/conformance/fault_matrix_test.cpp) or why it has none; then
+// the derived document's rules of the clause, each with its seeded fault
+// (the derived fault matrix, same file, at every level).
 std::string rules_markdown(const Clause& c) {
   const auto rules = rules_of_clause(c.id);
-  if (rules.empty())
-    return "Rules: none of the node's (judged on the derived document, a capability or the adapter "
+  const auto derived = derived_rules_of_clause(c.id);
+  if (rules.empty() && derived.empty())
+    return "Rules: none of the node's or the derived document's (judged on a capability or the adapter "
            "contract).\n\n";
-  std::string out = "Rules (reference/node/rule.h):\n\n";
+  std::string out;
+  if (!rules.empty()) out += "Rules (reference/node/rule.h):\n\n";
   for (Rule r : rules) {
     const RuleInfo& info = rule_info(r);
     out += fmt::format("- `{}` ({}): {}.", info.name, rule_role_name(info.role), info.says);
@@ -39,7 +43,15 @@ std::string rules_markdown(const Clause& c) {
     }
     out += "\n";
   }
-  return out + "\n";
+  if (!rules.empty()) out += "\n";
+  if (!derived.empty()) out += "Derived rules (reference/geometry/derived_rule.h):\n\n";
+  for (DerivedRule r : derived) {
+    const DerivedRuleInfo& info = derived_rule_info(r);
+    out += fmt::format("- `{}` ({}): {}. Fault matrix: `rule:{}` is blamed on {} alone at seeds 1, 2, 3.\n",
+                       info.name, info.places ? "place" : "value", info.says, info.name, c.id);
+  }
+  if (!derived.empty()) out += "\n";
+  return out;
 }
 
 }  // namespace

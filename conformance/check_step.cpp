@@ -32,6 +32,12 @@ const char* finding_status_name(FindingStatus s) {
   return "?";
 }
 
+std::optional<FindingStatus> finding_status_named(std::string_view name) {
+  for (FindingStatus s : {FindingStatus::Fail, FindingStatus::Crash, FindingStatus::Timeout, FindingStatus::NotJudged})
+    if (name == finding_status_name(s)) return s;
+  return std::nullopt;
+}
+
 Finding call_failure(std::string_view clause, CallStatus s, const std::string& what, const std::string& detail) {
   Finding f;
   f.status = status_of(s);
@@ -221,8 +227,8 @@ bool snapshot_differs(Judging& j) {
 
 // The derived document against the model's, when the route carries one
 // (RouteLimits::derived): a difference after an applied command is blamed
-// on the derived clause of the line (clause_for_derived), after a rejected
-// one on ATOMIC-1 (a rejected command changes nothing).
+// on the derived rule that decided the line (attribution.h, blame_derived),
+// after a rejected one on ATOMIC-1 (a rejected command changes nothing).
 void judge_derived(Judging& j) {
   j.result.derived_judged = j.limits.derived;
   if (!j.limits.derived) return;  // the route carries no derived document
@@ -234,10 +240,14 @@ void judge_derived(Judging& j) {
   }
   if (auto d = diff_documents(print_derived(*j.after), derived.text)) {
     Finding f;
-    const std::string& line = d->expected_line.empty() ? d->observed_line : d->expected_line;
-    f.clause = j.result.expected == Reason::Ok ? std::string(clause_for_derived(*j.after, *d, bone_id_of(line)))
-                                               : "ATOMIC-1";
     f.message = "after `" + j.text + "` (" + j.observed_answer + "), derived: " + d->describe();
+    if (j.result.expected == Reason::Ok) {
+      const DerivedBlame blame = blame_derived(*j.after, *d);
+      f.clause = blame.clause;
+      f.message += ". " + blame.explanation;
+    } else {
+      f.clause = "ATOMIC-1";
+    }
     f.shown_by = "derived";
     f.observed_document = derived.text;
     f.expected_line = d->expected_line;

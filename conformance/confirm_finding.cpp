@@ -178,23 +178,40 @@ bool note_reproduces_fresh(Implementation& sut, const Finding& note, const Progr
   return r.failure && r.failure->clause == note.clause;
 }
 
-std::string finding_kind(const Finding& f) {
-  if (depends_on_history(f)) return call_failure_kind(f);
-  if (f.status == FindingStatus::Crash) return "crash";
-  if (f.status == FindingStatus::Timeout) return "timeout";
-  if (is_call_failure(f)) return "protocol-error";
-  if (f.message.rfind(kLateViewPrefix, 0) == 0) return "hidden-state";
+const char* finding_kind_name(FindingKind k) {
+  switch (k) {
+    case FindingKind::WrongAnswer: return "wrong-answer";
+    case FindingKind::HiddenState: return "hidden-state";
+    case FindingKind::ProtocolError: return "protocol-error";
+    case FindingKind::Timeout: return "timeout";
+    case FindingKind::Crash: return "crash";
+  }
   return "wrong-answer";
 }
 
-int finding_severity(const Finding& f) {
-  const std::string kind = finding_kind(f);
-  if (kind == "crash") return 4;
-  if (kind == "timeout") return 3;
-  if (kind == "protocol-error") return 2;
-  if (kind == "hidden-state") return 1;
-  return 0;
+std::optional<FindingKind> finding_kind_named(std::string_view name) {
+  for (FindingKind k : {FindingKind::WrongAnswer, FindingKind::HiddenState, FindingKind::ProtocolError,
+                        FindingKind::Timeout, FindingKind::Crash})
+    if (name == finding_kind_name(k)) return k;
+  return std::nullopt;
 }
+
+FindingKind finding_kind_of(const Finding& f) {
+  // A history finding is about the kind its message names (confirm_call_failure wrote it).
+  if (depends_on_history(f)) return finding_kind_named(call_failure_kind(f)).value_or(FindingKind::WrongAnswer);
+  if (f.status == FindingStatus::Crash) return FindingKind::Crash;
+  if (f.status == FindingStatus::Timeout) return FindingKind::Timeout;
+  if (is_call_failure(f)) return FindingKind::ProtocolError;
+  if (f.message.rfind(kLateViewPrefix, 0) == 0) return FindingKind::HiddenState;
+  return FindingKind::WrongAnswer;
+}
+
+std::string finding_kind(const Finding& f) {
+  if (depends_on_history(f)) return call_failure_kind(f);
+  return finding_kind_name(finding_kind_of(f));
+}
+
+int finding_severity(const Finding& f) { return static_cast<int>(finding_kind_of(f)); }
 
 std::string call_failure_kind(const Finding& f) {
   if (!depends_on_history(f)) return finding_kind(f);
@@ -246,7 +263,7 @@ bool confirm_call_failure(Implementation& sut, PropertyFinding* pf, const std::v
   const std::string kind = finding_kind(pf->finding);
   Finding f;
   f.status = pf->finding.status;
-  f.clause = kind == "protocol-error" ? "ACCEPT-1" : "STABLE-1";
+  f.clause = finding_kind_of(pf->finding) == FindingKind::ProtocolError ? "ACCEPT-1" : "STABLE-1";
   f.message = fmt::format(
       "{}: {} after {} commands since the instance started, while applying a "
       "command of {} (not blamed on it: the case it ended, {} commands from a fresh node, does not fail a fresh "
@@ -263,7 +280,7 @@ std::optional<Finding> blame_as_history(const Program& program, const Finding& s
   if (program.history_kind.empty() || finding_kind(seen) != program.history_kind) return std::nullopt;
   Finding f;
   f.status = seen.status;
-  f.clause = program.history_kind == "protocol-error" ? "ACCEPT-1" : "STABLE-1";
+  f.clause = finding_kind_named(program.history_kind) == FindingKind::ProtocolError ? "ACCEPT-1" : "STABLE-1";
   f.message = fmt::format(
       "{}: {} after {} commands from a fresh instance, on a command of {} (not blamed on it: this file "
       "reproduces a finding certify confirmed as depending on the history). As seen: {}",

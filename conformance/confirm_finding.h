@@ -27,6 +27,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "forwarding_implementation.h"
@@ -81,6 +82,13 @@ bool reproduces_fresh(Implementation& sut, const Finding& f, const Program& prog
 // confirmation compares: a history's reproducer must fail a fresh instance
 // with the same kind.
 std::string finding_kind(const Finding& f);
+// The same as a value, in order of severity (finding_severity), so that a
+// caller decides with a switch or a comparison, not by the printed word.
+enum class FindingKind : std::uint8_t { WrongAnswer, HiddenState, ProtocolError, Timeout, Crash };
+FindingKind finding_kind_of(const Finding& f);
+const char* finding_kind_name(FindingKind k);  // "wrong-answer", "hidden-state", ...
+// The inverse (a Program's history_kind read back); nullopt for another word.
+std::optional<FindingKind> finding_kind_named(std::string_view name);
 
 // How bad a kind of failure is: a wrong answer 0, hidden state 1 (the
 // watchers were told something else than is stored: worse than a state

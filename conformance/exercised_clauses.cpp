@@ -8,6 +8,7 @@
 #include "attribution.h"
 #include "command_text.h"
 #include "derived_document.h"
+#include "derived_rule.h"
 #include "document_diff.h"
 #include "rule_clauses.h"
 #include "snapshot.h"
@@ -49,8 +50,8 @@ void exercised_clauses(const std::vector<DerivedChange>& derived_changed, const 
     if (verdict_reported) out->push_back("REASON-1");
   } else {
     std::vector<std::string_view> from_derived;
-    for (const auto& ch : derived_changed)
-      from_derived.push_back(clause_for_derived(after, ch.kind, bone_id_of(ch.line)));
+    for (DerivedRule r : derived_rules_changed(derived_changed, rules, after))
+      from_derived.push_back(derived_rule_clause(r));
     if (!derived_only) {
       out->insert(out->end(), from_derived.begin(), from_derived.end());
     } else {
@@ -63,6 +64,24 @@ void exercised_clauses(const std::vector<DerivedChange>& derived_changed, const 
   }
   std::sort(out->begin() + static_cast<std::ptrdiff_t>(first), out->end());
   out->erase(std::unique(out->begin() + static_cast<std::ptrdiff_t>(first), out->end()), out->end());
+}
+
+std::vector<DerivedRule> derived_rules_changed(const std::vector<DerivedChange>& derived_changed, const RuleTrace& rules,
+                                               const Node& after) {
+  std::vector<DerivedRule> out;
+  const auto add = [&out](DerivedRule r) {
+    if (r != DerivedRule::None && std::find(out.begin(), out.end(), r) == out.end()) out.push_back(r);
+  };
+  for (const auto& ch : derived_changed) {
+    // A change is one element's lines (a polygon's edges are one change):
+    // the rule that decided them; and a polygon's edges were placed anew
+    // when the command gave it its corners.
+    add(derived_rule_of(after, ch.line));
+    if (ch.kind == "edge_crease" && (rules.has(Rule::PolygonCreate) || rules.has(Rule::PolygonRedefine)))
+      add(derived_place_rule(ch.kind));
+  }
+  std::sort(out.begin(), out.end());
+  return out;
 }
 
 const std::vector<std::string_view>& fresh_node_clauses() {

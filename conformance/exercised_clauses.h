@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "command.h"
+#include "derived_rule.h"
 #include "document_digest.h"
 #include "node.h"
 #include "reason.h"
@@ -43,6 +44,15 @@ namespace vgc {
 void exercised_clauses(const std::vector<DerivedChange>& derived_changed, const Command& c, Reason expected,
                        const RuleTrace& rules, const Node& after, bool verdict_reported,
                        std::vector<std::string_view>* out, std::vector<std::string_view>* derived_only = nullptr);
+
+// The rules of the derived document (reference/geometry/derived_rule.h)
+// that decided the derived lines `derived_changed` in `after`, each once, in
+// enum order: derived_rule_of each line, and derived.edge_crease.per_corner
+// for a polygon's edges when the command (its rules `rules`) created or
+// re-defined a polygon. What exercised_clauses maps to clauses, and what
+// the runner counts as the derived rules' judged uses.
+std::vector<DerivedRule> derived_rules_changed(const std::vector<DerivedChange>& derived_changed, const RuleTrace& rules,
+                                               const Node& after);
 
 // Every derived line that differs between the two nodes' derived documents
 // (from the printed documents: costs both nodes' size).

@@ -12,7 +12,9 @@
 #pragma once
 
 #include <cstddef>
+#include <optional>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -26,6 +28,9 @@ namespace vgc {
 // `vgc replay` says so instead of "passes".
 enum class FindingStatus { Fail, Crash, Timeout, NotJudged };
 const char* finding_status_name(FindingStatus s);  // "fail", "crash", "timeout", "not-judged"
+// The inverse of finding_status_name (a report.json or a signature line
+// read back); nullopt for any other word.
+std::optional<FindingStatus> finding_status_named(std::string_view name);
 
 struct Finding {
   Finding() = default;

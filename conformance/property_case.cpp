@@ -10,6 +10,7 @@
 #include "cancel.h"
 #include "capability_run.h"
 #include "command_text.h"
+#include "derived_rule.h"
 #include "exercised_clauses.h"
 #include "isolate_blame.h"
 #include "route_limit_clauses.h"
@@ -310,6 +311,9 @@ struct Step final : rc::state::Command<Node, Implementation> {
                         r.derived_judged ? nullptr : &derived_only);
       count_exercised(decided);
       for (Rule rule : r.rules) ++(*c.rule_uses)[std::string(rule_name(rule))];
+      if (r.derived_judged && r.expected == Reason::Ok)  // the derived document's rules its lines put to the test
+        for (DerivedRule rule : derived_rules_changed(derived_changed, r.rules, after))
+          ++(*c.rule_uses)[std::string(derived_rule_name(rule))];
       for (auto clause : derived_only) ++(*c.derived_only)[std::string(clause)];
       CommandKindCount& k = (*c.kinds)[command_kind(command)];
       ++k.sent;
@@ -503,7 +507,7 @@ bool check_late_view(CaseContext& c) {
   if (!case_still_judged(c)) return false;
   const auto localize = [&c](const std::string& shape) {
     if (c.shrinking)
-      return c.last_failure && finding_kind(*c.last_failure) == "hidden-state" && shape == c.sought_late_shape;
+      return c.last_failure && finding_kind_of(*c.last_failure) == FindingKind::HiddenState && shape == c.sought_late_shape;
     const auto it = c.late_shapes.find(shape);
     return it == c.late_shapes.end() || !is_tolerated(c, it->second);
   };

@@ -90,10 +90,48 @@ std::string_view rule_clause(Rule r) {
   return "ACCEPT-1";
 }
 
+std::string_view derived_rule_clause(DerivedRule r) {
+  switch (r) {
+    case DerivedRule::None: return "ACCEPT-1";
+    case DerivedRule::VertexCreaseConstant:
+    case DerivedRule::EdgeCreaseConstant: return "CREASE-DEFAULT-1";
+    case DerivedRule::VertexCreaseLayer: return "CREASE-VERTEX-LAYER-1";
+    case DerivedRule::EdgeCreaseLayer: return "CREASE-EDGE-LAYER-1";
+    case DerivedRule::VertexCreaseLayerMissing:
+    case DerivedRule::EdgeCreaseLayerMissing: return "CREASE-LAYER-MISSING-1";
+    case DerivedRule::VertexCreaseInitial:
+    case DerivedRule::EdgeCreaseInitial: return "CREASE-INITIAL-1";
+    // A polygon's edge count is its corner count: whether the fourth corner
+    // is a vertex reference (a quad) or unused (a triangle).
+    case DerivedRule::EdgePerCorner: return "POLY-TRIANGLE-1";
+    case DerivedRule::BonePoseRoot:
+    case DerivedRule::BonePoseParentMissing: return "BONE-PARENT-1";
+    case DerivedRule::BonePoseChained:
+    case DerivedRule::BonePosePerBone: return "BONE-DOWNSTREAM-1";
+    case DerivedRule::kCount: break;
+  }
+  return "ACCEPT-1";
+}
+
+std::string_view rule_name_clause(std::string_view name) {
+  Rule r = Rule::None;
+  if (parse_rule_name(name, &r)) return rule_clause(r);
+  DerivedRule d = DerivedRule::None;
+  if (parse_derived_rule_name(name, &d)) return derived_rule_clause(d);
+  return "";
+}
+
 std::vector<Rule> rules_of_clause(std::string_view clause_id) {
   std::vector<Rule> out;
   for (std::size_t i = 1; i < kRuleCount; ++i)
     if (rule_clause(static_cast<Rule>(i)) == clause_id) out.push_back(static_cast<Rule>(i));
+  return out;
+}
+
+std::vector<DerivedRule> derived_rules_of_clause(std::string_view clause_id) {
+  std::vector<DerivedRule> out;
+  for (std::size_t i = 1; i < kDerivedRuleCount; ++i)
+    if (derived_rule_clause(static_cast<DerivedRule>(i)) == clause_id) out.push_back(static_cast<DerivedRule>(i));
   return out;
 }
 

@@ -1,8 +1,9 @@
 // rule_clauses.h — which clause of the catalog each rule of the reference
-// node belongs to.
+// belongs to: the node's rules and the derived document's.
 //
-// Spec: the clause catalog (clause.h) and the node's rules
-// (reference/node/rule.h).
+// Spec: the clause catalog (clause.h), the node's rules
+// (reference/node/rule.h) and the derived document's
+// (reference/geometry/derived_rule.h).
 //
 // Rationale: the node names its decisions in its own vocabulary; this table
 // is the one place where a rule meets the spec sentence it implements, so
@@ -16,14 +17,24 @@
 #include <vector>
 
 #include "clause.h"
+#include "derived_rule.h"
 #include "rule.h"
 
 namespace vgc {
 
 // The clause id of `r`; every id is in the catalog (a test checks).
 std::string_view rule_clause(Rule r);
+// The clause id of a rule of the derived document (a switch, as
+// rule_clause); every id is in the catalog (a test checks).
+std::string_view derived_rule_clause(DerivedRule r);
+// The clause of a rule by its printed name, node or derived ("crease.vertex.layer",
+// "derived.bone_pose.root": the keys of RunResult::rule_uses); "" for an
+// unknown name.
+std::string_view rule_name_clause(std::string_view name);
 // The rules whose clause is `clause_id`, in enum order.
 std::vector<Rule> rules_of_clause(std::string_view clause_id);
+// The derived document's rules whose clause is `clause_id`, in enum order.
+std::vector<DerivedRule> derived_rules_of_clause(std::string_view clause_id);
 // Why a MUST rule has no seeded fault certified by the fault matrix
 // (tests/conformance/fault_matrix_test.cpp), or empty when it has one: the
 // rules a default run cannot reach (the storage budgets need 2^22 cells)

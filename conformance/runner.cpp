@@ -19,6 +19,7 @@
 #include "clause_outcome.h"
 #include "clause_status.h"
 #include "confirm_finding.h"
+#include "derived_rule.h"
 #include "isolate_blame.h"
 #include "property.h"
 #include "property_case.h"
@@ -187,11 +188,13 @@ struct CertificationRun {
   std::vector<std::optional<PropertyOutcome>> not_run;
 };
 
-// The run's settings, and every rule of the node counted from 0.
+// The run's settings, and every rule of the node and of the derived document counted from 0.
 void start_run(CertificationRun* r) {
   r->run.implementation = r->sut.name();
   r->run.options = r->o;
   for (std::size_t i = 1; i < kRuleCount; ++i) r->run.rule_uses[std::string(rule_name(static_cast<Rule>(i)))] = 0;
+  for (std::size_t i = 1; i < kDerivedRuleCount; ++i)
+    r->run.rule_uses[std::string(derived_rule_name(static_cast<DerivedRule>(i)))] = 0;
 }
 
 // ?capabilities first: its answer is also where an exec program declares

@@ -41,7 +41,7 @@ std::vector<CauseGroup> group_findings_by_cause(const RunResult& run) {
     const ClauseOutcome& co = run.clauses[i];
     if (!co.finding || co.finding->status != FindingStatus::Fail || co.program.commands.empty() || co.program.request)
       continue;
-    if (finding_kind(*co.finding) != "wrong-answer" || !dropped(*co.finding)) continue;
+    if (finding_kind_of(*co.finding) != FindingKind::WrongAnswer || !dropped(*co.finding)) continue;
     const Command& last = co.program.commands.back();
     std::vector<std::string> k{"kind:" + command_kind(last)};
     if (large_create(last)) k.push_back("large");

@@ -22,10 +22,11 @@ namespace {
 
 using nlohmann::json;
 
+// A finding's status as report.json names it; a finding is at least a
+// failure (not-judged, or a word this vgc does not know, reads as fail).
 FindingStatus status_named(const std::string& s) {
-  if (s == "crash") return FindingStatus::Crash;
-  if (s == "timeout") return FindingStatus::Timeout;
-  return FindingStatus::Fail;
+  const std::optional<FindingStatus> status = finding_status_named(s);
+  return status && *status != FindingStatus::NotJudged ? *status : FindingStatus::Fail;
 }
 
 int property_index(const std::string& id) {

@@ -51,17 +51,19 @@ bool in(const std::vector<std::string>& ids, const std::string& id) {
 }
 
 // The words are verdict.h's shown_status, the same in every report; the
-// colour follows them.
-ShownStatus shown_status_of(const std::string& text) {
-  if (text == "profile difference") return {text, "st-profile-difference"};
-  if (text.size() > 11 && text.compare(text.size() - 11, 11, " (baseline)") == 0) return {text, "st-known"};
-  if (text.size() > 9 && text.compare(text.size() - 9, 9, " (SHOULD)") == 0) return {text, "st-should"};
+// colour follows its qualifier.
+ShownStatus shown_status_of(const ClauseShown& shown) {
+  const std::string text = shown_status_name(shown);
+  switch (shown.qualifier) {
+    case ShownQualifier::ProfileDifference: return {text, "st-profile-difference"};
+    case ShownQualifier::Baseline: return {text, "st-known"};
+    case ShownQualifier::Should: return {text, "st-should"};
+    case ShownQualifier::None: break;
+  }
   return {text, "st-" + text};
 }
 
-ShownStatus shown_status_html(const ClauseOutcome& co, const Verdict& v) {
-  return shown_status_of(shown_status(co, v));
-}
+ShownStatus shown_status_html(const ClauseOutcome& co, const Verdict& v) { return shown_status_of(clause_shown(co, v)); }
 
 void status_badge(pugi::xml_node parent, const ShownStatus& s) {
   add(parent, "span", s.text, ("st " + s.css).c_str());
@@ -180,8 +182,10 @@ void add_summary(pugi::xml_node body, const RunResult& run, const Verdict& v, co
 
   auto counts_p = add(body, "p", {}, "counts");
   add_text(counts_p, std::to_string(run.clauses.size()) + " clauses: ");
-  for (const auto& [status, n] : shown_status_counts(run, v))
-    add(counts_p, "span", std::to_string(n) + " " + status, ("st " + shown_status_of(status).css).c_str());
+  for (const auto& [shown, n] : shown_counts(run, v)) {
+    const ShownStatus s = shown_status_of(shown);
+    add(counts_p, "span", std::to_string(n) + " " + s.text, ("st " + s.css).c_str());
+  }
   std::ostringstream run_line;
   run_line.precision(1);
   run_line << std::fixed << "Seed " << run.options.seed << ", " << run.options.cases << " cases per property, "
@@ -211,10 +215,11 @@ void add_unjudged(pugi::xml_node body, const RunResult& run, const Verdict& v) {
         "The implementation could not show a fresh node (" + run.preflight->clause + ": " + run.preflight->message +
             "); nothing else was judged.",
         "st st-fail");
-  if (v.name == "incomplete" || !v.unchecked.empty()) {
+  const bool incomplete = v.kind == VerdictKind::Incomplete;
+  if (incomplete || !v.unchecked.empty()) {
     add(body, "p",
-        v.name == "incomplete" ? "The run is incomplete: the verdict is neither a pass nor a failure."
-                               : "Not everything could be judged:");
+        incomplete ? "The run is incomplete: the verdict is neither a pass nor a failure."
+                   : "Not everything could be judged:");
     auto ul = add(body, "ul");
     for (const auto& p : run.properties)
       if (p.status == PropertyStatus::Stopped) add(ul, "li", "property " + p.id + " stopped: " + p.note);
@@ -321,9 +326,7 @@ std::string counterexample_obj_path(const ClauseOutcome& co) {
 }
 
 std::string render_report_html(const RunResult& run, const Verdict& v, const ReportContext& ctx) {
-  const char* headline = v.name == "conformant"       ? "CONFORMANT"
-                         : v.name == "not-conformant" ? "NOT CONFORMANT"
-                                                      : "INCOMPLETE";
+  const char* headline = verdict_kind_headline(v.kind);
   pugi::xml_document doc;
   auto title = doc.append_child("title");
   title.text().set(("vgc certify: " + ctx.implementation_spec + " — " + headline).c_str());

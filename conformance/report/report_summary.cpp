@@ -31,9 +31,7 @@ std::string host_sent_paragraph(const Finding& f) {
 
 // The headline, the tallies, the re-run line and the route's limits.
 void write_summary_head(const RunResult& run, const Verdict& v, const ReportContext& ctx, std::string& out) {
-  const char* headline = v.name == "conformant"       ? "CONFORMANT"
-                         : v.name == "not-conformant" ? "NOT CONFORMANT"
-                                                      : "INCOMPLETE";
+  const char* headline = verdict_kind_headline(v.kind);
   out += fmt::format("# vgc certify: {} — {}\n\n", ctx.implementation_spec, headline);
   const std::string tally = shown_status_tally(run, v);  // the same counts as every other report
   out += fmt::format("{} clauses: {}. Seed {}, {} cases per property, {:.1f} s{}.\n\n", run.clauses.size(), tally,
@@ -69,9 +67,10 @@ void write_summary_unjudged(const RunResult& run, const Verdict& v, std::string&
   if (run.preflight)
     out += fmt::format("**The implementation could not show a fresh node** ({}: {}); nothing else was judged.\n\n",
                        run.preflight->clause, run.preflight->message);
-  if (v.name == "incomplete" || !v.unchecked.empty()) {
-    out += v.name == "incomplete" ? "The run is incomplete: the verdict is neither a pass nor a failure.\n\n"
-                                  : "Not everything could be judged:\n\n";
+  const bool incomplete = v.kind == VerdictKind::Incomplete;
+  if (incomplete || !v.unchecked.empty()) {
+    out += incomplete ? "The run is incomplete: the verdict is neither a pass nor a failure.\n\n"
+                      : "Not everything could be judged:\n\n";
     for (const auto& p : run.properties)
       if (p.status == PropertyStatus::Stopped) out += fmt::format("- property `{}` stopped: {}\n", p.id, p.note);
     for (const auto& co : run.clauses)
@@ -149,13 +148,9 @@ void write_summary_tables(const RunResult& run, const Verdict& v, std::string& o
     out += fmt::format("| {} | {} | {} | {} |\n", kind, k.sent, k.applied, rej.empty() ? "-" : rej);
   }
   if (!run.rule_uses.empty()) {
-    out += "\n## Rules used\n\nJudged uses of each rule of the reference node (docs/clauses.md lists a clause's "
-           "rules): how often a judged step reached it.\n\n| rule | clause | judged uses |\n|---|---|---|\n";
-    for (const auto& [rule, n] : run.rule_uses) {
-      Rule r = Rule::None;
-      parse_rule_name(rule, &r);
-      out += fmt::format("| {} | {} | {} |\n", rule, rule_clause(r), n);
-    }
+    out += "\n## Rules used\n\nJudged uses of each rule of the reference node and of its derived document "
+           "(docs/clauses.md lists a clause's rules): how often a judged step reached it.\n\n| rule | clause | judged uses |\n|---|---|---|\n";
+    for (const auto& [rule, n] : run.rule_uses) out += fmt::format("| {} | {} | {} |\n", rule, rule_name_clause(rule), n);
   }
 }
 

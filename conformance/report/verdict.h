@@ -23,6 +23,7 @@
 // infrastructure errors are also exit 2.
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -31,8 +32,15 @@
 
 namespace vgc {
 
+// The verdict itself: decided by judge(), read with a switch (the
+// compiler flags a kind left out), printed by its name.
+enum class VerdictKind : std::uint8_t { Conformant, NotConformant, Incomplete };
+const char* verdict_kind_name(VerdictKind k);      // "conformant", "not-conformant", "incomplete"
+const char* verdict_kind_headline(VerdictKind k);  // "CONFORMANT", "NOT CONFORMANT", "INCOMPLETE"
+
 struct Verdict {
-  std::string name;  // "conformant", "not-conformant", "incomplete"
+  VerdictKind kind = VerdictKind::Conformant;
+  std::string name;  // verdict_kind_name(kind), as report.json and the tests read it
   int exit_code = 0;
   bool strict = false;
   std::vector<std::string> new_failures;    // clause ids that decide "not-conformant"
@@ -60,9 +68,23 @@ Verdict judge(const RunResult& run, const Baseline* baseline, bool strict = fals
 // exactly the clauses that make the run not conformant.
 std::string shown_status(const ClauseOutcome& co, const Verdict& v);
 
+// The same as values: the clause's status and why a finding does not decide
+// the verdict (None where it does, or where there is no finding), so that a
+// caller decides with a switch, not by comparing the printed words.
+enum class ShownQualifier : std::uint8_t { None, Baseline, ProfileDifference, Should };
+struct ClauseShown {
+  ClauseStatus status = ClauseStatus::Pass;
+  ShownQualifier qualifier = ShownQualifier::None;
+  bool operator==(const ClauseShown& o) const { return status == o.status && qualifier == o.qualifier; }
+};
+ClauseShown clause_shown(const ClauseOutcome& co, const Verdict& v);
+std::string shown_status_name(const ClauseShown& s);  // "pass", "fail (SHOULD)", "profile difference", ...
+
 // How many clauses show each status, in one fixed order: pass, what gates,
 // what does not, what was not judged (then any other status, in catalog
 // order); statuses no clause shows are left out.
+std::vector<std::pair<ClauseShown, int>> shown_counts(const RunResult& run, const Verdict& v);
+// The same by name (report.json's keys, summary.md's tally).
 std::vector<std::pair<std::string, int>> shown_status_counts(const RunResult& run, const Verdict& v);
 
 // The counts as a reader sees them: "39 pass, 1 fail, 1 fail (SHOULD),

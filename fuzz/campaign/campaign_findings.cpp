@@ -18,6 +18,7 @@
 #include "crash_signature.h"
 #include "display_text.h"
 #include "exec_implementation.h"  // shell_quote
+#include "finding.h"
 #include "minimize_finding.h"
 #include "minimize_input.h"
 #include "program_command.h"
@@ -200,7 +201,8 @@ void write_program_counterexample(const CampaignRun& r, const CrashGroup& g, con
   else if (r.property) body = "# the target printed no command file (a sanitizer finding): replay the input\n";
   else body = stream_to_text(bytes);
   const std::string status = status_of_finding(c->signature);
-  const bool call_failure = status == "crash" || status == "timeout";
+  const std::optional<FindingStatus> status_value = finding_status_named(status);
+  const bool call_failure = status_value == FindingStatus::Crash || status_value == FindingStatus::Timeout;
   // A wire host that crashed or hung cannot be replayed on a fresh
   // instance without the user's restart command.
   const bool wire = r.impl.live && !r.impl.live->traits().restartable;

@@ -40,6 +40,15 @@ std::array<double, 3> quat_rotate(const std::array<double, 4>& q, const std::arr
   return {r[0], r[1], r[2]};
 }
 
+DerivedRule bone_pose_rule(const Node& node, std::uint16_t id) {
+  const auto& bones = node.bones();
+  const auto it = bones.find(id);
+  if (it == bones.end()) return DerivedRule::BonePosePerBone;
+  const std::uint16_t parent = it->second.parent;
+  if (parent == kNone16) return DerivedRule::BonePoseRoot;
+  return bones.count(parent) ? DerivedRule::BonePoseChained : DerivedRule::BonePoseParentMissing;
+}
+
 std::map<std::uint16_t, BonePose> bone_world_poses(const Node& node) {
   std::map<std::uint16_t, BonePose> poses;
   const auto& bones = node.bones();
@@ -53,8 +62,9 @@ std::map<std::uint16_t, BonePose> bone_world_poses(const Node& node) {
     for (auto it = chain.rbegin(); it != chain.rend(); ++it) {
       const Bone& bone = bones.at(*it);
       BonePose pose;
-      auto parent = poses.find(bone.parent);
-      if (parent == poses.end() || !bones.count(bone.parent)) {
+      pose.rule = bone_pose_rule(node, *it);
+      const auto parent = poses.find(bone.parent);  // posed before it: the chain is walked down
+      if (pose.rule != DerivedRule::BonePoseChained || parent == poses.end()) {  // a root
         pose.pos = bone.pos;
         pose.rot = quat_normalize(bone.rot);
       } else {

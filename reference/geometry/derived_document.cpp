@@ -36,6 +36,25 @@ std::map<std::uint16_t, std::string> derived_bone_lines(const Node& node) {
   return out;
 }
 
+DerivedRule derived_rule_of(const Node& node, std::string_view line) {
+  const std::size_t space = line.find(' ');
+  const std::string_view kind = line.substr(0, space);
+  if (kind == "vertex_crease") return vertex_crease_rule(node);
+  if (kind == "edge_crease") return edge_crease_rule(node);
+  if (kind != "bone_pose") return DerivedRule::None;
+  const std::string_view rest = space == std::string_view::npos ? std::string_view() : line.substr(space + 1);
+  std::uint32_t id = 0;
+  // An id that is no bone id at all (malformed, or past 0xFFFF) names no bone.
+  if (!parse_uint(rest.substr(0, rest.find(' ')), 16, &id)) return DerivedRule::BonePosePerBone;
+  return bone_pose_rule(node, static_cast<std::uint16_t>(id));
+}
+
+DerivedRule derived_place_rule(std::string_view kind) {
+  if (kind == "edge_crease") return DerivedRule::EdgePerCorner;
+  if (kind == "bone_pose") return DerivedRule::BonePosePerBone;
+  return DerivedRule::None;
+}
+
 std::string print_derived(const Node& node) {
   std::string out = kDerivedHeader;
   for (const auto& [id, slot] : node.vertices()) out += derived_vertex_line(node, id);

@@ -11,13 +11,16 @@
 // conforming nodes fed the same commands agree exactly on creases and within
 // rounding on bone poses. Its companion, the snapshot of what is stored, is
 // printed by the node part (reference/node/snapshot.h); this one lives with
-// the geometry because it interprets the state.
+// the geometry because it interprets the state. Every line is decided by a
+// named rule (derived_rule.h), which derived_rule_of names.
 #pragma once
 
 #include <cstdint>
 #include <map>
 #include <string>
+#include <string_view>
 
+#include "derived_rule.h"
 #include "node.h"
 
 namespace vgc {
@@ -32,5 +35,21 @@ std::string derived_vertex_line(const Node& node, std::uint32_t vertex_id);
 // Every "edge_crease" line of the live polygon `polygon_id` (`polygon` its slot).
 std::string derived_polygon_lines(const Node& node, std::uint32_t polygon_id, const Slot& polygon);
 std::map<std::uint16_t, std::string> derived_bone_lines(const Node& node);  // bone id -> "bone_pose" line
+
+// The rule that decided the values of the derived line `line` of `node`,
+// by its kind and identity (the first words; the values are not read):
+// "vertex_crease" and "edge_crease" lines are all decided by their
+// setting's rule (crease.h), whatever their element; a "bone_pose <id>"
+// line by bone_pose_rule (per_bone for an id with no bone, or no bone id
+// at all). So it also
+// answers for a line only an implementation prints, and for the forms a
+// NodeDigest reports of a line gone ("edge_crease 5", "bone_pose 3").
+// DerivedRule::None for any other line (the header, "end", a malformed one).
+DerivedRule derived_rule_of(const Node& node, std::string_view line);
+// The rule that decides which lines of `kind` exist, when a derived rule
+// does: "edge_crease" derived.edge_crease.per_corner (a polygon's corner
+// count), "bone_pose" derived.bone_pose.per_bone. None for "vertex_crease":
+// one line per live vertex, as the snapshot's vertex lines (judged first).
+DerivedRule derived_place_rule(std::string_view kind);
 
 }  // namespace vgc

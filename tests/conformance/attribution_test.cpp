@@ -11,12 +11,19 @@
 #include <gtest/gtest.h>
 
 #include <functional>
+#include <set>
 #include <sstream>
 
+#include "attribution.h"
+#include "bone_pose.h"
 #include "check_step.h"
 #include "command_text.h"
+#include "derived_document.h"
+#include "derived_rule.h"
+#include "document_diff.h"
 #include "reference_implementation.h"
 #include "reference_wrapper.h"
+#include "rule_clauses.h"
 #include "runner.h"
 #include "../reference/test_util.h"  // test::C, one command from its text
 
@@ -317,6 +324,122 @@ TEST(Attribution, AFreshNodeIsBlamedOnTheFreshNodeRuleOfItsLine) {
   }
   OneFault reference;
   EXPECT_FALSE(replay_program(Program{}, reference).failure);
+}
+
+// Issue 29, item 4: the derived document's rules (derived_rule.h) are
+// named once, in enum order, each with a clause of the catalog.
+TEST(Attribution, EveryDerivedRuleHasANameAndAClauseInTheCatalog) {
+  std::set<std::string_view> names;
+  for (std::size_t i = 1; i < kDerivedRuleCount; ++i) {
+    const DerivedRule r = static_cast<DerivedRule>(i);
+    EXPECT_EQ(derived_rule_info(r).rule, r) << i;
+    EXPECT_TRUE(names.insert(derived_rule_name(r)).second) << derived_rule_name(r);
+    EXPECT_EQ(derived_rule_name(r).rfind("derived.", 0), 0u) << derived_rule_name(r);  // apart from the node's
+    DerivedRule back = DerivedRule::None;
+    EXPECT_TRUE(parse_derived_rule_name(derived_rule_name(r), &back) && back == r) << derived_rule_name(r);
+    EXPECT_NE(find_clause(derived_rule_clause(r)), nullptr) << derived_rule_name(r);
+    EXPECT_EQ(rule_name_clause(derived_rule_name(r)), derived_rule_clause(r)) << derived_rule_name(r);
+  }
+  EXPECT_EQ(derived_only_clauses(), (std::vector<std::string_view>{"BONE-PARENT-1", "BONE-DOWNSTREAM-1"}));
+}
+
+// Every line of the derived document is decided by the rule the reference
+// took to compute it, by provenance: the fresh node's crease setting is
+// derived.*.initial, a crease_set with the same constant 0 is
+// derived.*.constant; a named layer resolves when read (missing, created,
+// re-typed); a bone with parent 0xFFFF, with a parent that names no bone,
+// with a live parent; a pose line for an id with no bone.
+TEST(Attribution, EveryDerivedLineIsDecidedByANamedRule) {
+  Node n;
+  for (const char* line : {"vertex_set_xyz_real64 0 0 0 0 0", "vertex_set_xyz_real64 0 1 1 0 0",
+                           "vertex_set_xyz_real64 0 2 1 1 0", "polygon_set_corner_uint32 1 0 0 1 2 0xFFFFFFFF"})
+    ASSERT_EQ(n.apply(test::C(line)), Reason::Ok) << line;
+  const auto rules_of = [](const Node& node, const char* kind) {
+    std::set<DerivedRule> out;
+    for (const auto& l : split_lines(print_derived(node)))
+      if (l.rfind(kind, 0) == 0) out.insert(derived_rule_of(node, l));
+    return out;
+  };
+  using S = std::set<DerivedRule>;
+  EXPECT_EQ(rules_of(n, "vertex_crease"), S{DerivedRule::VertexCreaseInitial});
+  EXPECT_EQ(rules_of(n, "edge_crease"), S{DerivedRule::EdgeCreaseInitial});
+  const auto then = [&n](const char* line) {
+    EXPECT_EQ(n.apply(test::C(line)), Reason::Ok) << line;
+    return n;
+  };
+  EXPECT_EQ(rules_of(then("crease_set_vertex \"\" 0"), "vertex_crease"), S{DerivedRule::VertexCreaseConstant});
+  EXPECT_EQ(rules_of(n, "edge_crease"), S{DerivedRule::EdgeCreaseInitial});
+  EXPECT_EQ(rules_of(then("crease_set_edge \"\" 0"), "edge_crease"), S{DerivedRule::EdgeCreaseConstant});
+  EXPECT_EQ(rules_of(then("crease_set_vertex \"cv\" 5"), "vertex_crease"), S{DerivedRule::VertexCreaseLayerMissing});
+  EXPECT_EQ(rules_of(then("layer_create 2 \"cv\" VERTEX_UINT32 0 0"), "vertex_crease"),
+            S{DerivedRule::VertexCreaseLayer});
+  EXPECT_EQ(rules_of(then("layer_create 2 \"cv\" VERTEX_REAL 0 0"), "vertex_crease"),
+            S{DerivedRule::VertexCreaseLayerMissing});
+  EXPECT_EQ(rules_of(then("crease_set_edge \"ce\" 5"), "edge_crease"), S{DerivedRule::EdgeCreaseLayerMissing});
+  EXPECT_EQ(rules_of(then("layer_create 3 \"ce\" POLYGON_CORNER_UINT32 0 0"), "edge_crease"),
+            S{DerivedRule::EdgeCreaseLayer});
+  then("bone_create 0 \"cv\" \"\" 0xFFFF 0 0 0 \"\" 0 0 0 1 \"\"");
+  then("bone_create 1 \"cv\" \"\" 0 1 0 0 \"\" 0 0 0 1 \"\"");
+  then("bone_create 2 \"cv\" \"\" 77 1 0 0 \"\" 0 0 0 1 \"\"");
+  EXPECT_EQ(derived_rule_of(n, "bone_pose 0"), DerivedRule::BonePoseRoot);
+  EXPECT_EQ(derived_rule_of(n, "bone_pose 1 1 0 0 0 0 0 1"), DerivedRule::BonePoseChained);
+  EXPECT_EQ(derived_rule_of(n, "bone_pose 2"), DerivedRule::BonePoseParentMissing);
+  EXPECT_EQ(derived_rule_of(n, "bone_pose 3"), DerivedRule::BonePosePerBone);
+  EXPECT_EQ(derived_rule_of(n, "bone_pose x"), DerivedRule::BonePosePerBone);
+  EXPECT_EQ(derived_rule_of(n, "end"), DerivedRule::None);
+  for (const auto& [id, pose] : bone_world_poses(n)) EXPECT_EQ(pose.rule, bone_pose_rule(n, id)) << id;
+  then("bone_destroy 0");  // bone 1's parent is gone: a root now
+  EXPECT_EQ(derived_rule_of(n, "bone_pose 1"), DerivedRule::BonePoseParentMissing);
+}
+
+// A derived difference is blamed on the rule that decided the model's line,
+// and the finding names it. The constant 0 sent by crease_set_vertex is the
+// command's constant (CREASE-DEFAULT-1, MUST), not the fresh node's crease
+// (CREASE-INITIAL-1, IMPLEMENTATION-DEFINED), which the old shape-based
+// attribution took it for (it looked at the value 0).
+TEST(Attribution, ADerivedDifferenceIsBlamedOnTheDerivedRuleThatDecidedIt) {
+  OneFault sut;
+  sut.edit_derived = [](const Node&, const std::string& text) {
+    std::string out = text;
+    for (const char* from : {"vertex_crease 2 0\n", "vertex_crease 2 5\n"})
+      if (const auto at = out.find(from); at != std::string::npos) out.replace(at, 18, "vertex_crease 2 9\n");
+    return out;
+  };
+  struct Case {
+    std::vector<std::string> before;
+    const char* clause;
+    DerivedRule rule;
+  };
+  const std::vector<Case> cases = {
+      {{}, "CREASE-INITIAL-1", DerivedRule::VertexCreaseInitial},
+      {{"crease_set_vertex \"\" 0"}, "CREASE-DEFAULT-1", DerivedRule::VertexCreaseConstant},
+      {{"crease_set_vertex \"cv\" 0"}, "CREASE-LAYER-MISSING-1", DerivedRule::VertexCreaseLayerMissing},
+      {{"layer_create 2 \"cv\" VERTEX_UINT32 5 0", "crease_set_vertex \"cv\" 0"}, "CREASE-VERTEX-LAYER-1",
+       DerivedRule::VertexCreaseLayer},
+  };
+  for (const Case& c : cases) {
+    auto lines = c.before;
+    lines.insert(lines.end(), kFourVertices.begin(), kFourVertices.end());
+    std::string message;
+    EXPECT_EQ(first_failure(sut, lines, &message), c.clause) << message;
+    EXPECT_NE(message.find("Blamed on derived rule " + std::string(derived_rule_name(c.rule)) + " ("),
+              std::string::npos)
+        << message;
+  }
+  // blame_derived itself: a polygon's edges listed otherwise are its corner
+  // count (derived.edge_crease.per_corner), a pose of an id with no bone is
+  // derived.bone_pose.per_bone.
+  Node n;
+  for (const auto& line : kFourVertices) ASSERT_EQ(n.apply(test::C(line)), Reason::Ok);
+  ASSERT_EQ(n.apply(test::C("polygon_set_corner_uint32 1 5 1 2 3 0")), Reason::Ok);
+  DocumentDifference d{"edge_crease 5 3 0", "", "edge_crease"};
+  EXPECT_EQ(blame_derived(n, d).rule, DerivedRule::EdgePerCorner);
+  EXPECT_EQ(blame_derived(n, d).clause, "POLY-TRIANGLE-1");
+  d = DocumentDifference{"edge_crease 5 3 0", "edge_crease 5 3 4", "edge_crease"};
+  EXPECT_EQ(blame_derived(n, d).rule, DerivedRule::EdgeCreaseInitial);
+  d = DocumentDifference{"", "bone_pose 4 0 0 0 0 0 0 1", "bone_pose"};
+  EXPECT_EQ(blame_derived(n, d).rule, DerivedRule::BonePosePerBone);
+  EXPECT_EQ(blame_derived(n, d).clause, "BONE-DOWNSTREAM-1");
 }
 
 }  // namespace

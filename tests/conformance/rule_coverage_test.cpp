@@ -4,6 +4,9 @@
 // printed in report.json and summary.md). The rules no bounded run can
 // reach are exempt, each with its reason (rule_clauses.h).
 //
+// The derived document's rules (reference/geometry/derived_rule.h) are
+// counted the same way, in a test of their own.
+//
 // The test lists every rule below the threshold: a rule the generators
 // never draw is reported here, not passed silently.
 #include <gtest/gtest.h>
@@ -43,6 +46,29 @@ TEST(RuleCoverage, EveryRuleIsUsedAtLeast20TimesInADefaultRunAtSeed1) {
   }
   EXPECT_GT(counted, 60);
   EXPECT_TRUE(short_rules.empty()) << "rules used fewer than " << kMinUses
+                                   << " times in a default run at seed 1:" << short_rules;
+}
+
+// Issue 29, item 4: the derived document's rules too (derived_rule.h),
+// counted where a judged step changed a derived line the rule decides
+// (exercised_clauses.h, derived_rules_changed). Kept apart from the test
+// above, whose figures stay the node's; each certifies the reference once.
+TEST(RuleCoverage, EveryDerivedRuleIsUsedAtLeast20TimesInADefaultRunAtSeed1) {
+  ReferenceImplementation impl;
+  RunOptions o;
+  o.seed = 1;
+  const RunResult run = run_certification(impl, o);
+  ASSERT_TRUE(run.complete);
+  std::string short_rules;
+  for (std::size_t i = 1; i < kDerivedRuleCount; ++i) {
+    const DerivedRule r = static_cast<DerivedRule>(i);
+    const std::string name(derived_rule_name(r));
+    const auto it = run.rule_uses.find(name);
+    ASSERT_NE(it, run.rule_uses.end()) << name << " is not in rule_uses";
+    std::printf("%-36s %-24s %8ld\n", name.c_str(), std::string(derived_rule_clause(r)).c_str(), it->second);
+    if (it->second < kMinUses) short_rules += "\n  " + name + ": " + std::to_string(it->second) + " judged uses";
+  }
+  EXPECT_TRUE(short_rules.empty()) << "derived rules used fewer than " << kMinUses
                                    << " times in a default run at seed 1:" << short_rules;
 }
 

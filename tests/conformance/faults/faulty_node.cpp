@@ -118,6 +118,15 @@ std::vector<FaultInfo> build_catalog() {
     const Rule r = static_cast<Rule>(i);
     catalog.push_back({names[i - 1], "", "fail", rule_info(r).says, r, true});
   }
+  // And one per rule of the derived document: "rule:derived.<...>".
+  static std::vector<std::string> derived_names;
+  derived_names.reserve(kDerivedRuleCount);
+  for (std::size_t i = 1; i < kDerivedRuleCount; ++i)
+    derived_names.push_back("rule:" + std::string(derived_rule_name(static_cast<DerivedRule>(i))));
+  for (std::size_t i = 1; i < kDerivedRuleCount; ++i) {
+    const DerivedRule r = static_cast<DerivedRule>(i);
+    catalog.push_back({derived_names[i - 1], "", "fail", derived_rule_info(r).says, Rule::None, true, r});
+  }
   return catalog;
 }
 }  // namespace
@@ -579,6 +588,8 @@ std::uint32_t target_element(const Command& c) {
 // sees the rules of a command's trace).
 FaultyNode::FaultyNode(std::vector<int> faults) : faults_(std::move(faults)) {
   for (int f : faults_) {
+    if (const DerivedRule d = fault_catalog()[static_cast<std::size_t>(f)].breaks_derived; d != DerivedRule::None)
+      broken_derived_ = d;
     const Rule broken = fault_catalog()[static_cast<std::size_t>(f)].breaks;
     if (broken == Rule::None) continue;
     for (const auto& l : lines_of(print_snapshot(node_)))
@@ -712,13 +723,14 @@ bool FaultyNode::documents_rewritten() const {
     const Layer* l = s.layer.empty() ? nullptr : node_.find_layer_by_name(s.layer);
     return l && l->type == type;
   };
+  if (broken_derived_ != DerivedRule::None) return true;
   return (is("edge-crease-off-by-one") && named(node_.edge_crease(), LayerType::PolygonCornerUint32)) ||
          (is("wrong-type-crease-layer-used") && named(node_.vertex_crease(), LayerType::VertexReal)) ||
          (is("bone-rotation-not-inherited") && !node_.bones().empty());
 }
 
 bool FaultyNode::digest_cheap() const {
-  return !is("edge-crease-off-by-one") && !is("wrong-type-crease-layer-used") && !is("bone-rotation-not-inherited");
+  return broken_derived_ == DerivedRule::None && !is("edge-crease-off-by-one") && !is("wrong-type-crease-layer-used") && !is("bone-rotation-not-inherited");
 }
 
 DocumentDigests FaultyNode::digests() {
@@ -745,7 +757,40 @@ std::string FaultyNode::request(const std::string& line) const {
   return text ? *text : "error unknown request\n";
 }
 
+// A derived-rule fault, at every line the broken rule decides: a value
+// rule's lines show another last number (corrupt: a crease, a rotation's
+// w); derived.edge_crease.per_corner drops each polygon's last edge (a
+// quad listed as a triangle, a triangle with two edges);
+// derived.bone_pose.per_bone poses one bone more than the node has (the id
+// past the highest, while there is a bone: a fresh node stays as it is).
+std::string FaultyNode::derived_rule_fault(const std::string& text) const {
+  const DerivedRule broken = broken_derived_;
+  std::string out;
+  for (const auto& l : lines_of(text)) {
+    if (l == "end" && broken == DerivedRule::BonePosePerBone && !node_.bones().empty() &&
+        node_.bones().rbegin()->first < kNone16 - 1)
+      out += "bone_pose " + format_uint(static_cast<std::uint16_t>(node_.bones().rbegin()->first + 1), 16) +
+             " 0 0 0 0 0 0 1\n";
+    if (broken == DerivedRule::EdgePerCorner) {
+      std::istringstream words(l);
+      std::string kind;
+      std::uint32_t polygon = 0;
+      int corner = 0;
+      words >> kind >> polygon >> corner;
+      if (kind == "edge_crease" && node_.polygons().count(polygon) &&
+          corner == corner_count(node_.polygons().at(polygon)) - 1)
+        continue;
+    } else if (derived_rule_of(node_, l) == broken) {
+      out += corrupt(l) + "\n";
+      continue;
+    }
+    out += l + "\n";
+  }
+  return out;
+}
+
 std::string FaultyNode::derived() const {
+  if (broken_derived_ != DerivedRule::None) return derived_rule_fault(print_derived(node_));
   if (!is("edge-crease-off-by-one") && !is("wrong-type-crease-layer-used") && !is("bone-rotation-not-inherited"))
     return print_derived(node_);
   std::istringstream in(print_derived(node_));

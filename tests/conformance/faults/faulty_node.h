@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "command.h"
+#include "derived_rule.h"
 #include "document_digest.h"
 #include "node.h"
 
@@ -37,6 +38,11 @@ struct FaultInfo {
   // stay free of the catalog mapping). Rule::None for the others.
   Rule breaks = Rule::None;
   bool generated = false;  // a "rule:<name>" fault
+  // The derived document's rule the fault breaks (derived_rule.h): one
+  // generated fault "rule:derived.<...>" per rule, which prints every
+  // derived line that rule decides with another value (a value rule), or
+  // lists other lines (a placement rule). DerivedRule::None for the others.
+  DerivedRule breaks_derived = DerivedRule::None;
 };
 
 // Every fault, by index. Index 0 is "none" (the plain reference); the
@@ -82,6 +88,9 @@ class FaultyNode {
   // exactly where the node applied the broken rule.
   FaultyAnswer apply_breaking(const Command& c, Rule broken);
   std::string rule_fault_snapshot(std::string text) const;
+  // The derived document as a derived-rule fault (FaultInfo::breaks_derived)
+  // prints it: `text` with the lines the broken rule decides changed.
+  std::string derived_rule_fault(const std::string& text) const;
   FaultyAnswer answer(Reason r) const;
   // layer-kept-at-pick-id: `x` (layer id 0xFFFF) applied to the layer kept at 0xFFFF.
   Reason keep_layer_at_pick_id(cmd::LayerCreate x);
@@ -98,6 +107,7 @@ class FaultyNode {
   // the node before every command would cost its size each time).
   Node replay(std::size_t n) const;
   std::vector<int> faults_;  // indexes into fault_catalog(); every one is active
+  DerivedRule broken_derived_ = DerivedRule::None;  // a derived-rule fault's rule, if one is active
   Node node_;
   std::vector<Command> history_;  // every command node_ was given (the rule faults' path)
   // destroy-missing-ok-double-free and real32-ignored-grow-crash: what the
