@@ -31,6 +31,23 @@ void ProgramChecker::allow_sparse_reading() {
   if (!digest_on_ && applied_.empty()) sparse_ = true;
 }
 
+std::optional<std::size_t> ProgramChecker::last_held_before(const std::string& line) const {
+  if (line.empty()) return std::nullopt;
+  const auto holds = [&line](const Node& n) {
+    for (const std::string& l : split_lines(print_snapshot(n)))
+      if (l == line) return true;
+    return false;
+  };
+  if (holds(model_)) return std::nullopt;
+  Node node;
+  std::optional<std::size_t> last;
+  for (std::size_t i = 0; i < applied_.size(); ++i) {
+    if (holds(node)) last = i;  // held before command i; the last such i ended it
+    node.apply(applied_[i]);
+  }
+  return last;
+}
+
 Node ProgramChecker::rebuild(std::size_t commands) const {
   Node node;
   for (std::size_t i = 0; i < commands && i < applied_.size(); ++i) node.apply(applied_[i]);
@@ -320,6 +337,7 @@ std::optional<Localized> ProgramChecker::check_late_view(const std::vector<Comma
   const auto format_finding = [&]() -> std::optional<Localized> {
     if (!late_format_ || (localize && !localize("subscription both-formats"))) return std::nullopt;
     late_shape_ = "subscription both-formats";
+    late_format_->difference = late_shape_;
     StepResult r;
     r.expected = Reason::Ok;
     r.failure = late_format_;
@@ -331,6 +349,12 @@ std::optional<Localized> ProgramChecker::check_late_view(const std::vector<Comma
                                       : diff_documents(without_subscriptions(expected), without_subscriptions(late.text));
   if (!d) return format_finding();
   late_shape_ = difference_shape(model_, *d);
+  // A line the model held earlier in the case and no longer holds (a
+  // deleted element's slot back on an element created at its id) is
+  // another kind of difference than a value the model never held there,
+  // whichever rule wrote the model's line: a finding of its own.
+  const std::optional<std::size_t> stale = last_held_before(d->observed_line);
+  if (stale) late_shape_ += " (a line the model held earlier)";
   if (localize && !localize(late_shape_)) return format_finding();
   // Provenance first: the command that last wrote the model's line is
   // where a host that stored something else most likely began to differ.
@@ -347,6 +371,11 @@ std::optional<Localized> ProgramChecker::check_late_view(const std::vector<Comma
               ": a session that subscribed to the node and every layer (REAL32 and REAL64) after this command was "
               "sent another node than the session that watched it all along, which agreed with the model; " +
               f.message;
+  if (stale)
+    f.message += " The line shown, `" + d->observed_line + "`, is one the model held until command " +
+                 std::to_string(*stale + 1) + " of the case (`" + print_command(applied_[*stale]) +
+                 "`) changed or removed it: the implementation kept it where the model's rule made a new one.";
+  f.difference = late_shape_;
   return l;
 }
 

@@ -116,6 +116,10 @@ class ProgramChecker {
 
  private:
   Node rebuild(std::size_t commands) const;  // a fresh node with the first `commands` of applied_
+  // When the model's snapshot held `line` earlier in the case and holds it
+  // no more: the index in the case of the command that last changed or
+  // removed it (nullopt: never held, or held now).
+  std::optional<std::size_t> last_held_before(const std::string& line) const;
   StepResult full_step(const Command& c, std::vector<DerivedChange>* derived_changed);
   // A step judged wrong on an answer from a batch (several commands before
   // one round trip: Implementation::last_apply_batched) is judged again

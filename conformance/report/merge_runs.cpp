@@ -186,6 +186,7 @@ ClauseOutcome clause_from(const Clause& clause, const json& c) {
     co.finding->observed_document = c.value("observed_document", std::string());
     co.finding->expected_line = c.value("expected_line", std::string());
     co.finding->observed_line = c.value("observed_line", std::string());
+    co.finding->difference = c.value("difference", std::string());
     std::string text;
     for (const auto& line : c.value("counterexample_commands", json::array())) text += line.get<std::string>() + "\n";
     TextError e;
@@ -197,6 +198,11 @@ ClauseOutcome clause_from(const Clause& clause, const json& c) {
       if (q.contains("draw")) r.draw = q["draw"].get<std::uint32_t>();
       co.program.request = r;
     }
+  }
+  for (const auto& o : c.value("other_findings", json::array())) {
+    ClauseOutcome other = clause_from(clause, o);
+    other.part = static_cast<int>(co.other_findings.size()) + 1;
+    co.other_findings.push_back(std::move(other));
   }
   return co;
 }

@@ -91,6 +91,38 @@ void legend(pugi::xml_node parent, const FindingPicture& fp) {
     item(kExpectedColour, "\xE2\x80\x94", "expected normals, and the implementation's (dashed, orange)");
 }
 
+// What the implementation did: the finding's message and the first
+// differing lines.
+void what_it_did(pugi::xml_node sec, const Finding& f) {
+  auto did = add(sec, "p");
+  add(did, "strong", "What the implementation did: ");
+  add_text(did, f.message);
+  if (!f.expected_line.empty() || !f.observed_line.empty()) {
+    auto t = add(sec, "table", {}, "expected-observed");
+    auto r1 = add(t, "tr");
+    add(r1, "th", "expected (" + f.shown_by + ")");
+    add(add(r1, "td"), "code", f.expected_line.empty() ? "(no such line)" : f.expected_line);
+    auto r2 = add(t, "tr");
+    add(r2, "th", "observed");
+    add(add(r2, "td"), "code", f.observed_line.empty() ? "(no such line)" : f.observed_line);
+  }
+}
+
+// A finding's counterexample, linked to its file, and its replay line.
+void counterexample_block(pugi::xml_node sec, const ClauseOutcome& co, const ReportContext& ctx) {
+  const std::string file = (std::filesystem::path(ctx.run_dir) / counterexample_path(co)).string();
+  auto h4 = add(sec, "h4");
+  add_text(h4, counterexample_heading(co) + " — " + std::to_string(co.program.commands.size()) +
+                   " commands from a fresh node; found by " + co.found_by +
+                   (co.program_origin.empty() ? ", seed " + std::to_string(co.seed) : std::string()) + " (");
+  auto link = add(h4, "a", counterexample_path(co));
+  link.append_attribute("href") = counterexample_path(co).c_str();
+  add_text(h4, ")");
+  add(sec, "pre", inline_program(co), "program");
+  add(sec, "h4", "Replay");
+  add(sec, "pre", replay_command(file, ctx), "replay");
+}
+
 void finding_section(pugi::xml_node parent, const ClauseOutcome& co, const Verdict& v, const ReportContext& ctx) {
   const std::string id(co.clause->id);
   auto sec = add(parent, "section", {}, "finding");
@@ -105,19 +137,7 @@ void finding_section(pugi::xml_node parent, const ClauseOutcome& co, const Verdi
   auto reading = add(sec, "p");
   add(reading, "strong", "Suite's reading: ");
   add_text(reading, std::string(co.clause->reading));
-  const Finding& f = *co.finding;
-  auto did = add(sec, "p");
-  add(did, "strong", "What the implementation did: ");
-  add_text(did, f.message);
-  if (!f.expected_line.empty() || !f.observed_line.empty()) {
-    auto t = add(sec, "table", {}, "expected-observed");
-    auto r1 = add(t, "tr");
-    add(r1, "th", "expected (" + f.shown_by + ")");
-    add(add(r1, "td"), "code", f.expected_line.empty() ? "(no such line)" : f.expected_line);
-    auto r2 = add(t, "tr");
-    add(r2, "th", "observed");
-    add(add(r2, "td"), "code", f.observed_line.empty() ? "(no such line)" : f.observed_line);
-  }
+  what_it_did(sec, *co.finding);
   if (ctx.baseline && ctx.baseline->reasons.count(id)) {
     auto p = add(sec, "p");
     add(p, "strong", "Baseline says: ");
@@ -138,17 +158,16 @@ void finding_section(pugi::xml_node parent, const ClauseOutcome& co, const Verdi
     add(sec, "p", "The final state holds no vertex: nothing to draw.", "note");
   }
 
-  const std::string file = (std::filesystem::path(ctx.run_dir) / counterexample_path(co)).string();
-  auto h4 = add(sec, "h4");
-  add_text(h4, counterexample_heading(co) + " — " + std::to_string(co.program.commands.size()) +
-                   " commands from a fresh node; found by " + co.found_by +
-                   (co.program_origin.empty() ? ", seed " + std::to_string(co.seed) : std::string()) + " (");
-  auto link = add(h4, "a", counterexample_path(co));
-  link.append_attribute("href") = counterexample_path(co).c_str();
-  add_text(h4, ")");
-  add(sec, "pre", inline_program(co), "program");
-  add(sec, "h4", "Replay");
-  add(sec, "pre", replay_command(file, ctx), "replay");
+  counterexample_block(sec, co, ctx);
+  // The clause's other findings (another difference of the same kind),
+  // each with its own counterexample.
+  for (const ClauseOutcome& other : co.other_findings) {
+    auto oh = add(sec, "h4", id + ", another finding (" + clause_status_name(clause_status_of(other.finding->status)) +
+                                 ": another difference)");
+    oh.append_attribute("id") = ("finding-" + id + "." + std::to_string(other.part + 1)).c_str();
+    what_it_did(sec, *other.finding);
+    counterexample_block(sec, other, ctx);
+  }
 }
 
 // render_report_html's parts, top to bottom.
@@ -301,7 +320,8 @@ void add_property_table(pugi::xml_node body, const RunResult& run) {
 }  // namespace
 
 std::string counterexample_obj_path(const ClauseOutcome& co) {
-  return "counterexamples/" + std::string(co.clause->id) + ".obj";
+  return "counterexamples/" + std::string(co.clause->id) + (co.part > 0 ? "." + std::to_string(co.part + 1) : "") +
+         ".obj";
 }
 
 std::string render_report_html(const RunResult& run, const Verdict& v, const ReportContext& ctx) {
