@@ -64,8 +64,9 @@ void decide_clauses(const RunSettings& o, const RouteLimits& limits, RunResult* 
     // Milder kinds of finding in the clause, shown in the note: each kind
     // once, with every property that found it.
     std::vector<std::pair<std::string, std::set<std::string>>> also;
-    // Findings that name their difference (Finding::difference): those of
-    // the shown finding's kind but another difference are other findings.
+    // Findings of a kind that tells differences apart (Finding::difference):
+    // those of the shown finding's kind but another difference are other
+    // findings.
     // Each with its property's index (prefer_finding).
     std::vector<std::pair<int, ClauseOutcome>> differences;
     const auto also_found = [&also](const Finding& f, const std::string& by) {
@@ -78,7 +79,7 @@ void decide_clauses(const RunSettings& o, const RouteLimits& limits, RunResult* 
       if (auto it = po.exercised.find(id); it != po.exercised.end()) e.exercised += it->second;
       if (auto it = po.derived_only.find(id); it != po.derived_only.end()) e.derived_only += it->second;
       auto take = [&](const Finding& f, const Program& p, bool known) {
-        if (!f.difference.empty()) {
+        if (kind_tells_differences_apart(f)) {
           ClauseOutcome part;
           part.clause = &clause;
           part.finding = f;

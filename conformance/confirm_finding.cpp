@@ -187,6 +187,8 @@ std::string finding_kind(const Finding& f) {
   return "wrong-answer";
 }
 
+bool kind_tells_differences_apart(const Finding& f) { return finding_kind(f) == "hidden-state"; }
+
 int finding_severity(const Finding& f) {
   const std::string kind = finding_kind(f);
   if (kind == "crash") return 4;

@@ -82,6 +82,12 @@ bool reproduces_fresh(Implementation& sut, const Finding& f, const Program& prog
 // with the same kind.
 std::string finding_kind(const Finding& f);
 
+// Whether findings of `f`'s kind are told apart by their difference
+// (Finding::difference): hidden state, where one clause can hide two
+// behaviours of a host from its watchers (r6's copied XYZ positions and
+// its kept values of a deleted element, both LAYER-DEFAULT-1).
+bool kind_tells_differences_apart(const Finding& f);
+
 // How bad a kind of failure is: a wrong answer 0, hidden state 1 (the
 // watchers were told something else than is stored: worse than a state
 // every watcher sees), a protocol error 2, a time-out 3, a crash (a

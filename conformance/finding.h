@@ -47,13 +47,15 @@ struct Finding {
   // the blamed one first; empty for a finding no node rule decided (a
   // derived line, a capability check, a fresh node).
   std::vector<Rule> rules;
-  // The kind of difference within the finding's kind (confirm_finding.h
-  // finding_kind), where one clause can show several: a late subscriber's
-  // shape of difference (program_checker.h late_shape), empty otherwise.
-  // Two findings of one clause and kind but another difference are two
-  // findings: a run tolerates the one it found, not the other
-  // (property_case.h is_tolerated), and the clause shows both
-  // (ClauseOutcome::other_findings).
+  // The kind of difference within the finding's kind, for a kind that
+  // tells differences apart (confirm_finding.h
+  // kind_tells_differences_apart: hidden state): "" or, for a late
+  // subscriber shown a slot the model removed with its element, that slot
+  // as it was (program_checker.h kRemovedSlotKept). Two findings of one
+  // clause and such a kind but another difference are two findings: a run
+  // tolerates the one it found, not the other (property_case.h
+  // is_tolerated), and the clause shows both (ClauseOutcome::
+  // other_findings).
   std::string difference;
 };
 

@@ -116,10 +116,11 @@ class ProgramChecker {
 
  private:
   Node rebuild(std::size_t commands) const;  // a fresh node with the first `commands` of applied_
-  // When the model's snapshot held `line` earlier in the case and holds it
-  // no more: the index in the case of the command that last changed or
-  // removed it (nullopt: never held, or held now).
-  std::optional<std::size_t> last_held_before(const std::string& line) const;
+  // When `line` is a slot line the model held earlier in the case, and a
+  // command removed that slot (its element deleted) while it held it, and
+  // the model holds the line no more: that command's index in the case
+  // (the last such); nullopt otherwise.
+  std::optional<std::size_t> removed_slot_at(const std::string& line) const;
   StepResult full_step(const Command& c, std::vector<DerivedChange>* derived_changed);
   // A step judged wrong on an answer from a batch (several commands before
   // one round trip: Implementation::last_apply_batched) is judged again
@@ -165,5 +166,9 @@ class ProgramChecker {
 
 // How a finding of the late view (ProgramChecker::check_late_view) begins.
 inline constexpr const char* kLateViewPrefix = "late subscriber";
+// The late view's one kind of difference within hidden state
+// (Finding::difference): a slot the model removed with its element, shown
+// again as it was on an element made at its id.
+inline constexpr const char* kRemovedSlotKept = "a removed slot kept";
 
 }  // namespace vgc

@@ -40,7 +40,7 @@ std::string run_budget_why() { return g_budget ? g_budget->why() : std::string()
 bool is_tolerated(const CaseContext& c, const Finding& f) {
   const auto it = c.tolerated.find(f.clause);
   if (it == c.tolerated.end() || finding_severity(f) > it->second) return false;
-  if (f.difference.empty() || finding_severity(f) < it->second) return true;
+  if (finding_severity(f) < it->second || !kind_tells_differences_apart(f)) return true;
   // The same kind, which tells differences apart: tolerated only for a
   // difference found.
   return c.tolerated_differences.count({f.clause, f.difference}) > 0;
@@ -49,7 +49,7 @@ bool is_tolerated(const CaseContext& c, const Finding& f) {
 void tolerate(CaseContext& c, const Finding& f) {
   int& worst = c.tolerated[f.clause];
   worst = std::max(worst, finding_severity(f));
-  if (!f.difference.empty()) c.tolerated_differences.insert({f.clause, f.difference});
+  if (kind_tells_differences_apart(f)) c.tolerated_differences.insert({f.clause, f.difference});
 }
 
 bool case_fails_fresh(const CaseContext& c, const Finding& f, const Program& program) {

@@ -79,8 +79,9 @@ struct CaseContext {
   // clause (a crash behind a wrong answer) is a new finding of its own.
   std::map<std::string, int> tolerated;
   // Within a clause tolerated at exactly a kind that tells differences
-  // apart (Finding::difference: a late subscriber's), the differences
-  // found: another difference of that kind is a finding of its own.
+  // apart (confirm_finding.h kind_tells_differences_apart), the differences
+  // found (Finding::difference): another one of that kind is a finding of
+  // its own.
   std::set<std::pair<std::string, std::string>> tolerated_differences;
   std::set<std::string> baseline;   // the subset tolerated from the start
   // At scale: clauses an earlier property of the run has a finding in,
