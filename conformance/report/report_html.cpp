@@ -123,13 +123,32 @@ void counterexample_block(pugi::xml_node sec, const ClauseOutcome& co, const Rep
   add(sec, "pre", replay_command(file, ctx), "replay");
 }
 
-void finding_section(pugi::xml_node parent, const ClauseOutcome& co, const Verdict& v, const ReportContext& ctx) {
+void finding_section(pugi::xml_node parent, const ClauseOutcome& co, const Verdict& v, const ReportContext& ctx,
+                     const std::vector<CauseGroup>& groups) {
   const std::string id(co.clause->id);
   auto sec = add(parent, "section", {}, "finding");
   sec.append_attribute("id") = ("finding-" + id).c_str();
   auto h = add(sec, "h3");
   add_text(h, id + " (" + std::string(clause_level_name(co.clause->level)) + ") ");
   status_badge(h, shown_status_html(co, v));
+  // A grouped finding names the others of its cause (as summary.md does),
+  // each linked to its own section.
+  if (const CauseGroup* g = cause_group_of(groups, id)) {
+    auto p = add(sec, "p", {}, "one-cause");
+    add_text(p, "One cause with ");
+    bool first = true;
+    for (const auto& c : g->clauses) {
+      if (c == id) continue;
+      if (!first) add_text(p, ", ");
+      first = false;
+      auto a = add(p, "a", c);
+      a.append_attribute("href") = ("#finding-" + c).c_str();
+    }
+    add_text(p, " (");
+    auto a = add(p, "a", "Findings with one cause");
+    a.append_attribute("href") = "#cause-groups";
+    add_text(p, " above).");
+  }
 
   auto quote = add(sec, "blockquote");
   add_text(quote, std::string(co.clause->text) + " ");
@@ -232,7 +251,7 @@ void add_findings(pugi::xml_node body, const RunResult& run, const Verdict& v, c
   // clause linked to its own finding below, its status unchanged.
   const std::vector<CauseGroup> groups = group_findings_by_cause(run);
   if (!groups.empty()) {
-    add(body, "h2", "Findings with one cause");
+    add(body, "h2", "Findings with one cause").append_attribute("id") = "cause-groups";
     auto ul = add(body, "ul", {}, "cause-groups");
     for (const auto& g : groups) {
       auto li = add(ul, "li");
@@ -251,7 +270,7 @@ void add_findings(pugi::xml_node body, const RunResult& run, const Verdict& v, c
     add(body, "h2", heading);
     if (!intro.empty()) add(body, "p", intro);
     for (const auto& co : run.clauses)
-      if (co.finding && in(ids, std::string(co.clause->id))) finding_section(body, co, v, ctx);
+      if (co.finding && in(ids, std::string(co.clause->id))) finding_section(body, co, v, ctx, groups);
   };
   section(v.new_failures, "Failures", "");
   section(v.profile_differences, "Profile differences (IMPLEMENTATION-DEFINED: the spec is silent)",
