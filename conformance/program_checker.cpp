@@ -347,6 +347,7 @@ std::optional<Localized> ProgramChecker::check_late_view(const std::vector<Comma
   const auto format_finding = [&]() -> std::optional<Localized> {
     if (!late_format_ || (localize && !localize("subscription both-formats"))) return std::nullopt;
     late_shape_ = "subscription both-formats";
+    late_format_->difference = late_shape_;
     StepResult r;
     r.expected = Reason::Ok;
     r.failure = late_format_;
@@ -380,6 +381,17 @@ std::optional<Localized> ProgramChecker::check_late_view(const std::vector<Comma
               ": a session that subscribed to the node and every layer (REAL32 and REAL64) after this command was "
               "sent another node than the session that watched it all along, which agreed with the model; " +
               f.message;
+  // A slot shown at the default where the model's value equals it only as
+  // a number is the subscription's, whichever write made it.
+  if (const auto b = blame_subscription_dump(rebuild(static_cast<std::size_t>(l->index) + 1),
+                                             DocumentDifference{f.expected_line, f.observed_line, "slot"})) {
+    const auto cut = f.message.find(". The model ");
+    if (cut != std::string::npos) f.message.erase(cut + 1);
+    f.message += " " + b->explanation;
+    f.clause = b->clause;
+    f.rules = b->rules;
+    f.difference = kDefaultByValue;
+  }
   if (stale) {
     f.message += " The slot shown, `" + d->observed_line + "`, is one the model held until command " +
                  std::to_string(*stale + 1) + " of the case (`" + print_command(applied_[*stale]) +

@@ -170,5 +170,9 @@ inline constexpr const char* kLateViewPrefix = "late subscriber";
 // (Finding::difference): a slot the model removed with its element, shown
 // again as it was on an element made at its id.
 inline constexpr const char* kRemovedSlotKept = "a removed slot kept";
+// ... and a slot shown at its layer's default where the model holds a value
+// equal to it only as a number (-0.0 and 0: attribution.h
+// blame_subscription_dump); and a subscription kept in two formats.
+inline constexpr const char* kDefaultByValue = "a slot left out as the default by value";
 
 }  // namespace vgc

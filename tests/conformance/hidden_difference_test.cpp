@@ -154,3 +154,86 @@ TEST(HiddenDifferences, TwoHiddenBehavioursOfOneClauseAreEachAFinding) {
 
 }  // namespace
 }  // namespace vgc
+
+namespace vgc {
+namespace {
+
+// A route whose late subscriber is sent nothing for a slot of a real layer
+// whose values all equal the layer's default as numbers (r6's
+// layer_subscribe compares with `==`), so -0.0 where the default is 0 (or
+// 0 where it is -0.0) reaches it as the default. The watching session was sent the
+// value: the store and the write are right.
+class DefaultByValueHost final : public test::ReferenceWrapper {
+ public:
+  std::string name() const override { return "test:default-by-value"; }
+  Answer reset() override {
+    late_ = Node();
+    return ReferenceWrapper::reset();
+  }
+  Answer apply(const Command& c) override {
+    late_.apply(c);
+    return ReferenceWrapper::apply(c);
+  }
+  Document snapshot() override {
+    if (!late_view_) return ReferenceWrapper::snapshot();
+    Node sent = late_;
+    for (const auto& [lid, layer] : sent.layers()) {
+      if (lid < 2) continue;
+      if (is_vertex_layer_type(layer.type) ? layer.type != LayerType::VertexReal && layer.type != LayerType::VertexXyz
+                                            : layer.type != LayerType::PolygonCornerReal &&
+                                                  layer.type != LayerType::PolygonFaceReal)
+        continue;
+      const int n = layer.type == LayerType::VertexXyz ? 3 : layer.type == LayerType::PolygonCornerReal ? 4 : 1;
+      for (auto& [id, slot] : const_cast<Layer&>(layer).slots) {  // test-only: reach into the copy's storage
+        bool at_default = true;  // as r6 decides it: every value == the default
+        for (int i = 0; i < n; ++i) at_default = at_default && slot.r[i] == layer.def_real;
+        if (at_default)
+          for (int i = 0; i < n; ++i) slot.r[i] = layer.def_real;  // left out: the newcomer takes the default
+      }
+    }
+    return Document{CallStatus::Ok, print_snapshot(sent), ""};
+  }
+  bool offers_late_view() override { return true; }
+  void use_late_view(bool on) override { late_view_ = on; }
+
+ private:
+  Node late_;
+  bool late_view_ = false;
+};
+
+// Issue 27: r6 at seed 5 failed REAL-32BIT-1 on a late subscriber sent 0
+// for `vertex_set_real32 2 0 -0` on a layer whose default is 0. r6 stores
+// -0.0 (vs_node_geometry.c: the real32 write stores `(real64)value` and
+// sends the watchers `value`); its layer_subscribe leaves out every slot
+// `== layer->def.real`. What a newcomer is sent is the subscription's:
+// LAYER-SUBSCRIBE-1 (rule layer.subscribe), and the write clauses pass.
+// Seen to fail before blame_subscription_dump: REAL-STORAGE-1 or
+// REAL-32BIT-1 failed at each seed, LAYER-SUBSCRIBE-1 passed.
+TEST(HiddenDifferences, ASignedZeroLeftOutOfASubscriptionIsTheSubscriptionsNotTheWrites) {
+  for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+    DefaultByValueHost host;
+    RunOptions o;
+    o.seed = seed;
+    o.cases = 200;
+    o.max_size = 50;
+    o.clause_glob = "REAL-*,LAYER-SUBSCRIBE-1";
+    o.budget_seconds = 3600;
+    const RunResult run = run_certification(host, o);
+    std::string seen;
+    bool subscription = false;
+    for (const auto& co : run.clauses) {
+      if (!co.finding) continue;
+      seen += std::string(co.clause->id) + ": " + co.finding->message.substr(0, 600) + " | ";
+      if (co.clause->id == "LAYER-SUBSCRIBE-1")
+        subscription = co.finding->message.find("comparing by value") != std::string::npos &&
+                       co.finding->message.find("late subscriber: ") == 0;
+      else
+        ADD_FAILURE() << "seed " << seed << ": " << co.clause->id << " " << co.finding->message;
+    }
+    std::printf("seed %llu: %s\n", static_cast<unsigned long long>(seed), seen.c_str());
+    EXPECT_TRUE(subscription) << "seed " << seed << ": " << seen;
+  }
+}
+
+}  // namespace
+}  // namespace vgc
