@@ -142,6 +142,7 @@ TEST(HiddenDifferences, TwoHiddenBehavioursOfOneClauseAreEachAFinding) {
     const std::string summary = render_summary(run, v, ctx), html = render_report_html(run, v, ctx);
     EXPECT_NE(summary.find("LAYER-DEFAULT-1, another finding"), std::string::npos) << summary;
     EXPECT_NE(html.find("LAYER-DEFAULT-1, another finding"), std::string::npos);
+    EXPECT_NE(render_junit(run, v, ctx).find("LAYER-DEFAULT-1, another finding"), std::string::npos);
     EXPECT_TRUE(std::filesystem::exists(ctx.run_dir + "/counterexamples/LAYER-DEFAULT-1.2.vgc"));
     const auto json = nlohmann::json::parse(render_report_json(run, v, ctx));
     bool listed = false;
