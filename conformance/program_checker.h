@@ -119,7 +119,8 @@ class ProgramChecker {
   // When `line` is a slot line the model held earlier in the case, and a
   // command removed that slot (its element deleted) while it held it, and
   // the model holds the line no more: that command's index in the case
-  // (the last such); nullopt otherwise.
+  // (the last such); nullopt otherwise, and for a case of more than 2,000
+  // commands (not searched).
   std::optional<std::size_t> removed_slot_at(const std::string& line) const;
   StepResult full_step(const Command& c, std::vector<DerivedChange>* derived_changed);
   // A step judged wrong on an answer from a batch (several commands before
