@@ -2,12 +2,14 @@
 #include "attribution.h"
 
 #include <algorithm>
+#include <cstring>
 #include <map>
 #include <sstream>
 
 #include "clause.h"
 #include "command_text.h"
 #include "derived_document.h"
+#include "number_text.h"
 #include "rule_clauses.h"
 #include "snapshot.h"
 
@@ -287,6 +289,42 @@ std::string difference_shape(const Node& after, const DocumentDifference& d) {
     if (const auto w = line_written(after, d.expected_line); w && w->rule != Rule::None)
       shape += " " + std::string(rule_name(w->rule));
   return shape;
+}
+
+std::optional<Blame> blame_subscription_dump(const Node& after, const DocumentDifference& d) {
+  const auto e = split_words(d.expected_line), o = split_words(d.observed_line);
+  if (e.size() < 4 || o.size() != e.size() || e[0] != "slot" || o[0] != "slot" || e[1] != o[1] || e[2] != o[2])
+    return std::nullopt;
+  std::uint32_t id = 0;
+  if (!parse_uint(e[1], 16, &id)) return std::nullopt;
+  const Layer* layer = after.find_layer(static_cast<std::uint16_t>(id));
+  const bool real = layer && (layer->type == LayerType::VertexXyz || layer->type == LayerType::VertexReal ||
+                              layer->type == LayerType::PolygonCornerReal || layer->type == LayerType::PolygonFaceReal);
+  if (!real) return std::nullopt;
+  const auto bits = [](double v) {
+    std::uint64_t b = 0;
+    std::memcpy(&b, &v, sizeof b);
+    return b;
+  };
+  const double def = layer->def_real;
+  bool differs_in_bits = false;
+  for (std::size_t i = 3; i < e.size(); ++i) {
+    double ev = 0, ov = 0;
+    if (!parse_f64(e[i], &ev) || !parse_f64(o[i], &ov)) return std::nullopt;
+    if (bits(ov) != bits(def) || !(ev == def)) return std::nullopt;  // shown the default; the model's value equals it
+    differs_in_bits = differs_in_bits || bits(ev) != bits(def);
+  }
+  if (!differs_in_bits) return std::nullopt;
+  Blame b;
+  b.rules = {Rule::Subscribe};
+  b.clause = std::string(rule_clause(Rule::Subscribe));
+  b.explanation = "The model holds " + quoted(d.expected_line) + ", which equals the layer's default " +
+                  format_f64(def) + " as a number but not bit for bit; the newcomer was shown the default, so the "
+                  "host sent it nothing for that slot, as for a slot at the default, comparing by value. Every "
+                  "watcher was sent the value the model holds: what a new subscriber is sent of a layer is the "
+                  "subscription's. Blamed on " + rule_label(Rule::Subscribe) + ": a subscription to a layer is "
+                  "sent every slot that is not at its default, bit for bit (docs/adapters.md section 7, the late subscriber).";
+  return b;
 }
 
 Blame blame_fresh(const Node& fresh, const DocumentDifference& d, bool derived) {

@@ -27,6 +27,7 @@
 // rule; never on a clause guessed from the line's shape.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -98,6 +99,17 @@ const std::vector<std::string_view>& derived_only_clauses();
 // has already localized one (the late view, program_checker.h) uses to
 // spare localizing the others.
 std::string difference_shape(const Node& after, const DocumentDifference& d);
+
+// A late subscriber (program_checker.h check_late_view) shown, for a slot
+// of a real layer of `after`, the layer's default where the model holds a
+// value equal to it as a number but not bit for bit (-0.0 where the
+// default is 0, or 0 where it is -0.0): the host sent the newcomer nothing
+// for that slot, as for a slot at the default, comparing by value (r6's
+// layer_subscribe does). What a new subscriber is sent of a layer is the
+// subscription's, rule layer.subscribe (LAYER-SUBSCRIBE-1), not the
+// write's: every watcher was sent the value the model holds. nullopt for
+// any other difference `d`.
+std::optional<Blame> blame_subscription_dump(const Node& after, const DocumentDifference& d);
 
 // The identity of a snapshot or derived line: its kind and the ids after
 // it ("slot 3 17", "edge_crease 4 2", "vertex 5", "crease_vertex").

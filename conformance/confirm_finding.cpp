@@ -196,6 +196,8 @@ std::optional<FindingKind> finding_kind_named(std::string_view name) {
   return std::nullopt;
 }
 
+bool kind_tells_differences_apart(const Finding& f) { return finding_kind_of(f) == FindingKind::HiddenState; }
+
 FindingKind finding_kind_of(const Finding& f) {
   // A history finding is about the kind its message names (confirm_call_failure wrote it).
   if (depends_on_history(f)) return finding_kind_named(call_failure_kind(f)).value_or(FindingKind::WrongAnswer);

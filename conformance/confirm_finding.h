@@ -90,6 +90,12 @@ const char* finding_kind_name(FindingKind k);  // "wrong-answer", "hidden-state"
 // The inverse (a Program's history_kind read back); nullopt for another word.
 std::optional<FindingKind> finding_kind_named(std::string_view name);
 
+// Whether findings of `f`'s kind are told apart by their difference
+// (Finding::difference): hidden state, where one clause can hide two
+// behaviours of a host from its watchers (r6's copied XYZ positions and
+// its kept values of a deleted element, both LAYER-DEFAULT-1).
+bool kind_tells_differences_apart(const Finding& f);
+
 // How bad a kind of failure is: a wrong answer 0, hidden state 1 (the
 // watchers were told something else than is stored: worse than a state
 // every watcher sees), a protocol error 2, a time-out 3, a crash (a

@@ -62,6 +62,16 @@ struct Finding {
   bool host_sent_seen = false;
   std::vector<std::string> host_sent;
   std::size_t host_sent_count = 0;
+  // The kind of difference within the finding's kind, for a kind that
+  // tells differences apart (confirm_finding.h
+  // kind_tells_differences_apart: hidden state): "" or, for a late
+  // subscriber shown a slot the model removed with its element, that slot
+  // as it was (program_checker.h kRemovedSlotKept). Two findings of one
+  // clause and such a kind but another difference are two findings: a run
+  // tolerates the one it found, not the other (property_case.h
+  // is_tolerated), and the clause shows both (ClauseOutcome::
+  // other_findings).
+  std::string difference;
 };
 
 }  // namespace vgc

@@ -31,6 +31,37 @@ void ProgramChecker::allow_sparse_reading() {
   if (!digest_on_ && applied_.empty()) sparse_ = true;
 }
 
+std::optional<std::size_t> ProgramChecker::removed_slot_at(const std::string& line) const {
+  // Each command costs two printed snapshots here: a case at scale (10^4
+  // commands and more, which no route with a late view runs today) is not
+  // searched.
+  constexpr std::size_t kMaxCommandsSearched = 2000;
+  if (line.rfind("slot ", 0) != 0 || applied_.size() > kMaxCommandsSearched) return std::nullopt;
+  const std::string key = line_key(line);
+  // What the node prints: whether it holds `line`, and a line of its key.
+  const auto holds = [&line, &key](const Node& n, bool* has_key) {
+    bool held = false;
+    *has_key = false;
+    for (const std::string& l : split_lines(print_snapshot(n))) {
+      held = held || l == line;
+      *has_key = *has_key || (l.rfind("slot ", 0) == 0 && line_key(l) == key);
+    }
+    return held;
+  };
+  bool has_key = false;
+  if (holds(model_, &has_key)) return std::nullopt;
+  Node node;
+  std::optional<std::size_t> removed;
+  for (std::size_t i = 0; i < applied_.size(); ++i) {
+    const bool held = holds(node, &has_key);
+    node.apply(applied_[i]);
+    bool after_key = false;
+    holds(node, &after_key);
+    if (held && !after_key) removed = i;  // command i removed the slot while it held `line`
+  }
+  return removed;
+}
+
 Node ProgramChecker::rebuild(std::size_t commands) const {
   Node node;
   for (std::size_t i = 0; i < commands && i < applied_.size(); ++i) node.apply(applied_[i]);
@@ -320,6 +351,7 @@ std::optional<Localized> ProgramChecker::check_late_view(const std::vector<Comma
   const auto format_finding = [&]() -> std::optional<Localized> {
     if (!late_format_ || (localize && !localize("subscription both-formats"))) return std::nullopt;
     late_shape_ = "subscription both-formats";
+    late_format_->difference = late_shape_;
     StepResult r;
     r.expected = Reason::Ok;
     r.failure = late_format_;
@@ -331,6 +363,12 @@ std::optional<Localized> ProgramChecker::check_late_view(const std::vector<Comma
                                       : diff_documents(without_subscriptions(expected), without_subscriptions(late.text));
   if (!d) return format_finding();
   late_shape_ = difference_shape(model_, *d);
+  // A slot the model removed with its element, shown again as it was (a
+  // deleted element's value back on an element created at its id), is
+  // another kind of difference than a value the model never held there,
+  // whichever rule wrote the model's line: a finding of its own.
+  const std::optional<std::size_t> stale = removed_slot_at(d->observed_line);
+  if (stale) late_shape_ += " (" + std::string(kRemovedSlotKept) + ")";
   if (localize && !localize(late_shape_)) return format_finding();
   // Provenance first: the command that last wrote the model's line is
   // where a host that stored something else most likely began to differ.
@@ -347,6 +385,23 @@ std::optional<Localized> ProgramChecker::check_late_view(const std::vector<Comma
               ": a session that subscribed to the node and every layer (REAL32 and REAL64) after this command was "
               "sent another node than the session that watched it all along, which agreed with the model; " +
               f.message;
+  // A slot shown at the default where the model's value equals it only as
+  // a number is the subscription's, whichever write made it.
+  if (const auto b = blame_subscription_dump(rebuild(static_cast<std::size_t>(l->index) + 1),
+                                             DocumentDifference{f.expected_line, f.observed_line, "slot"})) {
+    const auto cut = f.message.find(". The model ");
+    if (cut != std::string::npos) f.message.erase(cut + 1);
+    f.message += " " + b->explanation;
+    f.clause = b->clause;
+    f.rules = b->rules;
+    f.difference = kDefaultByValue;
+  }
+  if (stale) {
+    f.message += " The slot shown, `" + d->observed_line + "`, is one the model held until command " +
+                 std::to_string(*stale + 1) + " of the case (`" + print_command(applied_[*stale]) +
+                 "`) removed it: the implementation kept it, and gave it to the element made at its id.";
+    f.difference = kRemovedSlotKept;
+  }
   return l;
 }
 

@@ -116,6 +116,12 @@ class ProgramChecker {
 
  private:
   Node rebuild(std::size_t commands) const;  // a fresh node with the first `commands` of applied_
+  // When `line` is a slot line the model held earlier in the case, and a
+  // command removed that slot (its element deleted) while it held it, and
+  // the model holds the line no more: that command's index in the case
+  // (the last such); nullopt otherwise, and for a case of more than 2,000
+  // commands (not searched).
+  std::optional<std::size_t> removed_slot_at(const std::string& line) const;
   StepResult full_step(const Command& c, std::vector<DerivedChange>* derived_changed);
   // A step judged wrong on an answer from a batch (several commands before
   // one round trip: Implementation::last_apply_batched) is judged again
@@ -161,5 +167,13 @@ class ProgramChecker {
 
 // How a finding of the late view (ProgramChecker::check_late_view) begins.
 inline constexpr const char* kLateViewPrefix = "late subscriber";
+// The late view's one kind of difference within hidden state
+// (Finding::difference): a slot the model removed with its element, shown
+// again as it was on an element made at its id.
+inline constexpr const char* kRemovedSlotKept = "a removed slot kept";
+// ... and a slot shown at its layer's default where the model holds a value
+// equal to it only as a number (-0.0 and 0: attribution.h
+// blame_subscription_dump); and a subscription kept in two formats.
+inline constexpr const char* kDefaultByValue = "a slot left out as the default by value";
 
 }  // namespace vgc

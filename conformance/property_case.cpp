@@ -38,11 +38,19 @@ bool run_budget_spent() { return g_budget && g_budget->spent(); }
 
 std::string run_budget_why() { return g_budget ? g_budget->why() : std::string(); }
 
-// Whether `f` is tolerated: its clause has a finding of the same or a
-// worse kind already.
 bool is_tolerated(const CaseContext& c, const Finding& f) {
   const auto it = c.tolerated.find(f.clause);
-  return it != c.tolerated.end() && finding_severity(f) <= it->second;
+  if (it == c.tolerated.end() || finding_severity(f) > it->second) return false;
+  if (finding_severity(f) < it->second || !kind_tells_differences_apart(f)) return true;
+  // The same kind, which tells differences apart: tolerated only for a
+  // difference found.
+  return c.tolerated_differences.count({f.clause, f.difference}) > 0;
+}
+
+void tolerate(CaseContext& c, const Finding& f) {
+  int& worst = c.tolerated[f.clause];
+  worst = std::max(worst, finding_severity(f));
+  if (kind_tells_differences_apart(f)) c.tolerated_differences.insert({f.clause, f.difference});
 }
 
 bool case_fails_fresh(const CaseContext& c, const Finding& f, const Program& program) {

@@ -78,6 +78,11 @@ struct CaseContext {
   // failure tolerated in it (finding_severity): a worse kind in the same
   // clause (a crash behind a wrong answer) is a new finding of its own.
   std::map<std::string, int> tolerated;
+  // Within a clause tolerated at exactly a kind that tells differences
+  // apart (confirm_finding.h kind_tells_differences_apart), the differences
+  // found (Finding::difference): another one of that kind is a finding of
+  // its own.
+  std::set<std::pair<std::string, std::string>> tolerated_differences;
   std::set<std::string> baseline;   // the subset tolerated from the start
   // At scale: clauses an earlier property of the run has a finding in,
   // tolerated from the start at that finding's kind (tolerate_found_earlier),
@@ -182,9 +187,14 @@ std::string run_budget_why();
 // One case of the property: what RapidCheck calls, fresh or shrinking.
 void run_case(const CaseSpec& s);
 
-// Whether `f` is tolerated: its clause has a finding of the same or a
-// worse kind already.
+// Whether `f` is tolerated: its clause has a finding of a worse kind
+// already, or of the same kind and, where that kind tells differences
+// apart (Finding::difference), the same difference.
 bool is_tolerated(const CaseContext& c, const Finding& f);
+
+// Records that `f` was found: its clause tolerated from now on up to its
+// kind, and at that kind its difference (is_tolerated).
+void tolerate(CaseContext& c, const Finding& f);
 
 // Whether the case's program, from a fresh instance, fails as `f` did: a
 // call failure of the same kind on whatever command (a crash is a crash

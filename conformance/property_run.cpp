@@ -94,8 +94,7 @@ void tolerate_found_earlier(CaseContext& ctx, const RunResult& run) {
   for (const auto& p : run.properties)
     for (const auto& f : p.findings) {
       if (depends_on_history(f.finding) || f.finding.status == FindingStatus::NotJudged) continue;
-      int& worst = ctx.tolerated[f.finding.clause];
-      worst = std::max(worst, finding_severity(f.finding));
+      tolerate(ctx, f.finding);
       ctx.found_earlier.insert(f.finding.clause);
     }
 }
@@ -184,8 +183,7 @@ void record_round_failure(const rc::detail::FailureResult& failure, int round, C
     ++ctx.set_aside;
     return;
   }
-  int& worst = ctx.tolerated[pf.finding.clause];
-  worst = std::max(worst, finding_severity(pf.finding));
+  tolerate(ctx, pf.finding);
   out->findings.push_back(std::move(pf));
   progress->failures = static_cast<int>(out->findings.size());
 }

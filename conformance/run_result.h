@@ -149,6 +149,15 @@ struct ClauseOutcome {
   // user's mesh, certify --mesh): the heading summary.md and report.html
   // give it. Empty: shrunk, or tolerated_from_start.
   std::string program_origin;
+  // The clause's other findings: of the kind of the one shown but another
+  // difference (Finding::difference: a late subscriber shown another value
+  // by another behaviour), each with its own counterexample, program and
+  // property, in the order found. Each is a ClauseOutcome of the clause
+  // with `part` 1, 2, ... (its counterexample file is "<id>.<part+1>.vgc")
+  // and no other findings of its own; the clause's status is the shown
+  // finding's.
+  std::vector<ClauseOutcome> other_findings;
+  int part = 0;
 };
 
 // Per command kind ("polygon_set_face_uint8"): how often judged steps sent

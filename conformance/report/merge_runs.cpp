@@ -192,6 +192,7 @@ ClauseOutcome clause_from(const Clause& clause, const json& c) {
       for (const auto& line : c["host_sent"]) co.finding->host_sent.push_back(line.get<std::string>());
       co.finding->host_sent_count = c.value("host_sent_count", co.finding->host_sent.size());
     }
+    co.finding->difference = c.value("difference", std::string());
     std::string text;
     for (const auto& line : c.value("counterexample_commands", json::array())) text += line.get<std::string>() + "\n";
     TextError e;
@@ -203,6 +204,11 @@ ClauseOutcome clause_from(const Clause& clause, const json& c) {
       if (q.contains("draw")) r.draw = q["draw"].get<std::uint32_t>();
       co.program.request = r;
     }
+  }
+  for (const auto& o : c.value("other_findings", json::array())) {
+    ClauseOutcome other = clause_from(clause, o);
+    other.part = static_cast<int>(co.other_findings.size()) + 1;
+    co.other_findings.push_back(std::move(other));
   }
   return co;
 }

@@ -84,7 +84,8 @@ bool claim_run_dir(const std::string& reports_root, const RunResult& run, Report
 }
 
 std::string counterexample_path(const ClauseOutcome& co) {
-  return "counterexamples/" + std::string(co.clause->id) + ".vgc";
+  return "counterexamples/" + std::string(co.clause->id) + (co.part > 0 ? "." + std::to_string(co.part + 1) : "") +
+         ".vgc";
 }
 
 std::string inline_program(const ClauseOutcome& co) {
@@ -188,17 +189,21 @@ bool write_report(const std::string& reports_root, const RunResult& run, const V
     return false;
   };
   std::string e;
+  const auto write_counterexample = [&](const ClauseOutcome& co) {
+    if (!write_file(tmp_dir / counterexample_path(co), escape_unprintable(render_counterexample(co, ctx)), &e))
+      return false;
+    const FindingPicture picture = picture_of_finding(co);
+    return !picture.has_mesh ||
+           write_file(tmp_dir / counterexample_obj_path(co),
+                      render_obj(picture.mesh, "vgc counterexample " + std::string(co.clause->id) +
+                                                   ": the reference's final state after its commands"),
+                      &e);
+  };
   for (const ClauseOutcome& co : run.clauses) {
     if (!co.finding) continue;
-    if (!write_file(tmp_dir / counterexample_path(co), escape_unprintable(render_counterexample(co, ctx)), &e))
-      return fail(e);
-    const FindingPicture picture = picture_of_finding(co);
-    if (picture.has_mesh &&
-        !write_file(tmp_dir / counterexample_obj_path(co),
-                    render_obj(picture.mesh, "vgc counterexample " + std::string(co.clause->id) +
-                                                 ": the reference's final state after its commands"),
-                    &e))
-      return fail(e);
+    if (!write_counterexample(co)) return fail(e);
+    for (const ClauseOutcome& other : co.other_findings)
+      if (other.finding && !write_counterexample(other)) return fail(e);
   }
   if (!write_file(tmp_dir / "report.json", render_report_json(run, v, ctx), &e)) return fail(e);
   // What a person or a CI reads shows foreign bytes escaped (display_text.h).

@@ -93,21 +93,9 @@ void legend(pugi::xml_node parent, const FindingPicture& fp) {
     item(kExpectedColour, "\xE2\x80\x94", "expected normals, and the implementation's (dashed, orange)");
 }
 
-void finding_section(pugi::xml_node parent, const ClauseOutcome& co, const Verdict& v, const ReportContext& ctx) {
-  const std::string id(co.clause->id);
-  auto sec = add(parent, "section", {}, "finding");
-  sec.append_attribute("id") = ("finding-" + id).c_str();
-  auto h = add(sec, "h3");
-  add_text(h, id + " (" + std::string(clause_level_name(co.clause->level)) + ") ");
-  status_badge(h, shown_status_html(co, v));
-
-  auto quote = add(sec, "blockquote");
-  add_text(quote, std::string(co.clause->text) + " ");
-  add(quote, "span", "(" + std::string(co.clause->source) + ")", "note");
-  auto reading = add(sec, "p");
-  add(reading, "strong", "Suite's reading: ");
-  add_text(reading, std::string(co.clause->reading));
-  const Finding& f = *co.finding;
+// What the implementation did: the finding's message and the first
+// differing lines.
+void what_it_did(pugi::xml_node sec, const Finding& f) {
   auto did = add(sec, "p");
   add(did, "strong", "What the implementation did: ");
   add_text(did, f.message);
@@ -136,6 +124,57 @@ void finding_section(pugi::xml_node parent, const ClauseOutcome& co, const Verdi
       for (const std::string& line : f.host_sent) add(add(list, "li"), "code", line);
     }
   }
+}
+
+// A finding's counterexample, linked to its file, and its replay line.
+void counterexample_block(pugi::xml_node sec, const ClauseOutcome& co, const ReportContext& ctx) {
+  const std::string file = (std::filesystem::path(ctx.run_dir) / counterexample_path(co)).string();
+  auto h4 = add(sec, "h4");
+  add_text(h4, counterexample_heading(co) + " — " + commands_counted(co.program.commands.size()) +
+                   " from a fresh node; found by " + co.found_by +
+                   (co.program_origin.empty() ? ", seed " + std::to_string(co.seed) : std::string()) + " (");
+  auto link = add(h4, "a", counterexample_path(co));
+  link.append_attribute("href") = counterexample_path(co).c_str();
+  add_text(h4, ")");
+  add(sec, "pre", inline_program(co), "program");
+  add(sec, "h4", "Replay");
+  add(sec, "pre", replay_command(file, ctx), "replay");
+}
+
+void finding_section(pugi::xml_node parent, const ClauseOutcome& co, const Verdict& v, const ReportContext& ctx,
+                     const std::vector<CauseGroup>& groups) {
+  const std::string id(co.clause->id);
+  auto sec = add(parent, "section", {}, "finding");
+  sec.append_attribute("id") = ("finding-" + id).c_str();
+  auto h = add(sec, "h3");
+  add_text(h, id + " (" + std::string(clause_level_name(co.clause->level)) + ") ");
+  status_badge(h, shown_status_html(co, v));
+  // A grouped finding names the others of its cause (as summary.md does),
+  // each linked to its own section.
+  if (const CauseGroup* g = cause_group_of(groups, id)) {
+    auto p = add(sec, "p", {}, "one-cause");
+    add_text(p, "One cause with ");
+    bool first = true;
+    for (const auto& c : g->clauses) {
+      if (c == id) continue;
+      if (!first) add_text(p, ", ");
+      first = false;
+      auto a = add(p, "a", c);
+      a.append_attribute("href") = ("#finding-" + c).c_str();
+    }
+    add_text(p, " (");
+    auto a = add(p, "a", "Findings with one cause");
+    a.append_attribute("href") = "#cause-groups";
+    add_text(p, " above).");
+  }
+
+  auto quote = add(sec, "blockquote");
+  add_text(quote, std::string(co.clause->text) + " ");
+  add(quote, "span", "(" + std::string(co.clause->source) + ")", "note");
+  auto reading = add(sec, "p");
+  add(reading, "strong", "Suite's reading: ");
+  add_text(reading, std::string(co.clause->reading));
+  what_it_did(sec, *co.finding);
   if (ctx.baseline && ctx.baseline->reasons.count(id)) {
     auto p = add(sec, "p");
     add(p, "strong", "Baseline says: ");
@@ -156,17 +195,16 @@ void finding_section(pugi::xml_node parent, const ClauseOutcome& co, const Verdi
     add(sec, "p", "The final state holds no vertex: nothing to draw.", "note");
   }
 
-  const std::string file = (std::filesystem::path(ctx.run_dir) / counterexample_path(co)).string();
-  auto h4 = add(sec, "h4");
-  add_text(h4, counterexample_heading(co) + " — " + commands_counted(co.program.commands.size()) +
-                   " from a fresh node; found by " + co.found_by +
-                   (co.program_origin.empty() ? ", seed " + std::to_string(co.seed) : std::string()) + " (");
-  auto link = add(h4, "a", counterexample_path(co));
-  link.append_attribute("href") = counterexample_path(co).c_str();
-  add_text(h4, ")");
-  add(sec, "pre", inline_program(co), "program");
-  add(sec, "h4", "Replay");
-  add(sec, "pre", replay_command(file, ctx), "replay");
+  counterexample_block(sec, co, ctx);
+  // The clause's other findings (another difference of the same kind),
+  // each with its own counterexample.
+  for (const ClauseOutcome& other : co.other_findings) {
+    auto oh = add(sec, "h4", id + ", another finding (" + clause_status_name(clause_status_of(other.finding->status)) +
+                                 ": another difference)");
+    oh.append_attribute("id") = ("finding-" + id + "." + std::to_string(other.part + 1)).c_str();
+    what_it_did(sec, *other.finding);
+    counterexample_block(sec, other, ctx);
+  }
 }
 
 // render_report_html's parts, top to bottom.
@@ -234,7 +272,7 @@ void add_findings(pugi::xml_node body, const RunResult& run, const Verdict& v, c
   // clause linked to its own finding below, its status unchanged.
   const std::vector<CauseGroup> groups = group_findings_by_cause(run);
   if (!groups.empty()) {
-    add(body, "h2", "Findings with one cause");
+    add(body, "h2", "Findings with one cause").append_attribute("id") = "cause-groups";
     auto ul = add(body, "ul", {}, "cause-groups");
     for (const auto& g : groups) {
       auto li = add(ul, "li");
@@ -253,7 +291,7 @@ void add_findings(pugi::xml_node body, const RunResult& run, const Verdict& v, c
     add(body, "h2", heading);
     if (!intro.empty()) add(body, "p", intro);
     for (const auto& co : run.clauses)
-      if (co.finding && in(ids, std::string(co.clause->id))) finding_section(body, co, v, ctx);
+      if (co.finding && in(ids, std::string(co.clause->id))) finding_section(body, co, v, ctx, groups);
   };
   section(v.new_failures, "Failures", "");
   section(v.profile_differences, "Profile differences (IMPLEMENTATION-DEFINED: the spec is silent)",
@@ -322,7 +360,8 @@ void add_property_table(pugi::xml_node body, const RunResult& run) {
 }  // namespace
 
 std::string counterexample_obj_path(const ClauseOutcome& co) {
-  return "counterexamples/" + std::string(co.clause->id) + ".obj";
+  return "counterexamples/" + std::string(co.clause->id) + (co.part > 0 ? "." + std::to_string(co.part + 1) : "") +
+         ".obj";
 }
 
 std::string render_report_html(const RunResult& run, const Verdict& v, const ReportContext& ctx) {

@@ -98,6 +98,7 @@ void add_finding_fields(json& c, const ClauseOutcome& co, const ReportContext& c
     c["host_sent"] = f.host_sent;
     c["host_sent_count"] = f.host_sent_count;
   }
+  if (!f.difference.empty()) c["difference"] = f.difference;
   if (co.program.request) {  // the capability check vgc replay repeats after the commands
     c["capability_check"] = {{"capability", co.program.request->capability},
                              {"variant", co.program.request->variant}};
@@ -121,6 +122,14 @@ json clause_json(const ClauseOutcome& co, const Verdict& v, const ReportContext&
   if (ctx.baseline && ctx.baseline->reasons.count(std::string(co.clause->id)))
     c["baseline_reason"] = ctx.baseline->reasons.at(std::string(co.clause->id));
   if (co.finding) add_finding_fields(c, co, ctx);
+  // The clause's other findings (ClauseOutcome::other_findings), each with
+  // the fields of the one shown and its own status.
+  for (const ClauseOutcome& other : co.other_findings) {
+    json o;
+    o["status"] = clause_status_name(clause_status_of(other.finding->status));
+    add_finding_fields(o, other, ctx);
+    c["other_findings"].push_back(o);
+  }
   return c;
 }
 

@@ -16,6 +16,21 @@
 
 namespace vgc {
 
+namespace {
+
+// The clause's other findings (ClauseOutcome::other_findings), each with
+// its replay line; "" when it has none.
+std::string other_findings_text(const ClauseOutcome& co, const ReportContext& ctx) {
+  std::string out;
+  for (const ClauseOutcome& other : co.other_findings)
+    out += "\n" + std::string(co.clause->id) + ", another finding (another difference): " + other.finding->message +
+           "\nFound by " + other.found_by + " (seed " + std::to_string(other.seed) + ").\nReplay: " +
+           replay_command((std::filesystem::path(ctx.run_dir) / counterexample_path(other)).string(), ctx) + "\n";
+  return out;
+}
+
+}  // namespace
+
 std::string render_junit(const RunResult& run, const Verdict& v, const ReportContext& ctx) {
   pugi::xml_document doc;
   auto decl = doc.append_child(pugi::node_declaration);
@@ -72,7 +87,7 @@ std::string render_junit(const RunResult& run, const Verdict& v, const ReportCon
       std::ostringstream body;
       body << co.clause->text << "\n\nFound by " << co.found_by << " (seed " << co.seed << ").\nReplay: "
            << replay_command((std::filesystem::path(ctx.run_dir) / counterexample_path(co)).string(), ctx)
-           << "\n";
+           << "\n" << other_findings_text(co, ctx);
       f.text().set(body.str().c_str());
       ++(is_error ? errors : failures);
       ++counts[group][is_error ? "errors" : "failures"];
@@ -91,7 +106,7 @@ std::string render_junit(const RunResult& run, const Verdict& v, const ReportCon
     } else if (co.finding) {  // SHOULD, or a profile difference: reported, not failing
       tc.append_child("system-out").text().set(
           ((co.clause->level == ClauseLevel::Should ? "SHOULD not met: " : "profile difference (the spec is silent): ") +
-           co.finding->message)
+           co.finding->message + "\n" + other_findings_text(co, ctx))
               .c_str());
     }
   }

@@ -92,6 +92,15 @@ void write_summary_cause_groups(const std::vector<CauseGroup>& groups, std::stri
   out += "\n";
 }
 
+// A finding's counterexample and its replay line.
+void write_summary_counterexample(const ClauseOutcome& co, const ReportContext& ctx, std::string& out) {
+  const std::string file = (std::filesystem::path(ctx.run_dir) / counterexample_path(co)).string();
+  const std::string drawn = co.program_origin.empty() ? fmt::format(", seed {}", co.seed) : "";
+  out += fmt::format("{} ({}, from a fresh node; found by `{}`{}):\n\n```\n{}```\n\n", counterexample_heading(co),
+                     commands_counted(co.program.commands.size()), co.found_by, drawn, inline_program(co));
+  out += fmt::format("Replay: `{}`\n\n", replay_command(file, ctx));
+}
+
 // One section of findings: each clause in ids that has a finding, with
 // its counterexample and replay line.
 void write_summary_findings(const RunResult& run, const Verdict& v, const ReportContext& ctx,
@@ -103,7 +112,6 @@ void write_summary_findings(const RunResult& run, const Verdict& v, const Report
   for (const auto& co : run.clauses) {
     if (!co.finding) continue;
     if (std::find(ids.begin(), ids.end(), std::string(co.clause->id)) == ids.end()) continue;
-    const std::string file = (std::filesystem::path(ctx.run_dir) / counterexample_path(co)).string();
     out += fmt::format("### {} ({}) — {}\n\n", co.clause->id, clause_level_name(co.clause->level),
                        shown_status(co, v));
     if (const CauseGroup* g = cause_group_of(groups, std::string(co.clause->id))) {
@@ -118,11 +126,14 @@ void write_summary_findings(const RunResult& run, const Verdict& v, const Report
     out += host_sent_paragraph(*co.finding);
     if (ctx.baseline && ctx.baseline->reasons.count(std::string(co.clause->id)))
       out += fmt::format("Baseline says: {}\n\n", ctx.baseline->reasons.at(std::string(co.clause->id)));
-    const std::string drawn = co.program_origin.empty() ? fmt::format(", seed {}", co.seed) : "";
-    out += fmt::format("{} ({}, from a fresh node; found by `{}`{}):\n\n```\n{}```\n\n",
-                       counterexample_heading(co), commands_counted(co.program.commands.size()), co.found_by, drawn,
-                       inline_program(co));
-    out += fmt::format("Replay: `{}`\n\n", replay_command(file, ctx));
+    write_summary_counterexample(co, ctx, out);
+    for (const ClauseOutcome& other : co.other_findings) {
+      out += fmt::format("#### {}, another finding ({}: another difference)\n\n", co.clause->id,
+                         clause_status_name(clause_status_of(other.finding->status)));
+      out += fmt::format("**What the implementation did:** {}\n\n", other.finding->message);
+      out += host_sent_paragraph(*other.finding);
+      write_summary_counterexample(other, ctx, out);
+    }
   }
 }
 
