@@ -43,7 +43,11 @@ class OneFault final : public test::ReferenceWrapper {
 
   std::string name() const override { return "one-fault"; }
   Answer apply(const Command& c) override {
-    if (refuse(c)) return Answer{CallStatus::Ok, false, "BAD_NAME", "", false};
+    if (refuse(c)) {
+      Answer a;
+      a.reason = "BAD_NAME";
+      return a;
+    }
     return inner_.apply(c);
   }
   Document snapshot() override {

@@ -161,7 +161,9 @@ TEST_P(DerivedFaultMatrix, TheRulesFaultIsBlamedOnItsClauseAndNamedAtThreeSeeds)
                                   << o.first_message;
     EXPECT_NE(o.first_message.find("Blamed on derived rule " + name + " ("), std::string::npos)
         << name << " seed " << seed << ": the finding does not name the rule\n" << o.first_message;
-    if (c->level == ClauseLevel::Must) EXPECT_EQ(o.exit_code, 1) << name << " seed " << seed;
+    if (c->level == ClauseLevel::Must) {
+      EXPECT_EQ(o.exit_code, 1) << name << " seed " << seed;
+    }
   }
 }
 
