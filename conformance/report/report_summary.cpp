@@ -9,6 +9,7 @@
 #include "finding_cause.h"
 #include "program_text.h"
 #include "report.h"
+#include "report_sections.h"
 #include "rule_clauses.h"
 
 namespace vgc {
@@ -83,7 +84,7 @@ void write_summary_unjudged(const RunResult& run, const Verdict& v, std::string&
 // findings; each grouped finding points here.
 void write_summary_cause_groups(const std::vector<CauseGroup>& groups, std::string& out) {
   if (groups.empty()) return;
-  out += "## Findings with one cause\n\n";
+  out += fmt::format("## {}\n\n", report_section_title(ReportSection::CauseGroups));
   for (const auto& g : groups) {
     std::string ids;
     for (const auto& c : g.clauses) ids += (ids.empty() ? "" : ", ") + c;
@@ -139,11 +140,12 @@ void write_summary_findings(const RunResult& run, const Verdict& v, const Report
 
 // The tables: clauses, properties, commands judged, rules used.
 void write_summary_tables(const RunResult& run, const Verdict& v, std::string& out) {
-  out += "## Clauses\n\n| clause | level | status | exercised |\n|---|---|---|---|\n";
+  out += fmt::format("## {}\n\n| clause | level | status | exercised |\n|---|---|---|---|\n",
+                     report_section_title(ReportSection::Clauses));
   for (const auto& co : run.clauses)
     out += fmt::format("| {} | {} | {}{} | {} |\n", co.clause->id, clause_level_name(co.clause->level), shown_status(co, v),
                        co.note.empty() ? "" : " (" + co.note + ")", co.exercised);
-  out += "\n## Properties\n\n| property | status | cases | judged | set aside | not judged | findings | seed | seconds |\n"
+  out += "\n## " + std::string(report_section_title(ReportSection::Properties)) + "\n\n| property | status | cases | judged | set aside | not judged | findings | seed | seconds |\n"
          "|---|---|---|---|---|---|---|---|---|\n";
   for (const auto& p : run.properties) {
     std::string found;
@@ -152,14 +154,14 @@ void write_summary_tables(const RunResult& run, const Verdict& v, std::string& o
                        p.note.empty() ? "" : " (" + p.note + ")", p.cases, p.cases_target, p.judged, p.set_aside,
                        p.not_judged, found.empty() ? "-" : found, p.seed, p.seconds);
   }
-  out += "\n## Commands judged\n\n| command | sent | applied | rejected |\n|---|---|---|---|\n";
+  out += "\n## " + std::string(report_section_title(ReportSection::CommandsJudged)) + "\n\n| command | sent | applied | rejected |\n|---|---|---|---|\n";
   for (const auto& [kind, k] : run.command_kinds) {
     std::string rej;
     for (const auto& [reason, n] : k.rejected) rej += fmt::format("{}{} {}", rej.empty() ? "" : ", ", n, reason);
     out += fmt::format("| {} | {} | {} | {} |\n", kind, k.sent, k.applied, rej.empty() ? "-" : rej);
   }
   if (!run.rule_uses.empty()) {
-    out += "\n## Rules used\n\nJudged uses of each rule of the reference node and of its derived document "
+    out += "\n## " + std::string(report_section_title(ReportSection::RulesUsed)) + "\n\nJudged uses of each rule of the reference node and of its derived document "
            "(docs/clauses.md lists a clause's rules): how often a judged step reached it.\n\n| rule | clause | judged uses |\n|---|---|---|\n";
     for (const auto& [rule, n] : run.rule_uses) out += fmt::format("| {} | {} | {} |\n", rule, rule_name_clause(rule), n);
   }
@@ -176,14 +178,10 @@ std::string render_summary(const RunResult& run, const Verdict& v, const ReportC
   auto findings = [&](const std::vector<std::string>& ids, const std::string& title, const std::string& intro) {
     write_summary_findings(run, v, ctx, groups, ids, title, intro, out);
   };
-  findings(v.new_failures, "Failures", "");
-  findings(v.profile_differences, "Profile differences (IMPLEMENTATION-DEFINED: the spec is silent)",
-           "The implementation chose differently from the suite's reading of a point the spec leaves open. "
-           "Reported, tolerated (so it hides nothing else), and not gating; `--strict` makes them gate.");
-  findings(v.known_failures, "Known deviations (in the baseline)", "");
-  findings(v.should_failures, "SHOULD clauses not met (the verdict stands)", "");
+  for (const FindingSection& s : finding_sections(v))
+    findings(*s.ids, report_section_title(s.section), report_section_intro(s.section));
   if (!v.stale_baseline.empty()) {
-    out += "## Baseline entries no case diverged on — remove them\n\n";
+    out += fmt::format("## {}\n\n", report_section_title(ReportSection::StaleBaseline));
     for (const auto& id : v.stale_baseline) out += "- " + id + "\n";
     out += "\n";
   }
