@@ -1,6 +1,7 @@
 // program_text.cpp — see program_text.h.
 #include "program_text.h"
 
+#include <charconv>
 #include <algorithm>
 #include <iterator>
 
@@ -160,9 +161,9 @@ bool parse_program(std::string_view text, Program* out, TextError* error, std::v
       return false;
     }
     const std::string& n = t[3].first;
-    bool digits = !n.empty() && n.size() <= 9;
-    for (char c : n) digits = digits && c >= '0' && c <= '9';
-    if (!digits) {
+    int variant = 0;
+    const auto [n_end, n_ec] = std::from_chars(n.data(), n.data() + n.size(), variant);
+    if (n.empty() || n.size() > 9 || n[0] == '-' || n_ec != std::errc() || n_end != n.data() + n.size()) {
       set_error(error, line_number, t[3].second, "expected the variant number (1 to 9 digits), found \"" + n + "\"");
       return false;
     }
@@ -174,15 +175,15 @@ bool parse_program(std::string_view text, Program* out, TextError* error, std::v
         return false;
       }
       const std::string& d = t[next + 1].first;
-      bool ok = !d.empty() && d.size() <= 10;
-      for (char c : d) ok = ok && c >= '0' && c <= '9';
-      if (ok && std::stoull(d) > 0xFFFFFFFFull) ok = false;
+      std::uint32_t drawn = 0;
+      const auto [d_end, d_ec] = std::from_chars(d.data(), d.data() + d.size(), drawn);
+      const bool ok = !d.empty() && d_ec == std::errc() && d_end == d.data() + d.size();
       if (!ok) {
         set_error(error, line_number, t[next + 1].second,
                   "expected the drawn number (0 to 4294967295), found \"" + d + "\"");
         return false;
       }
-      draw = static_cast<std::uint32_t>(std::stoull(d));
+      draw = drawn;
       next += 2;
     }
     if (t.size() > next) {
@@ -190,7 +191,7 @@ bool parse_program(std::string_view text, Program* out, TextError* error, std::v
                 "unexpected \"" + t[next].first + "\" after the " + (next == 4 ? "variant" : "drawn") + " number");
       return false;
     }
-    out->request = CapabilityRequest{t[1].first, std::stoi(n), draw};
+    out->request = CapabilityRequest{t[1].first, variant, draw};
     found = line_number;
   }
   if (directive_line) *directive_line = found;

@@ -3,6 +3,7 @@
 // vs_node_storage.c, vs_node_head.c, vs_node_geometry.c).
 #include "verse_host.h"
 
+#include <charconv>
 #include <algorithm>
 #include <chrono>
 #include <cfloat>
@@ -634,12 +635,14 @@ bool parse_listen_address(const std::string& text, std::string* address, std::ui
       return false;
     }
   }
-  if (p.empty() || p.size() > 5 || p.find_first_not_of("0123456789") != std::string::npos || std::stoul(p) > 65535) {
+  unsigned long number = 0;
+  const auto [end, ec] = std::from_chars(p.data(), p.data() + p.size(), number);
+  if (p.empty() || ec != std::errc() || end != p.data() + p.size() || number > 65535) {
     *error = "'" + text + "': expected [ADDR:]PORT with PORT 0..65535 (0: any free port)";
     return false;
   }
   *address = addr;
-  *port = static_cast<std::uint16_t>(std::stoul(p));
+  *port = static_cast<std::uint16_t>(number);
   return true;
 }
 

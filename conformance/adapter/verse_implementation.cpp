@@ -238,10 +238,9 @@ bool parse_verse_address(const std::string& text, std::string* name, std::string
   if (const auto colon = rest.rfind(':'); colon != std::string::npos) {
     const std::string digits = rest.substr(colon + 1);
     rest = rest.substr(0, colon);
-    char* end = nullptr;
-    const unsigned long v = digits.empty() ? 0 : std::strtoul(digits.c_str(), &end, 10);
-    if (digits.empty() || *end != '\0' || digits.find_first_not_of("0123456789") != std::string::npos || v == 0 ||
-        v > 65535) {
+    unsigned long v = 0;
+    const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), v);
+    if (digits.empty() || ec != std::errc() || end != digits.data() + digits.size() || v == 0 || v > 65535) {
       *error = "'" + digits + "' is not a port (1 to 65535; the Verse default is 4950)";
       return false;
     }

@@ -1,6 +1,7 @@
 // merge_runs.cpp — see merge_runs.h.
 #include "merge_runs.h"
 
+#include <charconv>
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
@@ -19,6 +20,15 @@
 
 namespace vgc {
 namespace {
+
+// "K/N" with 1 <= K <= N, read exactly (std::from_chars): a shard's place.
+bool read_shard(const std::string& text, int* k, int* n) {
+  const char* const last = text.data() + text.size();
+  const auto [slash, ec1] = std::from_chars(text.data(), last, *k);
+  if (ec1 != std::errc() || slash == last || *slash != '/') return false;
+  const auto [end, ec2] = std::from_chars(slash + 1, last, *n);
+  return ec2 == std::errc() && end == last && *k >= 1 && *k <= *n;
+}
 
 using nlohmann::json;
 
@@ -75,7 +85,7 @@ bool check_shards(const std::vector<json>& reports, const std::vector<std::strin
   std::map<int, std::string> seen;
   for (std::size_t i = 0; i < reports.size(); ++i) {
     int k = 0, n = 0;
-    if (std::sscanf(reports[i]["shard"].get<std::string>().c_str(), "%d/%d", &k, &n) != 2 || k < 1 || k > n) {
+    if (!read_shard(reports[i]["shard"].get<std::string>(), &k, &n)) {
       *error = dirs[i] + ": unreadable shard " + reports[i]["shard"].dump();
       return false;
     }

@@ -85,6 +85,8 @@ TEST(Route, AValueThatNamesNoRouteSaysTheFormsThereAre) {
   EXPECT_NE(refused("plugin:").find("'plugin:' names no library"), std::string::npos);
   EXPECT_NE(refused("verse:").find("no host named"), std::string::npos);
   EXPECT_NE(refused("verse:host:0").find("is not a port"), std::string::npos);
+  for (const char* bad : {"verse:host:+80", "verse:host:80x", "verse:host:65536", "verse:host:99999999999999999999"})
+    EXPECT_NE(refused(bad).find("is not a port"), std::string::npos) << bad;
   for (const char* form : {"reference", "exec:CMD", "plugin:PATH", "verse:[NAME@]HOST[:PORT]"})
     EXPECT_NE(route_forms().find(form), std::string::npos) << form;
 }

@@ -50,6 +50,12 @@ TEST(ProgramText, MalformedMeshDirectivesNameTheirLine) {
       {"vertex_set_xyz_real64 0 0 0 0 0\n#! mesh\n#! mesh\n", 3, 1, "a second mesh directive"},
       {"#! mesh\nvertex_set_xyz_real64 0 0 0 0 0\n", 1, 1, "must follow the last command (line 2)"},
       {"vertex_set_xyz_real64 0 0 0 0 0\n#! history tired\n", 2, 12, "KIND one of"},
+      // The variant and the drawn number are read exactly (std::from_chars).
+      {"vertex_set_xyz_real64 0 0 0 0 0\n#! capability subdivision variant -1\n", 2, 35, "the variant number"},
+      {"vertex_set_xyz_real64 0 0 0 0 0\n#! capability subdivision variant 2x\n", 2, 35, "the variant number"},
+      {"vertex_set_xyz_real64 0 0 0 0 0\n#! capability edits variant 1 draw 4294967296\n", 2, 36,
+       "the drawn number"},
+      {"vertex_set_xyz_real64 0 0 0 0 0\n#! capability edits variant 1 draw +5\n", 2, 36, "the drawn number"},
   };
   for (const Malformed& m : cases) {
     Program p;

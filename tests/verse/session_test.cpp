@@ -366,6 +366,11 @@ TEST(VerseSession, ListenAddresses) {
   EXPECT_FALSE(parse_listen_address("65536", &addr, &port, &error));
   EXPECT_FALSE(parse_listen_address(":5", &addr, &port, &error));
   EXPECT_FALSE(parse_listen_address("host:x", &addr, &port, &error));
+  // Read exactly (std::from_chars): no sign, no trailing text, no wrap.
+  for (const char* bad : {"+80", "-1", "80x", "80 ", "", "99999999999999999999", "host:"})
+    EXPECT_FALSE(parse_listen_address(bad, &addr, &port, &error)) << bad;
+  ASSERT_TRUE(parse_listen_address("65535", &addr, &port, &error));
+  EXPECT_EQ(port, 65535);
 }
 
 }  // namespace
