@@ -66,7 +66,14 @@ coverage)
   [ -n "$ft_g" ] && [ -n "$ft_o" ] || fail "no INITED line (see $work/inited-*.log)"
   grep -q "the implementation's coverage is seen: [0-9]* counters" "$work/inited-guide.log" ||
     fail "the target did not say the host's coverage is seen: $(grep -m1 "coverage" "$work/inited-guide.log")"
-  [ "$cov_g" -eq "$cov_o" ] || fail "the reference's coverage differs: $cov_g vs $cov_o"
+  # Over the wire vgc's own coverage varies a little from run to run (the
+  # adapter's resend and late-packet paths depend on timing): within 1 %.
+  d=$((cov_g > cov_o ? cov_g - cov_o : cov_o - cov_g))
+  [ $((d * 100)) -le "$cov_o" ] || fail "the reference's coverage differs by more than 1 %: $cov_g vs $cov_o"
+  grep -q "module .*libc_host_coverage.so ([0-9]* counters" "$work/inited-guide.log" ||
+    fail "the host's module is not named: $(grep -m2 "module" "$work/inited-guide.log")"
+  [ "$(grep -c "module .*libc_host_coverage.so" "$work/inited-guide.log")" -eq 1 ] ||
+    fail "the plugin's counters were mapped more than once: $(grep "module" "$work/inited-guide.log")"
   [ "$ft_g" -gt "$ft_o" ] || fail "guiding added no feature: ft $ft_g vs $ft_o"
   gone_within_5s || fail "after the target ended, a host is still running:$left"
 
