@@ -123,10 +123,13 @@ bool LaunchedHost::start(const OpenOptions& options, std::unique_ptr<Implementat
     *why = "cannot run the host command: " + error;
     return false;
   }
-  // Logins until one is accepted: each bounded by a second, so that a host
-  // that listens late is found soon after.
+  // Logins until one is accepted: the first bounded by a second, so that a
+  // host that listens late is found soon after; each next one twice as long
+  // (a loaded machine's host may take longer than a second to answer a
+  // whole start: two logins, a node, the bone form's probe).
   OpenOptions attempt = options;
   std::string last = "no login tried";
+  double limit = 1;
   for (;;) {
     int status = 0;
     const pid_t w = waitpid(proc_.pid, &status, WNOHANG);
@@ -145,7 +148,8 @@ bool LaunchedHost::start(const OpenOptions& options, std::unique_ptr<Implementat
              std::to_string(static_cast<int>(start_timeout_s_)) + " s (--start-timeout): " + last;
       return false;
     }
-    attempt.start_timeout_seconds = std::min(1.0, left);
+    attempt.start_timeout_seconds = std::min(limit, left);
+    limit *= 2;
     std::unique_ptr<Implementation> s = open_route(route_, attempt, &last);
     if (s) {
       if (session) *session = std::move(s);

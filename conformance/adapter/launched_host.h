@@ -19,7 +19,8 @@
 // so VGC_COVERAGE_SHM reaches it), its output to a log file or /dev/null,
 // no terminal. Before it starts, the host's UDP port must be free (a host
 // of an earlier round may still be ending: waited for up to 10 s); then a
-// login is tried every 100 ms until one is accepted, the command ends (it
+// login is tried (the first within a second, each next one given twice as
+// long), 100 ms apart, until one is accepted, the command ends (it
 // started the host in the background, or failed: said with its exit
 // status), or the start limit (OpenOptions::start_timeout_seconds) passes.
 // restart() stops the host and everything it started (the reaper) and
