@@ -194,6 +194,7 @@ std::string rerun_command(const Options& o) {
   if (o.impl.start_timeout != 60) c += " --start-timeout " + fmt::format("{:g}", o.impl.start_timeout);
   if (o.impl.verse_bone_form != "auto") c += " --verse-bone-form " + o.impl.verse_bone_form;
   if (!o.impl.restart.empty()) c += " --restart " + shell_quote(o.impl.restart);
+  if (!o.impl.host_cmd.empty()) c += " --host-cmd " + shell_quote(o.impl.host_cmd);
   return c;
 }
 
@@ -452,7 +453,7 @@ int run(const Options& o) {
 void add(CLI::App& app, int* exit_code) {
   auto o = std::make_shared<Options>();
   auto* sub = app.add_subcommand("certify", "Certify an implementation of the geometry node against the spec");
-  add_impl_options(sub, &o->impl, kTimeout | kStartTimeout | kBoneForm | kRestart,
+  add_impl_options(sub, &o->impl, kTimeout | kStartTimeout | kBoneForm | kRestart | kHostCmd,
                    "reference | exec:CMD | plugin:PATH | verse:HOST[:PORT]");
   auto* seed = sub->add_option("--seed", o->seed, "Seed; the same seed gives the same cases and verdicts")
                    ->capture_default_str()

@@ -5,11 +5,11 @@
 //   vgc fuzz TARGET [--time S] [--jobs N] [--impl plugin:PATH] [--seed N]
 //                   [--baseline FILE] [--empty-corpus] [--stop-at-first]
 //   vgc fuzz differential --impl exec:CMD|verse:HOST[:PORT] [--timeout S]
-//                   [--verse-bone-form F] [--restart CMD]
-//                   [--impl-coverage guide|observe|off] ...
+//                   [--verse-bone-form F] [--restart CMD | --host-cmd CMD]
+//                   [--impl-coverage guide|guide-counts|observe|off] ...
 //                                      a live implementation, through the
 //                                      adapters certify uses
-//   vgc fuzz wire --impl verse:HOST[:PORT] [--time S] [--seed N] [--restart CMD]
+//   vgc fuzz wire --impl verse:HOST[:PORT] [--time S] [--seed N] [--restart CMD | --host-cmd CMD]
 //                   [--max-inputs N] [--stop-at-first]
 //                                      hostile wire traffic (fuzz/wire/wire_fuzz.h)
 //   vgc fuzz wire --write-seeds DIR [--seed N] [--max-inputs N]
@@ -78,8 +78,17 @@ int run_wire(const FuzzArgs& a) {
     say(stderr, "vgc fuzz wire: one host, one campaign: --jobs, --baseline and --empty-corpus do not apply\n");
     return 2;
   }
-  if (c.impl_coverage != "guide" || c.coverage_report) {
-    say(stderr, "vgc fuzz wire: --impl-coverage and --coverage-report are for vgc fuzz differential --impl exec:CMD\n");
+  if (c.coverage_report) {
+    say(stderr, "vgc fuzz wire: --coverage-report is for vgc fuzz differential (--impl exec:CMD, or verse: with "
+                "--host-cmd)\n");
+    return 2;
+  }
+  if (c.host_cmd.empty() && c.impl_coverage != "guide") {
+    say(stderr, "vgc fuzz wire: --impl-coverage is for a host vgc starts (--host-cmd CMD)\n");
+    return 2;
+  }
+  if (!c.host_cmd.empty() && !c.restart.empty()) {
+    say(stderr, "vgc fuzz wire: --host-cmd replaces --restart: vgc starts the host again itself; give one of them\n");
     return 2;
   }
   fuzz::WireFuzzOptions o;
@@ -90,6 +99,8 @@ int run_wire(const FuzzArgs& a) {
   if (c.call_timeout_s > 0) o.timeout_s = c.call_timeout_s;
   o.verse_bone_form = c.verse_bone_form;
   o.restart = c.restart;
+  o.host_cmd = c.host_cmd;
+  o.impl_coverage = c.impl_coverage;
   o.source_dir = fuzz::campaign_source_dir(c);
   o.stop_at_first = c.stop_at_first;
   return fuzz::run_wire_campaign(o);
@@ -244,7 +255,7 @@ void add_fuzz(CLI::App& app, int* exit_code) {
   sub->add_option("--targets", a->only, "With --all: only these targets (comma-separated)")->delimiter(',');
   sub->add_option("--work-corpus", a->work_corpus,
                   "With --all: the work corpus directory (default reports/fuzz/work-corpus)");
-  add_impl_options(sub, &a->impl, kTimeout | kBoneForm | kRestart,
+  add_impl_options(sub, &a->impl, kTimeout | kBoneForm | kRestart | kHostCmd,
                    "differential, property_<group>: the implementation under test, plugin:PATH; differential also "
                    "exec:CMD or verse:[NAME@]HOST[:PORT], a running implementation (docs/fuzzing.md)");
   sub->add_option("--impl-coverage", o.impl_coverage,
@@ -280,6 +291,7 @@ void add_fuzz(CLI::App& app, int* exit_code) {
     if (a->impl.timeout_given) c.call_timeout_s = a->impl.timeout;
     if (a->impl.bone_form_given) c.verse_bone_form = a->impl.verse_bone_form;
     c.restart = a->impl.restart;
+    c.host_cmd = a->impl.host_cmd;
     *exit_code = run_fuzz(*a);
   });
 }

@@ -58,6 +58,7 @@ int run(const Options& o) {
     w.timeout_s = o.impl.timeout;
     w.login_timeout_s = o.impl.start_timeout;
     if (o.impl.verse_bone_form != "auto") w.verse_bone_form = o.impl.verse_bone_form;
+    w.host_cmd = o.impl.host_cmd;
     return fuzz::replay_wire_transcript(o.file, w);
   }
   std::string text;
@@ -163,7 +164,7 @@ void add(CLI::App& app, int* exit_code) {
   auto o = std::make_shared<Options>();
   auto* sub = app.add_subcommand("replay", "Replay a counterexample command file against an implementation");
   sub->add_option("file", o->file, "Command file (a counterexample from reports/, or any command file)")->required();
-  add_impl_options(sub, &o->impl, kTimeout | kStartTimeout | kBoneForm,
+  add_impl_options(sub, &o->impl, kTimeout | kStartTimeout | kBoneForm | kHostCmd,
                    "reference | exec:CMD | plugin:PATH | verse:HOST[:PORT]");
   sub->add_flag("--wire", o->wire,
                 "FILE is a `vgc fuzz wire` transcript: send its packets again to a fresh node of --impl "

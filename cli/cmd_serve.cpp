@@ -115,7 +115,12 @@ int run_verse(const ServeOptions& o) {
   }
   OpenOptions options;
   options.isolate_plugin = false;
-  if (!open_route(o.impl.route, options, &error)) {  // fail now, not at the first node_create
+  // Opened now to fail now, not at the first node_create; and kept open:
+  // a plugin stays loaded, so every node shares one copy of its code (a
+  // plugin closed and loaded again lands elsewhere, and the coverage
+  // runtime of an instrumented one would map its counters twice).
+  const std::unique_ptr<Implementation> first = open_route(o.impl.route, options, &error);
+  if (!first) {
     fmt::print(stderr, "vgc serve: {}\n", error);
     return 2;
   }

@@ -6,6 +6,7 @@
 #include <filesystem>
 
 #include "option_values.h"
+#include "launched_host.h"
 #include "restartable_host.h"
 #include "terminal_text.h"
 
@@ -85,6 +86,12 @@ void add_impl_options(CLI::App* sub, ImplOptions* o, unsigned which, const std::
                     "verse: a shell command that starts a fresh host (and returns once it listens); run before a "
                     "finding is confirmed on a fresh instance. Without it certify confirms a finding on a fresh node of "
                     "the same host process, and fuzz reports a crash or hang of the host unconfirmed");
+  if (which & kHostCmd)
+    sub->add_option("--host-cmd", o->host_cmd,
+                    "verse: a shell command that runs the host in the foreground (e.g. './verse -port=4950'): vgc "
+                    "starts it under its reaper, waits until it accepts a login, starts it again for a fresh "
+                    "instance (instead of --restart), gives it the shared memory of its coverage (fuzz) and ends "
+                    "it when vgc ends");
 }
 
 std::string impl_options_misuse(const ImplOptions& o) {
@@ -93,6 +100,11 @@ std::string impl_options_misuse(const ImplOptions& o) {
   if (!o.restart.empty() && o.route.traits().restartable)
     return "--restart is for --impl verse:HOST[:PORT] only (vgc starts a fresh instance of '" + o.route.spec +
            "' itself)";
+  if (!o.host_cmd.empty() && o.route.kind != RouteKind::Verse)
+    return "--host-cmd is for --impl verse:HOST:PORT only (the host vgc starts and logs in to); --impl is '" +
+           o.route.spec + "'";
+  if (!o.host_cmd.empty() && !o.restart.empty())
+    return "--host-cmd replaces --restart: vgc starts the host again itself for a fresh instance; give one of them";
   return "";
 }
 
@@ -122,7 +134,8 @@ std::unique_ptr<Implementation> open_impl_or_report(const char* subcommand, cons
     }
   }
   std::string error;
-  auto sut = open_restartable(route, open_options_of(o), o.restart, &error);
+  auto sut = o.host_cmd.empty() ? open_restartable(route, open_options_of(o), o.restart, &error)
+                                : open_launched_host(route, open_options_of(o), o.host_cmd, "", &error);
   if (!sut) {
     say(stderr, "vgc {}: {}\n", subcommand, error);
     if (const std::string fix = what_to_do(route, error); !fix.empty())

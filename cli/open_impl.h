@@ -1,7 +1,7 @@
 // open_impl.h — the implementation a subcommand certifies, replays, fuzzes
 // or serves: the --impl option family (--impl, --timeout, --start-timeout,
-// --verse-bone-form, --restart), declared once for certify, replay, fuzz
-// and serve; opening the implementation it names; and the oracle checks
+// --verse-bone-form, --restart, --host-cmd), declared once for certify,
+// replay, fuzz and serve; opening the implementation it names; and the oracle checks
 // it is judged with.
 //
 // Spec: docs/adapters.md (the routes), docs/certify.md (--impl,
@@ -34,6 +34,7 @@ struct ImplOptions {
   double start_timeout = 60;             // --start-timeout: seconds per start
   std::string verse_bone_form = "auto";  // --verse-bone-form: auto | spec | r6
   std::string restart;                   // --restart: a shell command starting a fresh host ("" none)
+  std::string host_cmd;                  // --host-cmd: the command running the host, which vgc starts ("" none)
   // Which were given on the command line (a subcommand's default may differ
   // from "not given": fuzz passes only what was given to its target).
   bool impl_given = false, timeout_given = false, bone_form_given = false;
@@ -45,6 +46,7 @@ enum ImplOption : unsigned {
   kStartTimeout = 2,  // --start-timeout
   kBoneForm = 4,      // --verse-bone-form
   kRestart = 8,       // --restart
+  kHostCmd = 16,      // --host-cmd (launched_host.h)
 };
 
 // Declares --impl (help: `impl_help`, the routes the subcommand takes) and
@@ -54,15 +56,17 @@ enum ImplOption : unsigned {
 void add_impl_options(CLI::App* sub, ImplOptions* o, unsigned which, const std::string& impl_help);
 
 // After the parse: a member given that the route does not take
-// (--verse-bone-form and --restart are for verse: only), said as a usage
-// error; "" when there is none.
+// (--verse-bone-form, --restart and --host-cmd are for verse: only;
+// --host-cmd replaces --restart), said as a usage error; "" when there is
+// none.
 std::string impl_options_misuse(const ImplOptions& o);
 
 // The OpenOptions of these values.
 OpenOptions open_options_of(const ImplOptions& o);
 
 // Opens o.route with o's limits (and, on a route that does not restart by
-// itself, o.restart: restartable_host.h). On failure prints
+// itself, o.restart: restartable_host.h; with o.host_cmd, the host started
+// first: launched_host.h). On failure prints
 // "vgc <subcommand>: <why>" and what to do to stderr and returns nullptr
 // (the caller exits 2).
 std::unique_ptr<Implementation> open_impl_or_report(const char* subcommand, const ImplOptions& o);

@@ -226,8 +226,27 @@ VGC_HIDDEN void __sanitizer_cov_8bit_counters_init(char* start, char* stop) {
   m->first_index = hdr->counters;
   Dl_info info;
   if (dladdr && dladdr(start, &info) && info.dli_fname) {
-    strncpy(m->path, info.dli_fname, sizeof m->path - 1);
-    m->path[sizeof m->path - 1] = '\0';
+    /* A relative name (the program as it was started, `./verse`) is made
+     * absolute now, while the working directory is the one it was started
+     * in: vgc names the module's functions from its file later, elsewhere.
+     * A bare name found on PATH is the running program's own file. */
+    const char* name = info.dli_fname;
+    char full[4096];
+    if (name[0] != '/') {
+      if (realpath(name, full)) {
+        name = full;
+      } else {
+        const ssize_t k = readlink("/proc/self/exe", full, sizeof full - 1);
+        if (k > 0) {
+          full[k] = '\0';
+          name = full;
+        }
+      }
+    }
+    size_t len = strlen(name);
+    if (len > sizeof m->path - 1) len = sizeof m->path - 1;
+    memcpy(m->path, name, len);
+    m->path[len] = '\0';
   }
   g_mapped[g_nmapped].lo = lo;
   g_mapped[g_nmapped].hi = hi;

@@ -139,7 +139,8 @@ std::optional<double> seconds_since(const fs::path& f, fs::file_time_type start)
 bool is_implementation_variable(const std::string& v) {
   for (const char* n : {"VGC_FUZZ_PLUGIN=", "VGC_FUZZ_IMPL=", "VGC_FUZZ_TIMEOUT=", "VGC_FUZZ_VERSE_BONE_FORM=",
                         "VGC_FUZZ_RESTART=", "VGC_FUZZ_BASELINE=", "VGC_FUZZ_IMPL_COVERAGE=",
-                        "VGC_FUZZ_IMPL_COVERAGE_DIR=", "VGC_COVERAGE_SHM="})
+                        "VGC_FUZZ_IMPL_COVERAGE_DIR=", "VGC_COVERAGE_SHM=", "VGC_FUZZ_HOST_CMD=",
+                        "VGC_FUZZ_HOST_LOG="})
     if (v.rfind(n, 0) == 0) return true;
   return false;
 }
@@ -147,20 +148,39 @@ bool is_implementation_variable(const std::string& v) {
 bool choose_implementation(const CampaignOptions& o, const std::string& name, bool property,
                            ImplementationChoice* out) {
   const bool live = o.impl && !o.impl->traits().in_process;
-  const bool exec = o.impl && o.impl->kind == RouteKind::Exec;
+  // The implementation's coverage is taken from a program vgc starts: an
+  // exec: program, or a Verse host started by --host-cmd.
+  const bool exec = o.impl && (o.impl->kind == RouteKind::Exec ||
+                               (o.impl->kind == RouteKind::Verse && !o.host_cmd.empty()));
   if (o.impl_coverage != "guide" && o.impl_coverage != "guide-counts" && o.impl_coverage != "observe" &&
       o.impl_coverage != "off") {
     fmt::print(stderr, "vgc fuzz: --impl-coverage takes guide, guide-counts, observe or off, not '{}'\n",
                o.impl_coverage);
     return false;
   }
+  if (!o.host_cmd.empty()) {
+    if (!o.impl || o.impl->kind != RouteKind::Verse) {
+      fmt::print(stderr, "vgc fuzz: --host-cmd is for --impl verse:HOST:PORT (the Verse host vgc starts)\n");
+      return false;
+    }
+    if (!o.restart.empty()) {
+      fmt::print(stderr, "vgc fuzz: --host-cmd replaces --restart: vgc starts the host again itself for a fresh "
+                         "instance; give one of them\n");
+      return false;
+    }
+    if (o.jobs != 1) {
+      fmt::print(stderr, "vgc fuzz: --host-cmd starts one host on the port of --impl: one job only (--jobs 1)\n");
+      return false;
+    }
+  }
   if (o.impl_coverage != "guide" && !exec) {
-    fmt::print(stderr, "vgc fuzz: --impl-coverage is for --impl exec:CMD (a program vgc starts)\n");
+    fmt::print(stderr, "vgc fuzz: --impl-coverage is for --impl exec:CMD, or verse:HOST:PORT with --host-cmd (a "
+                       "program vgc starts)\n");
     return false;
   }
   if (o.coverage_report && (!exec || o.impl_coverage == "off")) {
-    fmt::print(stderr, "vgc fuzz: --coverage-report is for --impl exec:CMD with its coverage on (not "
-                       "--impl-coverage off)\n");
+    fmt::print(stderr, "vgc fuzz: --coverage-report is for --impl exec:CMD, or verse:HOST:PORT with --host-cmd, "
+                       "with its coverage on (not --impl-coverage off)\n");
     return false;
   }
   if (!live && (o.call_timeout_s > 0 || !o.verse_bone_form.empty() || !o.restart.empty())) {
@@ -183,7 +203,8 @@ bool choose_implementation(const CampaignOptions& o, const std::string& name, bo
     if (o.call_timeout_s > 0) out->env.push_back(fmt::format("VGC_FUZZ_TIMEOUT={}", o.call_timeout_s));
     if (!o.verse_bone_form.empty()) out->env.push_back("VGC_FUZZ_VERSE_BONE_FORM=" + o.verse_bone_form);
     if (!o.restart.empty()) out->env.push_back("VGC_FUZZ_RESTART=" + o.restart);
-    // The implementation's own coverage (live_coverage.h; exec: only).
+    if (!o.host_cmd.empty()) out->env.push_back("VGC_FUZZ_HOST_CMD=" + o.host_cmd);
+    // The implementation's own coverage (live_coverage.h; a program vgc starts).
     if (o.impl_coverage != "guide" && exec)
       out->env.push_back("VGC_FUZZ_IMPL_COVERAGE=" + o.impl_coverage);
     // Known deviations do not stop libFuzzer (live_implementation.h).
@@ -212,6 +233,7 @@ std::string replay_options(const CampaignOptions& o) {
   std::string out;
   if (o.call_timeout_s > 0) out += fmt::format(" --timeout {}", o.call_timeout_s);
   if (!o.verse_bone_form.empty()) out += " --verse-bone-form " + shell_quote(o.verse_bone_form);
+  if (!o.host_cmd.empty()) out += " --host-cmd " + shell_quote(o.host_cmd);
   return out;
 }
 
@@ -403,6 +425,12 @@ int claim_run_directory(CampaignRun* r) {
   return 0;
 }
 
+// A live implementation the target starts itself: an exec: program, or a
+// Verse host with --host-cmd (its coverage can be taken).
+bool started_by_vgc(const CampaignRun& r) {
+  return r.impl.live_on(RouteKind::Exec) || (r.impl.live_on(RouteKind::Verse) && !r.o.host_cmd.empty());
+}
+
 // A live implementation with one job runs libFuzzer's plain mode in
 // rounds: restarted on the same corpus after each finding until --time is
 // spent (a fork-mode job logs in again every few seconds and first re-runs
@@ -503,14 +531,16 @@ void run_libfuzzer(CampaignRun* r) {
       last_print = now;
     }
   };
-  // An exec: implementation's coverage records go to the run's directory
-  // (for the fuzzing only: a re-run of a saved input adds nothing to them).
+  // The coverage records of an implementation vgc starts go to the run's
+  // directory (for the fuzzing only: a re-run of a saved input adds nothing
+  // to them); so does the output of a host started by --host-cmd.
   std::vector<std::string> env = r->env_add;
-  if (r->impl.live_on(RouteKind::Exec) && o.impl_coverage != "off") {
+  if (started_by_vgc(*r) && o.impl_coverage != "off") {
     std::error_code ec;
     fs::create_directories(r->dir / "implementation_coverage", ec);
     env.push_back("VGC_FUZZ_IMPL_COVERAGE_DIR=" + (r->dir / "implementation_coverage").string());
   }
+  if (!o.host_cmd.empty()) env.push_back("VGC_FUZZ_HOST_LOG=" + (r->dir / "host.log").string());
   r->fuzzed = run_streaming(argv, env, deadline, on_line, stop_now, o.cpu_time_s);
   if (live_rounds(*r))
     r->fuzzed = run_more_rounds(argv, env, deadline, on_line, o, t0, r->fuzzed, &p, &r->execs_before, &log);
@@ -603,7 +633,7 @@ void write_function_report(CampaignRun* r, const CoverageTotals& t) {
 void count_implementation_coverage(CampaignRun* r) {
   CampaignSummary& s = r->s;
   if (r->impl.live_on(RouteKind::Verse)) s.impl_coverage_mode = "wire";
-  if (!r->impl.live_on(RouteKind::Exec)) return;
+  if (!started_by_vgc(*r)) return;
   s.impl_coverage_mode = r->o.impl_coverage;
   if (r->o.impl_coverage == "off") return;
   const CoverageTotals t = merge_coverage_records((r->dir / "implementation_coverage").string());

@@ -55,7 +55,14 @@ struct CampaignOptions {
   double call_timeout_s = 0;
   std::string verse_bone_form;
   std::string restart;
-  // An exec: implementation's own coverage (fuzz/targets/live_coverage.h): "guide"
+  // verse: the shell command that runs the host in the foreground
+  // (--host-cmd): the target starts the host itself under the reaper, with
+  // the shared memory of its coverage, and starts it again to confirm a
+  // finding (fuzz/targets/live_implementation.h, launched_host.h); replaces
+  // `restart`. One job only (one host on one port).
+  std::string host_cmd;
+  // A live implementation's own coverage, over exec: or a Verse host vgc
+  // starts (--host-cmd) (fuzz/targets/live_coverage.h): "guide"
   // (default: its counters are libFuzzer features when it was built with
   // vgc's coverage runtime: its edges), "guide-counts" (its counters with
   // hit counts), "observe" (counted for the summary, not guiding: an

@@ -204,8 +204,10 @@ void write_program_counterexample(const CampaignRun& r, const CrashGroup& g, con
   const std::optional<FindingStatus> status_value = finding_status_named(status);
   const bool call_failure = status_value == FindingStatus::Crash || status_value == FindingStatus::Timeout;
   // A wire host that crashed or hung cannot be replayed on a fresh
-  // instance without the user's restart command.
-  const bool wire = r.impl.live && !r.impl.live->traits().restartable;
+  // instance without the user's restart command, unless vgc starts it
+  // (--host-cmd: `vgc replay --host-cmd` starts a fresh one).
+  const bool launched = !o.host_cmd.empty();
+  const bool wire = r.impl.live && !r.impl.live->traits().restartable && !launched;
   const bool confirmable = !call_failure || !wire || !o.restart.empty();
   if (!c->clause.empty() && !r.sign.spent() && !(call_failure && wire)) {
     // Minimized as certify shrinks, before it is written (minimize_finding.h);
@@ -213,7 +215,8 @@ void write_program_counterexample(const CampaignRun& r, const CrashGroup& g, con
     OpenOptions open;
     if (o.call_timeout_s > 0) open.timeout_seconds = o.call_timeout_s;
     if (!o.verse_bone_form.empty()) open.verse_bone_form = o.verse_bone_form;
-    const Minimized min = minimize_finding(body, c->clause, impl_spec, r.sign.wall_guard, 200, status, open);
+    const Minimized min = minimize_finding(body, c->clause, impl_spec, r.sign.wall_guard, 200, status, open,
+                                           o.host_cmd);
     if (min.reproduced && min.after < min.before)
       body = fmt::format("# minimized from {} to {} commands ({} replays); the input replays the original\n",
                          min.before, min.after, min.replays) + min.text;
@@ -249,7 +252,10 @@ void write_program_counterexample(const CampaignRun& r, const CrashGroup& g, con
     if (call_failure && c->confirmation.empty())
       c->confirmation = found == c->clause && out.find(status + " ") != std::string::npos
                             ? "confirmed: `vgc replay` on a fresh instance (" +
-                                  std::string(wire ? "restarted by --restart" : "a new process") + ") shows the " +
+                                  std::string(wire       ? "restarted by --restart"
+                                              : launched ? "a host started by --host-cmd"
+                                                         : "a new process") +
+                                  ") shows the " +
                                   status + " again"
                             : "not confirmed: `vgc replay` on a fresh instance did not show the " + status +
                                   " (depends on the instance's history, or flaky)";

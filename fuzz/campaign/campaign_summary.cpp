@@ -101,8 +101,8 @@ std::string summary_json(const CampaignSummary& s) {
 std::string implementation_coverage_line(const CampaignSummary& s) {
   if (s.impl_coverage_mode == "off") return "off (--impl-coverage off)";
   if (s.impl_coverage_mode == "wire")
-    return "not seen: a host on the Verse wire is not yet given the shared memory (exec: only); libFuzzer was "
-           "guided by vgc's own code only";
+    return "not seen: a Verse host vgc did not start is not given the shared memory (start it with --host-cmd "
+           "CMD); libFuzzer was guided by vgc's own code only";
   if (!s.impl_coverage_seen)
     return "not seen: the implementation was not built with -fsanitize-coverage=inline-8bit-counters and "
            "-lvgc_coverage (docs/fuzzing.md \"Coverage of the implementation\"); libFuzzer was guided by vgc's "

@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "implementation.h"
+#include "launched_host.h"
 #include "program_text.h"
 #include "runner.h"
 
@@ -11,13 +12,18 @@ namespace vgc::fuzz {
 
 Minimized minimize_finding(const std::string& program_text, const std::string& clause, const std::string& impl_spec,
                            std::chrono::steady_clock::time_point deadline, int max_replays,
-                           const std::string& status, const OpenOptions& open) {
+                           const std::string& status, const OpenOptions& open, const std::string& host_cmd) {
   Minimized m;
   Program program;
   TextError error;
   if (clause.empty() || !parse_program(program_text, &program, &error)) return m;
   std::string open_error;
-  std::unique_ptr<Implementation> sut = open_implementation(impl_spec, open, &open_error);
+  std::unique_ptr<Implementation> sut;
+  if (host_cmd.empty()) {
+    sut = open_implementation(impl_spec, open, &open_error);
+  } else if (const std::optional<Route> route = parse_route(impl_spec, &open_error)) {
+    sut = open_launched_host(*route, open, host_cmd, "", &open_error);
+  }
   if (!sut) return m;
   auto shows = [&](const Program& p) {
     if (m.replays >= max_replays || std::chrono::steady_clock::now() >= deadline) return false;

@@ -31,9 +31,11 @@ struct Minimized {
 // shows against `impl_spec` ("reference", "plugin:PATH", "exec:CMD",
 // "verse:HOST"), opened with `open`. A non-empty `status` ("crash",
 // "timeout", "fail") must be shown too: a crash is not minimized into a
-// mere divergence at the same clause.
+// mere divergence at the same clause. A non-empty `host_cmd` (verse: only)
+// starts the host first and ends it after (launched_host.h).
 Minimized minimize_finding(const std::string& program_text, const std::string& clause, const std::string& impl_spec,
                            std::chrono::steady_clock::time_point deadline, int max_replays = 200,
-                           const std::string& status = {}, const OpenOptions& open = {});
+                           const std::string& status = {}, const OpenOptions& open = {},
+                           const std::string& host_cmd = {});
 
 }  // namespace vgc::fuzz

@@ -28,7 +28,8 @@
 // `vgc fuzz` runs libFuzzer with -fork and -ignore_crashes, so the
 // campaign goes on with a new job and, for exec:, a new process.
 //
-// Coverage of the implementation (live_coverage.h): an exec: program built
+// Coverage of the implementation (live_coverage.h): an exec: program, or
+// a Verse host the target starts itself (VGC_FUZZ_HOST_CMD), built
 // with clang's inline 8-bit counters and vgc's coverage runtime maps its
 // counters into shared memory; they are cleared before each input and,
 // after it, folded into g_implementation_counters, an array in libFuzzer's
@@ -104,7 +105,7 @@ void confirm(vgc::Finding* f, std::vector<vgc::Command>* commands) {
   if (g_live.spec.empty() || !is_call_failure(*f)) return;
   if (!fuzz::can_confirm_on_fresh_instance(g_live)) {
     f->message += " [not confirmed on a fresh instance: a Verse host is restarted only by the command given "
-                  "with --restart CMD]";
+                  "with --restart CMD, or started by vgc with --host-cmd CMD]";
     return;
   }
   PropertyFinding pf;
@@ -124,7 +125,8 @@ extern "C" int LLVMFuzzerInitialize(int*, char***) {
   std::string error;
   g_live = vgc::fuzz::live_options_from_environment();
   if (!g_live.spec.empty()) {
-    if (g_live.route) g_coverage = vgc::fuzz::LiveCoverage::for_implementation(*g_live.route, kTarget);
+    if (g_live.route)
+      g_coverage = vgc::fuzz::LiveCoverage::for_implementation(*g_live.route, !g_live.host_cmd.empty(), kTarget);
     g_sut = vgc::fuzz::open_live_implementation(g_live, &error);
     if (g_sut && g_coverage) g_coverage->started();
   } else if (path && *path) {

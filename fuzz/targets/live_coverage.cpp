@@ -21,8 +21,9 @@ double unix_now() {
 
 }  // namespace
 
-std::unique_ptr<LiveCoverage> LiveCoverage::for_implementation(const Route& route, const char* target) {
-  if (route.kind != RouteKind::Exec) return nullptr;
+std::unique_ptr<LiveCoverage> LiveCoverage::for_implementation(const Route& route, bool host_started,
+                                                               const char* target) {
+  if (route.kind != RouteKind::Exec && !(route.kind == RouteKind::Verse && host_started)) return nullptr;
   const char* mode = std::getenv("VGC_FUZZ_IMPL_COVERAGE");
   const std::string m = mode && *mode ? mode : "guide";
   if (m == "off") return nullptr;

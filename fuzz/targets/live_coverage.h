@@ -18,9 +18,10 @@
 //                               at all (the implementation runs as before).
 //   VGC_FUZZ_IMPL_COVERAGE_DIR  where the record is written (<dir>/<pid>.txt);
 //                               unset: none.
-// Only exec: implementations: a program vgc starts inherits the region's
-// name. (A Verse host is started by the user, or by --restart, and is not
-// yet given one.) An implementation that was not built with the runtime
+// Only a program the target starts inherits the region's name: an exec:
+// implementation, or a Verse host started by VGC_FUZZ_HOST_CMD (--host-cmd;
+// launched_host.h). A Verse host started by the user, or by --restart, is
+// not given one. An implementation that was not built with the runtime
 // never attaches: the target says once that its coverage is not seen, and
 // everything else runs as without this.
 #pragma once
@@ -39,11 +40,12 @@ namespace vgc::fuzz {
 
 class LiveCoverage {
  public:
-  // For a live implementation's route: nullptr when it is not exec: (a
-  // program vgc starts, with the region in its environment), when
-  // VGC_FUZZ_IMPL_COVERAGE=off, or when the region cannot be made (said
-  // on stderr). Call before the implementation starts.
-  static std::unique_ptr<LiveCoverage> for_implementation(const Route& route, const char* target);
+  // For a live implementation's route: nullptr when the target does not
+  // start it (exec:, or verse: with `host_started`: a program with the
+  // region in its environment), when VGC_FUZZ_IMPL_COVERAGE=off, or when
+  // the region cannot be made (said on stderr). Call before the
+  // implementation starts.
+  static std::unique_ptr<LiveCoverage> for_implementation(const Route& route, bool host_started, const char* target);
   ~LiveCoverage();  // finish()
 
   // After the implementation has started: one line on stderr, what is seen.

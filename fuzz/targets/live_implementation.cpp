@@ -5,6 +5,7 @@
 #include <fstream>
 
 #include "capability.h"
+#include "launched_host.h"
 #include "restartable_host.h"
 
 namespace vgc::fuzz {
@@ -35,6 +36,8 @@ LiveOptions live_options_from_environment() {
   }
   o.verse_bone_form = env_or("VGC_FUZZ_VERSE_BONE_FORM", "");
   o.restart = env_or("VGC_FUZZ_RESTART", "");
+  o.host_cmd = env_or("VGC_FUZZ_HOST_CMD", "");
+  o.host_log = env_or("VGC_FUZZ_HOST_LOG", "");
   if (!o.spec.empty()) o.route = parse_route(o.spec, &o.route_error);
   // The baseline's clause ids: the first word of every line that is not a
   // comment (conformance/report/baseline.h; the campaign parsed it whole).
@@ -51,7 +54,7 @@ LiveOptions live_options_from_environment() {
 }
 
 bool can_confirm_on_fresh_instance(const LiveOptions& o) {
-  return (o.route && o.route->traits().restartable) || !o.restart.empty();
+  return (o.route && o.route->traits().restartable) || !o.restart.empty() || !o.host_cmd.empty();
 }
 
 std::unique_ptr<Implementation> open_live_implementation(const LiveOptions& o, std::string* error) {
@@ -63,7 +66,13 @@ std::unique_ptr<Implementation> open_live_implementation(const LiveOptions& o, s
     *error = "'" + o.spec + "': a live implementation is exec:CMD or verse:[NAME@]HOST[:PORT]";
     return nullptr;
   }
-  std::unique_ptr<Implementation> sut = open_restartable(*o.route, open_options(o), o.restart, error);
+  if (!o.host_cmd.empty() && o.route->kind != RouteKind::Verse) {
+    *error = "VGC_FUZZ_HOST_CMD (--host-cmd) is for a verse: host, not '" + o.spec + "'";
+    return nullptr;
+  }
+  std::unique_ptr<Implementation> sut =
+      o.host_cmd.empty() ? open_restartable(*o.route, open_options(o), o.restart, error)
+                         : open_launched_host(*o.route, open_options(o), o.host_cmd, o.host_log, error);
   // An exec program declares what it does not show in its ?capabilities
   // answer (declared_profile.h): asked once here, so every input is judged
   // by that profile from the first, as certify judges.

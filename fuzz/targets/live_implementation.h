@@ -37,6 +37,11 @@ struct LiveOptions {
   double timeout_s = 5;         // per call
   std::string verse_bone_form;  // "" = auto
   std::string restart;          // verse: shell command starting a fresh host; "" none
+  // verse: the command running the host in the foreground, which the target
+  // starts itself (VGC_FUZZ_HOST_CMD, --host-cmd; launched_host.h): with the
+  // shared memory of its coverage, started again for a fresh instance, ended
+  // with the target. Its output is appended to host_log (VGC_FUZZ_HOST_LOG).
+  std::string host_cmd, host_log;
   // Clauses of known deviations (VGC_FUZZ_BASELINE, the certify baseline
   // file `vgc fuzz --baseline` was given, already checked by the
   // campaign): a finding in one of them does not stop libFuzzer. A host
@@ -46,19 +51,22 @@ struct LiveOptions {
 };
 
 // The options from VGC_FUZZ_IMPL (read into a Route), VGC_FUZZ_TIMEOUT,
-// VGC_FUZZ_VERSE_BONE_FORM and VGC_FUZZ_RESTART; spec empty when
+// VGC_FUZZ_VERSE_BONE_FORM, VGC_FUZZ_RESTART, VGC_FUZZ_HOST_CMD and
+// VGC_FUZZ_HOST_LOG; spec empty when
 // VGC_FUZZ_IMPL is unset.
 LiveOptions live_options_from_environment();
 
 // Opens o.route (a route that is not in process: exec: or verse:). With a
 // restart command, the implementation's restart() runs it (bounded: 60 s)
-// and logs in to the new host (retried for up to 15 s; restartable_host.h).
+// and logs in to the new host (retried for up to 15 s; restartable_host.h);
+// with a host command, the host is started here and again by restart()
+// (launched_host.h).
 // nullptr with *error otherwise.
 std::unique_ptr<Implementation> open_live_implementation(const LiveOptions& o, std::string* error);
 
 // Whether a finding against `o` can be confirmed on a fresh instance: on a
 // route vgc restarts by itself (exec: a new process), or with a restart
-// command (verse:).
+// command or a host command (verse:).
 bool can_confirm_on_fresh_instance(const LiveOptions& o);
 
 }  // namespace vgc::fuzz

@@ -20,8 +20,12 @@
 
 #include "check_step.h"
 #include "clause.h"
+#include "coverage_record.h"
+#include "coverage_region.h"
+#include "launched_host.h"
 #include "command_text.h"
 #include "display_text.h"
+#include "exec_implementation.h"
 #include "document_diff.h"
 #include "forwarding_implementation.h"
 #include "snapshot.h"
@@ -411,6 +415,77 @@ WireInput raw_datagram(Draw& d) {
   return in;
 }
 
+// ---- the queue: inputs made from inputs that reached new code of the host ----
+
+// Whether an input can be placed before or after another: it takes its
+// packet ids in the session's order (a packet-id input is placed relative
+// to the session's next id alone, and logs in again after it).
+bool combinable(const WireInput& in) {
+  bool data = false;
+  for (const WireDatagram& g : in.datagrams) data = data || !g.raw;
+  return in.ids > 0 || !data;
+}
+
+// Whether a conforming host applies no command from the input.
+bool applies_nothing(const WireInput& in) {
+  if (!in.reliable.empty()) return false;
+  for (const WireDatagram& g : in.datagrams)
+    if (!g.applies.empty()) return false;
+  return true;
+}
+
+// `a`'s datagrams, then `b`'s (its ids after a's). `b` applies nothing, so
+// whatever a's garbage did to the session, the model stays exact.
+WireInput followed_by(const WireInput& a, const WireInput& b) {
+  WireInput out = a;
+  out.kind = a.kind + "+" + b.kind;
+  out.what = a.what + "; then " + b.what;
+  out.ids = a.ids + b.ids;
+  for (WireDatagram g : b.datagrams) {
+    if (!g.raw) g.offset += a.ids;
+    out.datagrams.push_back(std::move(g));
+  }
+  return out;
+}
+
+// A combination stays an input of a few packets.
+constexpr std::size_t kMaxCombinedDatagrams = 400;
+
+// The input `index` of a guided campaign: every other one drawn afresh
+// (make_wire_input), the others made from the queue: a queued input with a
+// fresh one or with another queued one, in the order that keeps the model
+// exact (the one a conforming host applies commands from first; when both
+// apply commands, a fresh input that applies none is drawn to follow).
+// Deterministic given the seed, the index and the queue.
+WireInput next_wire_input(std::uint64_t seed, std::uint64_t index, const std::vector<WireInput>& queue,
+                          bool* from_queue) {
+  *from_queue = false;
+  WireInput fresh = make_wire_input(seed, index);
+  if (queue.empty()) return fresh;
+  Draw d(seed ^ 0x51AFD7ED558CCD1Dull, index);
+  if (d.coin()) return fresh;
+  const WireInput& a = queue[d.below(queue.size())];
+  const WireInput& b = d.coin() ? fresh : queue[d.below(queue.size())];
+  const WireInput* first = nullptr;
+  const WireInput* second = nullptr;
+  WireInput garbage;
+  if (applies_nothing(a)) {
+    first = &b, second = &a;
+  } else if (applies_nothing(b)) {
+    first = &a, second = &b;
+  } else {
+    for (std::uint64_t k = 0; k < 8 && !second; ++k) {
+      garbage = make_wire_input(seed ^ 0x2545F4914F6CDD1Dull, index * 8 + k);
+      if (applies_nothing(garbage) && combinable(garbage)) first = &a, second = &garbage;
+    }
+  }
+  if (!first || !combinable(*first) || !combinable(*second) ||
+      first->datagrams.size() + second->datagrams.size() > kMaxCombinedDatagrams)
+    return fresh;
+  *from_queue = true;
+  return followed_by(*first, *second);
+}
+
 // ---- transcripts ----
 
 std::string transcript_text(const WireInput& in, const std::string& header) {
@@ -699,11 +774,15 @@ bool write_text(const fs::path& p, const std::string& s) {
 // Replays a finding's input on a fresh instance (the restart command, then
 // a new session and node): whether it fails again with the same clause.
 std::string confirm_wire_finding(const WireFuzzOptions& o, const WireInput& in, std::uint64_t index,
-                                 const Finding& f) {
+                                 const Finding& f, LaunchedHost* host) {
   const bool down = f.status != FindingStatus::Fail;
-  if (down && o.restart.empty())
-    return "not confirmed: the host stopped answering and is not restarted without --restart CMD";
-  if (!o.restart.empty()) {
+  const bool fresh_host = host || !o.restart.empty();
+  if (down && !fresh_host)
+    return "not confirmed: the host stopped answering and is not restarted without --restart CMD or --host-cmd CMD";
+  if (host) {
+    std::string why;
+    if (!host->start(open_options(o), nullptr, &why)) return "not confirmed: " + why;
+  } else if (!o.restart.empty()) {
     std::string why;
     if (!run_restart_command(o.restart, 60, &why)) return "not confirmed: " + why;
   }
@@ -718,9 +797,9 @@ std::string confirm_wire_finding(const WireFuzzOptions& o, const WireInput& in, 
   const std::vector<Command> applied = send_input(&fresh, in);
   const Outcome again = check_after(&fresh, in, applied, index, o);
   if (again.finding && again.finding->clause == f.clause && again.finding->status == f.status)
-    return std::string("confirmed: the input alone fails a fresh ") + (o.restart.empty() ? "node" : "host") +
+    return std::string("confirmed: the input alone fails a fresh ") + (fresh_host ? "host" : "node") +
            " the same way";
-  return "not confirmed: the input alone does not fail a fresh " + std::string(o.restart.empty() ? "node" : "host") +
+  return "not confirmed: the input alone does not fail a fresh " + std::string(fresh_host ? "host" : "node") +
          " (it depends on what came before it)";
 }
 
@@ -790,47 +869,109 @@ int run_wire_campaign(const WireFuzzOptions& o) {
     fmt::print(stderr, "vgc fuzz wire: --impl takes verse:[NAME@]HOST[:PORT] (a running Verse host)\n");
     return 2;
   }
+  if (o.impl_coverage != "guide" && o.impl_coverage != "observe" && o.impl_coverage != "off") {
+    fmt::print(stderr, "vgc fuzz wire: --impl-coverage takes guide, observe or off (edges only), not '{}'\n",
+               o.impl_coverage);
+    return 2;
+  }
   const auto t0 = Clock::now();
   const auto deadline = t0 + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(o.time_s));
+  // The run's directory (first when vgc starts the host: its output goes
+  // there; else once the host answered).
+  fs::path src = o.source_dir.empty() ? fs::path(std::getenv("VGC_SOURCE_DIR") ? std::getenv("VGC_SOURCE_DIR") : ".")
+                                      : fs::path(o.source_dir);
+  std::error_code ec;
+  std::string run;
+  fs::path dir;
+  const auto make_run_dir = [&] {
+    const fs::path runs = src / "reports" / "fuzz" / "wire";
+    fs::create_directories(runs, ec);
+    run = utc_stamp() + "-seed" + std::to_string(o.seed);
+    for (int k = 2; !ec && !fs::create_directory(runs / run, ec) && !ec; ++k)
+      run = utc_stamp() + "-seed" + std::to_string(o.seed) + "-" + std::to_string(k);
+    dir = runs / run;
+    fs::create_directories(dir / "transcripts", ec);
+    if (ec) fmt::print(stderr, "vgc fuzz wire: cannot create {}: {}\n", dir.string(), ec.message());
+    return !ec;
+  };
+  // A host vgc starts (--host-cmd), with the shared memory of its coverage
+  // in its environment (coverage_region.h: the region sets VGC_COVERAGE_SHM).
+  std::unique_ptr<CoverageRegion> region;
+  std::unique_ptr<LaunchedHost> host;
+  if (!o.host_cmd.empty()) {
+    if (!make_run_dir()) return 2;
+    if (o.impl_coverage != "off") {
+      std::string error;
+      region = CoverageRegion::create(std::size_t{1} << 20, &error);
+      if (!region) fmt::print(stderr, "vgc fuzz wire: the host's coverage is not seen: {}\n", error);
+    }
+    host = std::make_unique<LaunchedHost>(o.impl, o.host_cmd, (dir / "host.log").string(),
+                                          o.login_timeout_s > 0 ? o.login_timeout_s : 60);
+    std::string why;
+    if (!host->start(open_options(o), nullptr, &why)) {
+      fmt::print(stderr, "vgc fuzz wire: {}: {}\n", o.impl.spec, escape_unprintable(why));
+      return 2;
+    }
+  }
   Session s;
   if (auto error = open_session(&s, o)) {
     fmt::print(stderr, "vgc fuzz wire: {}: {}\n", o.impl.spec, escape_unprintable(*error));
     return 2;
   }
-  // The run's directory.
-  fs::path src = o.source_dir.empty() ? fs::path(std::getenv("VGC_SOURCE_DIR") ? std::getenv("VGC_SOURCE_DIR") : ".")
-                                      : fs::path(o.source_dir);
-  const fs::path runs = src / "reports" / "fuzz" / "wire";
-  std::error_code ec;
-  fs::create_directories(runs, ec);
-  std::string run = utc_stamp() + "-seed" + std::to_string(o.seed);
-  for (int k = 2; !ec && !fs::create_directory(runs / run, ec) && !ec; ++k)
-    run = utc_stamp() + "-seed" + std::to_string(o.seed) + "-" + std::to_string(k);
-  const fs::path dir = runs / run;
-  fs::create_directories(dir / "transcripts", ec);
-  if (ec) {
-    fmt::print(stderr, "vgc fuzz wire: cannot create {}: {}\n", dir.string(), ec.message());
-    return 2;
-  }
+  if (dir.empty() && !make_run_dir()) return 2;
   if (!o.quiet)
     fmt::print(stderr, "vgc fuzz wire: {} for {} s, seed {}; host: {}\n  run: {}\n", o.impl.spec, o.time_s, o.seed,
                s.sut->identity(), dir.string());
+  if (region && region->attached() && !o.quiet)
+    fmt::print(stderr, "vgc fuzz wire: the host's coverage is seen: {} counters ({} function entries) in shared "
+                       "memory {}, {}\n",
+               region->counters(), region->function_entries(), region->name(),
+               o.impl_coverage == "guide" ? "guiding the inputs (a queue of the inputs that reached new code of it)"
+                                          : "counted only (observe)");
+  else if (region && !o.quiet)
+    fmt::print(stderr, "vgc fuzz wire: the host's coverage is not seen (it was not built with "
+                       "-fsanitize-coverage=inline-8bit-counters and -lvgc_coverage): every input is drawn afresh\n");
 
   std::map<std::string, WireFindingGroup> groups;
   std::map<std::string, std::size_t> kinds;
   std::uint64_t index = 0, hostile_lost = 0;
   std::string stopped_because;
   auto last_print = t0;
+  // Guided (--host-cmd, the host's coverage seen): the inputs that reached
+  // new code of the host, and how many inputs were made from them.
+  constexpr std::size_t kMaxQueue = 4096;
+  // The replay line's implementation: with --host-cmd, the replay starts a fresh host itself.
+  const std::string replay_impl =
+      o.impl.spec + (o.host_cmd.empty() ? std::string() : " --host-cmd " + shell_quote(o.host_cmd));
+  std::vector<WireInput> queue;
+  std::uint64_t from_queue = 0;
+  std::vector<std::pair<double, std::size_t>> reached_over_time;  // seconds since the start, counters reached
   for (; Clock::now() < deadline && (o.max_inputs == 0 || index < o.max_inputs); ++index) {
-    const WireInput in = make_wire_input(o.seed, index);
-    ++kinds[in.kind];
+    const bool guiding = region && o.impl_coverage == "guide" && region->attached();
+    bool queued = false;
+    const WireInput in = guiding ? next_wire_input(o.seed, index, queue, &queued) : make_wire_input(o.seed, index);
+    if (queued) ++from_queue;
+    ++kinds[queued ? "(from the queue)" : in.kind];
     if (!o.seeds_out.empty()) {
       const std::vector<std::string> packets = wire_input_packets(in);
       for (std::size_t k = 0; k < packets.size() && k < 4; ++k)
         write_text(fs::path(o.seeds_out) / fmt::format("wire-{}-{}-{}.bin", in.kind, index, k), packets[k]);
     }
+    if (region) region->clear();
     const std::vector<Command> applied = send_input(&s, in);
     const Outcome out = check_after(&s, in, applied, index, o);
+    if (region && region->collect(nullptr, 0)) {
+      // A counter of the host no input set before: kept (not an input that
+      // failed: it would fail again and again).
+      if (guiding && !out.finding && queue.size() < kMaxQueue) queue.push_back(in);
+      const double t = std::chrono::duration<double>(Clock::now() - t0).count();
+      if (!reached_over_time.empty() && t - reached_over_time.back().first < 1)
+        reached_over_time.back().second = region->reached();
+      else if (reached_over_time.size() < 200)
+        reached_over_time.emplace_back(t, region->reached());
+      else
+        reached_over_time.back() = {t, region->reached()};
+    }
     if (out.hostile_lost) ++hostile_lost;
     if (out.finding) {
       const Finding& f = *out.finding;
@@ -849,9 +990,9 @@ int run_wire_campaign(const WireFuzzOptions& o) {
         const std::string header = fmt::format(
             "# vgc fuzz wire transcript: {} ({}, {}) after input {} of seed {}\n# {}\n# replay: vgc replay --wire {} "
             "--impl {}\n",
-            f.clause, status, in.kind, index, o.seed, f.message, g.transcript_file, o.impl.spec);
+            f.clause, status, in.kind, index, o.seed, f.message, g.transcript_file, replay_impl);
         write_text(g.transcript_file, transcript_text(in, header));
-        g.confirmation = confirm_wire_finding(o, in, index, f);
+        g.confirmation = confirm_wire_finding(o, in, index, f, host.get());
         if (!o.quiet) fmt::print(stderr, "vgc fuzz wire: finding after input {}: {} ({}): {}\n", index, f.clause, status,
                                  escape_unprintable(f.message));
       }
@@ -863,7 +1004,7 @@ int run_wire_campaign(const WireFuzzOptions& o) {
       // Go on: a fresh node, on the host if it still answers (the
       // confirmation may have restarted it already), else on a restarted one.
       std::optional<std::string> error = open_session(&s, o);
-      if (error && o.restart.empty()) {
+      if (error && o.restart.empty() && !host) {
         stopped_because = f.status != FindingStatus::Fail
                               ? "the host stopped answering and there is no --restart CMD to start it again"
                               : "could not go on: " + *error;
@@ -872,7 +1013,7 @@ int run_wire_campaign(const WireFuzzOptions& o) {
       }
       if (error) {
         std::string why;
-        if (!run_restart_command(o.restart, 60, &why)) {
+        if (host ? !host->start(open_options(o), nullptr, &why) : !run_restart_command(o.restart, 60, &why)) {
           stopped_because = why;
           ++index;
           break;
@@ -896,9 +1037,12 @@ int run_wire_campaign(const WireFuzzOptions& o) {
     }
     if (!o.quiet && Clock::now() - last_print >= std::chrono::seconds(10)) {
       last_print = Clock::now();
-      fmt::print(stderr, "[{:5.0f}/{:.0f} s] inputs {}  findings {}  hostile sessions ended by the host {}\n",
+      fmt::print(stderr, "[{:5.0f}/{:.0f} s] inputs {}  findings {}  hostile sessions ended by the host {}{}\n",
                  std::chrono::duration<double>(last_print - t0).count(), o.time_s, index + 1, groups.size(),
-                 hostile_lost);
+                 hostile_lost,
+                 region && region->attached()
+                     ? fmt::format("  host counters {}  queue {}", region->reached(), queue.size())
+                     : std::string());
     }
   }
   const double wall = std::chrono::duration<double>(Clock::now() - t0).count();
@@ -912,6 +1056,29 @@ int run_wire_campaign(const WireFuzzOptions& o) {
       run, escape_unprintable(s.sut ? s.sut->identity() : o.impl.spec), o.seed, o.time_s, wall, index,
       wall > 0 ? static_cast<double>(index) / wall : 0.0, hostile_lost, groups.size());
   if (!stopped_because.empty()) md += "| stopped early | " + stopped_because + " |\n";
+  // The host's own coverage (--host-cmd).
+  const bool seen = region && (region->attached() || region->reached() > 0);
+  std::string coverage_line;
+  if (o.host_cmd.empty())
+    coverage_line = "not seen: a host vgc did not start is not given the shared memory (start it with --host-cmd CMD); "
+                    "every input drawn afresh";
+  else if (o.impl_coverage == "off")
+    coverage_line = "off (--impl-coverage off)";
+  else if (!seen)
+    coverage_line = "not seen: the host was not built with -fsanitize-coverage=inline-8bit-counters and "
+                    "-lvgc_coverage (docs/fuzzing.md \"Coverage of the implementation\"); every input drawn afresh";
+  else {
+    coverage_line = fmt::format("{} of {} counters reached ({:.1f} %)", region->reached(), region->counters(),
+                                region->counters() ? 100.0 * region->reached() / region->counters() : 0.0);
+    if (region->function_entries())
+      coverage_line += fmt::format(", {} of {} functions entered", region->functions_entered(),
+                                   region->function_entries());
+    coverage_line += o.impl_coverage == "guide"
+                         ? fmt::format("; guiding: {} inputs kept in the queue, {} inputs made from it", queue.size(),
+                                       from_queue)
+                         : std::string("; counted only (--impl-coverage observe)");
+  }
+  md += "| host coverage | " + coverage_line + " |\n";
   md += "\nInputs by kind: ";
   for (const auto& [k, n] : kinds) md += fmt::format("{} {}; ", k, n);
   md += "\n\n";
@@ -920,7 +1087,7 @@ int run_wire_campaign(const WireFuzzOptions& o) {
     md += fmt::format("- **{} ({}, {})** on {} inputs, first input {} after {:.1f} s: {}\n  - transcript: `{}`\n"
                       "  - replay: `vgc replay --wire {} --impl {}`\n  - {}\n",
                       g.clause, c ? clause_level_name(c->level) : "?", g.status, g.count, g.first_input,
-                      g.first_seen_s, g.first_message, g.transcript_file, g.transcript_file, o.impl.spec,
+                      g.first_seen_s, g.first_message, g.transcript_file, g.transcript_file, replay_impl,
                       g.confirmation);
     findings.push_back({{"clause", g.clause}, {"status", g.status}, {"key", g.key}, {"count", g.count},
                         {"first_input", g.first_input}, {"first_seen_s", g.first_seen_s},
@@ -928,9 +1095,45 @@ int run_wire_campaign(const WireFuzzOptions& o) {
                         {"confirmation", g.confirmation}});
   }
   nlohmann::json by_kind = kinds;
+  nlohmann::json over_time = nlohmann::json::array();
+  for (const auto& [t, n] : reached_over_time) over_time.push_back({t, n});
+  const nlohmann::json coverage = {
+      {"mode", o.host_cmd.empty() ? std::string("wire") : o.impl_coverage},
+      {"seen", seen},
+      {"counters", seen ? region->counters() : 0},
+      {"counters_reached", seen ? region->reached() : 0},
+      {"function_entries", seen ? region->function_entries() : 0},
+      {"functions_entered", seen ? region->functions_entered() : 0},
+      {"queued", queue.size()},
+      {"inputs_from_queue", from_queue},
+      {"over_time", over_time},
+      {"line", coverage_line}};
+  // The host's counters as a coverage record (coverage_record.h), as the
+  // differential target writes one: which counters and function entries
+  // were reached, for a table per source file.
+  if (seen) {
+    CoverageRecord rec;
+    rec.mode = o.impl_coverage;
+    rec.seen = true;
+    rec.counters = std::min(region->counters(), region->reached_map().size());
+    rec.reached.assign(region->reached_map().begin(), region->reached_map().begin() + rec.counters);
+    rec.entries = region->entry_map();
+    rec.entries.resize(rec.counters, 0);
+    for (const FunctionEntry& f : region->function_entry_list())
+      if (f.index < rec.counters) rec.functions.push_back({f.index, f.module, f.offset});
+    rec.dropped = region->dropped_counters();
+    rec.function_entries = region->function_entries();
+    rec.modules = region->modules();
+    const double epoch_t0 =
+        std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count() - wall;
+    for (const auto& [t, n] : reached_over_time) rec.timeline.emplace_back(epoch_t0 + t, n);
+    fs::create_directories(dir / "implementation_coverage", ec);
+    write_coverage_record((dir / "implementation_coverage" / "wire.txt").string(), rec);
+  }
   const nlohmann::json j = {{"implementation", o.impl.spec}, {"seed", o.seed}, {"time_s", o.time_s}, {"wall_s", wall},
                             {"inputs", index}, {"inputs_by_kind", by_kind}, {"hostile_sessions_lost", hostile_lost},
-                            {"stopped_because", stopped_because}, {"findings", findings}};
+                            {"stopped_because", stopped_because}, {"findings", findings},
+                            {"host_command", o.host_cmd}, {"implementation_coverage", coverage}};
   for (const auto& [file, text] :
        {std::pair{dir / "summary.json", j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n"},
         std::pair{dir / "summary.md", escape_unprintable(md)}}) {
@@ -961,6 +1164,16 @@ int replay_wire_transcript(const std::string& file, const WireFuzzOptions& o) {
   if (!parse_transcript(text, &in, &error)) {
     fmt::print(stderr, "{}: {}\n", file, error);
     return 2;
+  }
+  // --host-cmd: a fresh host of its own, ended when the replay ends.
+  std::unique_ptr<LaunchedHost> host;
+  if (!o.host_cmd.empty()) {
+    host = std::make_unique<LaunchedHost>(o.impl, o.host_cmd, "", o.login_timeout_s > 0 ? o.login_timeout_s : 60);
+    std::string why;
+    if (!host->start(open_options(o), nullptr, &why)) {
+      fmt::print(stderr, "vgc replay --wire: {}: {}\n", o.impl.spec, escape_unprintable(why));
+      return 2;
+    }
   }
   Session s;
   if (auto e = open_session(&s, o)) {

@@ -8,6 +8,18 @@
 // the catalog check_step attributes (the node holds what was acknowledged).
 // docs/fuzzing.md "Hostile wire traffic".
 //
+// Guided by the host's coverage (--host-cmd, a host built with vgc's
+// coverage runtime): as AFL and AFLNet keep an input that reaches a new
+// edge of the program under test, an input after which a counter of the
+// host is set that no earlier input set is kept in a queue; then every
+// other input is made from the queue: a queued input followed by a fresh
+// one, a fresh one followed by a queued one, or two queued ones, always in
+// the order that keeps the model exact (an input a conforming host applies
+// commands from goes first, one that applies nothing after it: garbage
+// after a state, never a command after garbage that may have ended the
+// session). Without a host vgc starts, or with its coverage not seen, every
+// input is drawn afresh, as before. docs/fuzzing.md "vgc fuzz wire, guided".
+//
 // Rationale: the differential route sends only well-formed commands; a
 // host's packet parser, its id bookkeeping and its bounds are reached only
 // by bytes no client library would send. As stateful network fuzzers do
@@ -16,7 +28,9 @@
 // and over-long commands, unknown command numbers, long and unterminated
 // strings, ids at every magnitude (nodes, layers, vertices, packets),
 // packets out of order, duplicated and resent, bursts. Inputs are drawn
-// from the seed alone (same seed, same inputs), so a campaign repeats.
+// from the seed alone (same seed, same inputs), so a campaign repeats
+// (guided, the queue depends on the host's coverage too: the same seed
+// repeats as far as the host behaves the same).
 // After each input the adapter of `vgc certify` (verse_implementation.h)
 // sends one probe command to the node and check_step compares the node
 // with the reference model: a host that no longer answers is a `timeout`
@@ -85,6 +99,18 @@ struct WireFuzzOptions {
                                 // its --start-timeout, as certify and replay bound a start)
   std::string verse_bone_form;  // "" auto
   std::string restart;          // shell command starting a fresh host ("" none)
+  // The command running the host in the foreground, which vgc starts itself
+  // (--host-cmd; launched_host.h): started again for a fresh instance
+  // (replaces `restart`), given the shared memory of its coverage, ended
+  // with vgc. "" : the host runs already.
+  std::string host_cmd;
+  // With host_cmd, the host's own coverage (its counters, when it was built
+  // with clang's inline 8-bit counters and vgc's coverage runtime):
+  // "guide" (default: an input that reaches an edge of the host no input
+  // reached before is kept in a queue, and later inputs are made from the
+  // queue as well as drawn afresh), "observe" (counted for the summary,
+  // every input drawn afresh: today's campaign, measured alike) or "off".
+  std::string impl_coverage = "guide";
   std::string source_dir;       // reports/fuzz/wire/<run>/ under it ("" : $VGC_SOURCE_DIR or .)
   bool stop_at_first = false;
   std::string seeds_out;        // also write every input's packets here ("" none)

@@ -9,14 +9,23 @@
 # and, for a crash or hang, say whether it was confirmed on a fresh
 # instance: CONFIRM is the start of that sentence ("confirmed",
 # "not confirmed", or "-" for a plain divergence). With `restart`, the
-# campaign gets --restart: a command that starts the host again on its port.
+# campaign gets --restart: a command that starts the host again on its port;
+# with `hostcmd`, no host is started beforehand: the campaign starts it
+# itself (--host-cmd), and starts it again to confirm a crash; the replay
+# line carries --host-cmd and starts one too.
 set -u
 route=$1 vgc=$2 target=$3 plugin=$4 fault=$5 input=$6 clause=$7 status=$8 confirm=$9 work=${10} restart=${11:-}
 fail() { echo "live_campaign: $*" >&2; exit 1; }
 rm -rf "$work" && mkdir -p "$work/fuzz" "$work/src"
 export VGC_FAULT=$fault
 . "$(dirname "$0")/live_host_lib.sh"
-live_spec "$route" "$vgc" "$plugin" "$work"
+if [ "$restart" = hostcmd ]; then
+  host_port=$(python3 -c 'import socket; s=socket.socket(socket.AF_INET, socket.SOCK_DGRAM); s.bind(("127.0.0.1", 0)); print(s.getsockname()[1])')
+  spec="verse:127.0.0.1:$host_port"
+  host_cmd="exec '$vgc' serve --verse 127.0.0.1:$host_port --impl 'plugin:$plugin'"
+else
+  live_spec "$route" "$vgc" "$plugin" "$work"
+fi
 cat >"$work/fuzz/fuzz_differential" <<SCRIPT
 #!/usr/bin/env bash
 for a in "\$@"; do
@@ -31,7 +40,9 @@ exec "$target" "\$@"
 SCRIPT
 chmod +x "$work/fuzz/fuzz_differential"
 args=(fuzz differential --time 1 --impl "$spec" --timeout 2 --fuzz-build "$work" --source-dir "$work/src")
-if [ -n "$restart" ]; then
+if [ "$restart" = hostcmd ]; then
+  args+=(--host-cmd "$host_cmd")
+elif [ -n "$restart" ]; then
   # The restart command: a new host on the same port, returning once it listens.
   cat >"$work/restart.sh" <<SCRIPT
 #!/usr/bin/env bash
@@ -59,6 +70,9 @@ c = c[0]
 assert c["clause"] == clause, "clause %r, signature %s" % (c["clause"], c["signature"])
 assert (", %s)" % status) in c["signature"], "status: %s" % c["signature"]
 assert ("--impl '%s'" % spec) in c["replay"], "replay line: %s" % c["replay"]
+if "VGC_FUZZ_HOST_CMD=" in c["replay_fuzzer"]:
+    assert "--host-cmd " in c["replay"], "replay line without --host-cmd: %s" % c["replay"]
+    assert confirm == "-" or "--host-cmd" in c["confirmation"], "confirmation: %r" % c["confirmation"]
 assert "VGC_FUZZ_IMPL=" in c["replay_fuzzer"], c["replay_fuzzer"]
 if confirm == "-":
     assert c["confirmation"] == "", c["confirmation"]
@@ -74,7 +88,7 @@ if [ "$route" = exec ] || [ -n "$restart" ]; then
   # The replay line, run as printed (it names this vgc by its absolute
   # path; a bare `vgc` or `./vgc` is this vgc too): a fresh instance shows
   # the clause again.
-  [ -n "$restart" ] && "$work/restart.sh"
+  [ "$restart" = restart ] && "$work/restart.sh"
   case "$replay" in
     ./vgc\ *|vgc\ *) line="\"$vgc\" ${replay#* }" ;;
     *) line=$replay ;;
