@@ -41,7 +41,9 @@ TEST(CampaignSummary, MarkdownShowsNoRawControlByte) {
 TEST(CampaignSummary, JsonIsWrittenWhateverTheBytes) {
   std::string json;
   ASSERT_NO_THROW(json = summary_json(summary_with_foreign_bytes()));
-  EXPECT_NO_THROW((void)nlohmann::json::parse(json)) << json;
+  nlohmann::json parsed;
+  EXPECT_NO_THROW(parsed = nlohmann::json::parse(json)) << json;
+  EXPECT_TRUE(parsed.is_object()) << json;
 }
 
 }  // namespace
