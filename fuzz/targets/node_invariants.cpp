@@ -144,6 +144,37 @@ struct Digest {
     bytes(b.rot.data(), sizeof b.rot);
     add(b.rot_label);
   }
+  // What both digests take of every layer, whatever was touched: its id,
+  // name, type, defaults (bits: -0.0 and NaN payloads count), subscription
+  // and slot count.
+  void layer_header(std::uint16_t id, const Layer& layer) {
+    add(id);
+    add(layer.name);
+    add(layer.type);
+    add(layer.def_uint);
+    add(layer.def_real);
+    add(layer.subscription ? static_cast<int>(*layer.subscription) : -1);
+    add(layer.slots.size());
+  }
+  // One slot's values: 16 bytes of unsigned words, 32 of reals.
+  void slot(const Slot& s) {
+    bytes(s.u.data(), sizeof s.u);
+    bytes(s.r.data(), sizeof s.r);
+  }
+  void all_slots(const Layer& layer) {
+    for (const auto& [element, s] : layer.slots) {
+      word(element);
+      slot(s);
+    }
+  }
+  // The crease settings and the bone count.
+  void creases_and_bone_count(const Node& node) {
+    add(node.vertex_crease().layer);
+    add(node.vertex_crease().def_crease);
+    add(node.edge_crease().layer);
+    add(node.edge_crease().def_crease);
+    add(node.bones().size());
+  }
 };
 
 }  // namespace
@@ -152,24 +183,10 @@ std::uint64_t state_digest(const Node& node) {
   Digest d;
   d.add(node.layers().size());
   for (const auto& [id, layer] : node.layers()) {
-    d.add(id);
-    d.add(layer.name);
-    d.add(layer.type);
-    d.add(layer.def_uint);
-    d.add(layer.def_real);  // bits: -0.0 and NaN payloads count
-    d.add(layer.subscription ? static_cast<int>(*layer.subscription) : -1);
-    d.add(layer.slots.size());
-    for (const auto& [element, slot] : layer.slots) {
-      d.word(element);
-      d.bytes(slot.u.data(), sizeof slot.u);  // 16 bytes: two words
-      d.bytes(slot.r.data(), sizeof slot.r);  // 32 bytes: four words
-    }
+    d.layer_header(id, layer);
+    d.all_slots(layer);
   }
-  d.add(node.vertex_crease().layer);
-  d.add(node.vertex_crease().def_crease);
-  d.add(node.edge_crease().layer);
-  d.add(node.edge_crease().def_crease);
-  d.add(node.bones().size());
+  d.creases_and_bone_count(node);
   for (const auto& [id, b] : node.bones()) {
     d.add(id);
     d.add(b);
@@ -318,33 +335,17 @@ std::uint64_t touched_digest(const Node& node, const Touched& t) {
   Digest d;
   d.add(node.layers().size());
   for (const auto& [id, layer] : node.layers()) {
-    d.add(id);
-    d.add(layer.name);
-    d.add(layer.type);
-    d.add(layer.def_uint);
-    d.add(layer.def_real);
-    d.add(layer.subscription ? static_cast<int>(*layer.subscription) : -1);
-    d.add(layer.slots.size());
+    d.layer_header(id, layer);
     const bool vertex_stack = is_vertex_layer_type(layer.type);
     for (std::uint32_t e : vertex_stack ? t.vertices : t.polygons) {
       auto it = layer.slots.find(e);
       d.word(it == layer.slots.end() ? 0 : 1);
       if (it == layer.slots.end()) continue;
-      d.bytes(it->second.u.data(), sizeof it->second.u);
-      d.bytes(it->second.r.data(), sizeof it->second.r);
+      d.slot(it->second);
     }
-    if (std::find(t.layers.begin(), t.layers.end(), id) != t.layers.end())
-      for (const auto& [element, slot] : layer.slots) {
-        d.word(element);
-        d.bytes(slot.u.data(), sizeof slot.u);
-        d.bytes(slot.r.data(), sizeof slot.r);
-      }
+    if (std::find(t.layers.begin(), t.layers.end(), id) != t.layers.end()) d.all_slots(layer);
   }
-  d.add(node.vertex_crease().layer);
-  d.add(node.vertex_crease().def_crease);
-  d.add(node.edge_crease().layer);
-  d.add(node.edge_crease().def_crease);
-  d.add(node.bones().size());
+  d.creases_and_bone_count(node);
   for (std::uint16_t b : t.bones) {
     auto it = node.bones().find(b);
     d.word(it == node.bones().end() ? 0 : 1);
