@@ -5,6 +5,8 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <charconv>
+#include <cctype>
 #include <chrono>
 #include <cstdlib>
 #include <ctime>
@@ -83,6 +85,26 @@ std::size_t body_size(const std::string& body) {
     }
   }
   return n;
+}
+
+// What is wrong with a body read from a transcript, with the 1-based
+// column (within the body) where it goes wrong; nullopt for a body of
+// hex byte pairs and {node} tokens.
+std::optional<std::pair<std::size_t, std::string>> body_error(std::string_view body) {
+  auto is_hex = [](char c) { return std::isxdigit(static_cast<unsigned char>(c)) != 0; };
+  for (std::size_t i = 0; i < body.size();) {
+    if (body.compare(i, 6, kNodeToken) == 0) {
+      i += 6;
+    } else if (!is_hex(body[i])) {
+      return std::pair{i + 1, fmt::format("'{}' is not a hex digit (a body is hex byte pairs and {})",
+                                          escape_unprintable(body.substr(i, 1)), kNodeToken)};
+    } else if (i + 1 >= body.size() || !is_hex(body[i + 1])) {
+      return std::pair{i + 1, std::string("half a byte: hex digits come in pairs")};
+    } else {
+      i += 2;
+    }
+  }
+  return std::nullopt;
 }
 
 // The first `k` bytes of a body (a {node} cut in the middle becomes zeros).
@@ -508,7 +530,7 @@ bool parse_transcript(const std::string& text, WireInput* in, std::string* error
     std::vector<Command> cs;
     TextError e;
     if (!parse_commands(s + "\n", &cs, &e) || cs.size() != 1) {
-      *error = fmt::format("line {}: not a command: {} ({})", n, s, e.message);
+      *error = fmt::format("line {}: not a command: {} ({})", n, escape_unprintable(s), escape_unprintable(e.message));
       return false;
     }
     out->push_back(cs[0]);
@@ -523,7 +545,12 @@ bool parse_transcript(const std::string& text, WireInput* in, std::string* error
       in->kind = rest.substr(0, rest.find(':'));
       in->what = rest.find(": ") == std::string::npos ? "" : rest.substr(rest.find(": ") + 2);
     } else if (key == "ids") {
-      in->ids = static_cast<std::uint32_t>(std::strtoul(rest.c_str(), nullptr, 10));
+      const auto [end, ec] = std::from_chars(rest.data(), rest.data() + rest.size(), in->ids);
+      if (rest.empty() || ec != std::errc() || end != rest.data() + rest.size()) {
+        *error = fmt::format("line {}, column {}: expected ids N, a whole number below 2^32, got '{}'", n,
+                             key.size() + 2, escape_unprintable(rest));
+        return false;
+      }
     } else if (key == "reliable") {
       if (!command(rest, &in->reliable)) return false;
     } else if (key == "applies") {  // what the packet before it does to a conforming host's node
@@ -533,18 +560,29 @@ bool parse_transcript(const std::string& text, WireInput* in, std::string* error
       }
       if (!command(rest, &in->datagrams.back().applies)) return false;
     } else if (key == "datagram") {
+      if (const auto bad = body_error(rest)) {
+        *error = fmt::format("line {}, column {}: {}", n, key.size() + 1 + bad->first, bad->second);
+        return false;
+      }
       in->datagrams.push_back(raw_packet(rest));
     } else if (key == "packet") {
       const auto sp2 = rest.find(' ');
-      char* end = nullptr;
-      const long long off = std::strtoll(rest.c_str(), &end, 10);
-      if (sp2 == std::string::npos || end != rest.c_str() + sp2) {
-        *error = fmt::format("line {}: expected packet OFFSET BODY", n);
+      std::int64_t off = 0;
+      const char* last = rest.data() + (sp2 == std::string::npos ? rest.size() : sp2);
+      const auto [end, ec] = std::from_chars(rest.data(), last, off);
+      if (sp2 == std::string::npos || ec != std::errc() || end != last) {
+        *error = fmt::format("line {}, column {}: expected packet OFFSET BODY, OFFSET a whole number of 64 bits", n,
+                             key.size() + 2);
+        return false;
+      }
+      if (const auto bad = body_error(std::string_view(rest).substr(sp2 + 1))) {
+        *error = fmt::format("line {}, column {}: {}", n, key.size() + 1 + sp2 + 1 + bad->first, bad->second);
         return false;
       }
       in->datagrams.push_back(data_packet(off, rest.substr(sp2 + 1)));
     } else {
-      *error = fmt::format("line {}: unknown line '{}' (input, ids, reliable, packet, datagram, applies)", n, key);
+      *error = fmt::format("line {}, column 1: unknown line '{}' (input, ids, reliable, packet, datagram, applies)", n,
+                           escape_unprintable(key));
       return false;
     }
   }
@@ -815,7 +853,9 @@ std::string wire_bytes(const std::string& body, std::uint32_t node) {
       out += static_cast<char>(node);
       i += 6;
     } else {
-      out += static_cast<char>(std::stoi(body.substr(i, 2), nullptr, 16));
+      unsigned byte = 0;  // a body is checked before it gets here (body_error); a bad pair reads as 0
+      std::from_chars(body.data() + i, body.data() + std::min(body.size(), i + 2), byte, 16);
+      out += static_cast<char>(byte);
       i += 2;
     }
   }

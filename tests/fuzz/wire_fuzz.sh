@@ -83,6 +83,23 @@ rc=$?
 [ "$rc" -eq 2 ] || fail "replay --wire against a dead host: expected exit 2, got $rc: $r"
 printf '%s\n' "$r" | grep -q -- "within 2 s (--start-timeout)" || fail "replay --wire against a dead host does not name its 2 s --start-timeout: $r"
 
+# 3c. A malformed transcript is exit 2 naming its line and column, before
+# any host is asked, and no raw control byte is echoed (it once aborted on
+# a byte pair that is not hex, and read `ids 3x` as 3).
+bad_transcript() {  # NAME CONTENT EXPECTED-TEXT
+  printf "$2" >"$work/$1.wire"
+  r=$("$vgc" replay --wire "$work/$1.wire" --impl "verse:127.0.0.1:$port" --start-timeout 2 2>&1)
+  rc=$?
+  [ "$rc" -eq 2 ] || fail "replay --wire of $1: expected exit 2, got $rc: $r"
+  printf '%s\n' "$r" | grep -qF -- "$3" || fail "replay --wire of $1 does not say '$3': $r"
+  ! printf '%s' "$r" | LC_ALL=C grep -q '[[:cntrl:]]' || fail "replay --wire of $1 echoes a control byte: $r"
+}
+bad_transcript not_hex 'input truncated: x\nids 3\npacket 0 05zz\n' "line 3, column 12: 'z' is not a hex digit"
+bad_transcript half_byte 'input truncated: x\nids 3\npacket 0 051\n' "line 3, column 12: half a byte"
+bad_transcript control 'input truncated: x\nids 3\ndatagram 00\001G\n' "line 3, column 12: '\\x01' is not a hex digit"
+bad_transcript ids 'input truncated: x\nids 3x\n' "line 2, column 5: expected ids N"
+bad_transcript offset 'input truncated: x\nids 3\npacket 99999999999999999999 05\n' "line 3, column 8: expected packet OFFSET BODY"
+
 # 4. The same with --restart: a new host on the same port; the campaign goes on.
 start_verse_host "$vgc" "" 127.0.0.1:0 "$work/dies2.log" || fail "the host did not start"
 dies=$host_pid port=$host_port
