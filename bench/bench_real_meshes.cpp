@@ -16,6 +16,7 @@
 // OpenSubdiv's refinement for subdivision and loop, the reference's split
 // normals for normals: spec 003 has no external oracle); and their ratio.
 // Wall times on a shared machine: read the ratio, not the seconds.
+#include "bench_args.h"
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -100,8 +101,8 @@ int main(int argc, char** argv) {
   std::vector<std::string> meshes;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
-    if (a == "--levels" && i + 1 < argc) levels = std::atoi(argv[++i]);
-    else if (a == "--repeats" && i + 1 < argc) repeats = std::atoi(argv[++i]);
+    if (a == "--levels" && i + 1 < argc) levels = static_cast<int>(vgc::bench::count_argument("bench_real_meshes", "--levels", argv[++i], 1, 4));
+    else if (a == "--repeats" && i + 1 < argc) repeats = static_cast<int>(vgc::bench::count_argument("bench_real_meshes", "--repeats", argv[++i], 1, 1000));
     else meshes.push_back(a);
   }
   if (meshes.empty() || levels < 1 || repeats < 1) {

@@ -12,6 +12,7 @@
 // route it prints the median of the repeats and every run, in seconds, and
 // whether the program was found to agree (it must: the reference checks
 // itself). --vgc defaults to the vgc next to this build (../cli/vgc).
+#include "bench_args.h"
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -85,8 +86,8 @@ int main(int argc, char** argv) {
     if (a == "--vgc" && has_value) vgc = argv[++i];
     else if (a == "--routes" && has_value) routes = argv[++i];
     else if (a == "--shape" && has_value) shape = argv[++i];
-    else if (a == "--repeats" && has_value) repeats = std::max(1, std::atoi(argv[++i]));
-    else if (!a.empty() && a[0] != '-') sizes.push_back(std::strtoull(a.c_str(), nullptr, 10));
+    else if (a == "--repeats" && has_value) repeats = static_cast<int>(vgc::bench::count_argument("bench_replay", "--repeats", argv[++i], 1, 1000));
+    else if (!a.empty() && a[0] != '-') sizes.push_back(static_cast<std::size_t>(vgc::bench::count_argument("bench_replay", "SIZE", a, 1, 100000000)));
     else {
       std::fprintf(stderr, "usage: bench_replay [--vgc PATH] [--routes reference,exec] [--shape fan|grid] "
                            "[--repeats N] SIZE...\n");

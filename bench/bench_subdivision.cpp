@@ -23,6 +23,7 @@
 // a shared machine) and peak memory above the baseline. OpenSubdiv's time
 // includes copying every level out into plain arrays (OsdResult), as the
 // reference's result holds them.
+#include "bench_args.h"
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -151,8 +152,8 @@ Summary summarize(const std::vector<Run>& runs, long baseline_kb) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  const int levels = argc > 1 ? std::atoi(argv[1]) : 2;
-  const int repeats = argc > 2 ? std::atoi(argv[2]) : 3;
+  const int levels = argc > 1 ? static_cast<int>(vgc::bench::count_argument("bench_subdivision", "levels", argv[1], 1, 4)) : 2;
+  const int repeats = argc > 2 ? static_cast<int>(vgc::bench::count_argument("bench_subdivision", "repeats", argv[2], 1, 1000)) : 3;
   if (levels < 1 || levels > 4 || repeats < 1) {
     std::fprintf(stderr, "usage: bench_subdivision [levels 1..4 [repeats >= 1]]\n");
     return 2;

@@ -20,6 +20,7 @@
 // reference node that offers no digest (read whole after every command:
 // the host before issue 28), or with --host any running host (vgc serve
 // --verse with any --impl, r6's `verse`). Wall times on a shared machine.
+#include "bench_args.h"
 #include <algorithm>
 #include <atomic>
 #include <chrono>
@@ -132,7 +133,7 @@ int main(int argc, char** argv) {
   std::vector<std::string> meshes;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
-    if (a == "--repeats" && i + 1 < argc) repeats = std::atoi(argv[++i]);
+    if (a == "--repeats" && i + 1 < argc) repeats = static_cast<int>(vgc::bench::count_argument("bench_verse_host", "--repeats", argv[++i], 1, 1000));
     else if (a == "--whole") whole = true;
     else if (a == "--host" && i + 1 < argc) external = argv[++i];
     else meshes.push_back(a);

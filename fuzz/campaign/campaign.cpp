@@ -9,6 +9,7 @@
 #include "campaign.h"
 #include "campaign_run.h"
 
+#include <charconv>
 #include <fmt/core.h>
 #include <nlohmann/json.hpp>
 #include <unistd.h>
@@ -90,10 +91,15 @@ bool parse_progress(const std::string& line, Progress* p) {
   std::smatch m;
   if (!std::regex_search(line, m, head)) return false;
   if (line.find("cov: ") == std::string::npos) return false;
-  p->execs = std::stoll(m[1]);
+  // Digits only (the patterns say so); a number past 64 bits is no status line.
+  auto number = [](const std::ssub_match& digits, long long* out) {
+    const std::string text = digits.str();
+    return std::from_chars(text.data(), text.data() + text.size(), *out).ec == std::errc();
+  };
+  if (!number(m[1], &p->execs)) return false;
   auto field = [&](const char* re, long long* out) {
     std::smatch f;
-    if (std::regex_search(line, f, std::regex(re))) *out = std::stoll(f[1]);
+    if (std::regex_search(line, f, std::regex(re))) number(f[1], out);
   };
   field(R"(cov: (\d+))", &p->cov);
   field(R"(ft: (\d+))", &p->ft);

@@ -5,10 +5,13 @@
 #include <dirent.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <charconv>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <string>
+#include <string_view>
 
 namespace vgc::fuzz {
 
@@ -29,14 +32,25 @@ bool read_stat(const char* pid, long* pgrp, unsigned long long* ticks) {
   const char* p = std::strrchr(buf, ')');
   if (!p) return false;
   ++p;
-  unsigned long long utime = 0, stime = 0;
-  long long cutime = 0, cstime = 0;
-  // state ppid pgrp session tty_nr tpgid flags minflt cminflt majflt cmajflt utime stime cutime cstime
-  if (std::sscanf(p, " %*c %*d %ld %*d %*d %*d %*u %*u %*u %*u %*u %llu %llu %lld %lld", pgrp, &utime, &stime,
-                  &cutime, &cstime) != 5)
-    return false;
-  *ticks = utime + stime + static_cast<unsigned long long>(cutime < 0 ? 0 : cutime) +
-           static_cast<unsigned long long>(cstime < 0 ? 0 : cstime);
+  // state ppid pgrp session tty_nr tpgid flags minflt cminflt majflt cmajflt utime stime cutime cstime:
+  // fields 0 to 14 after the name, each read with std::from_chars.
+  std::string_view rest(p);
+  long long field[15] = {};
+  for (int i = 0; i < 15; ++i) {
+    const auto start = rest.find_first_not_of(' ');
+    if (start == std::string_view::npos) return false;
+    rest.remove_prefix(start);
+    const std::size_t len = std::min(rest.find(' '), rest.size());
+    if (i > 0) {  // field 0 is the state letter
+      const auto [end, ec] = std::from_chars(rest.data(), rest.data() + len, field[i]);
+      if (ec != std::errc() || end != rest.data() + len) return false;
+    }
+    rest.remove_prefix(len);
+  }
+  *pgrp = static_cast<long>(field[2]);
+  long long sum = 0;
+  for (int i = 11; i <= 14; ++i) sum += field[i] < 0 ? 0 : field[i];
+  *ticks = static_cast<unsigned long long>(sum);
   return true;
 }
 

@@ -1,6 +1,7 @@
 // live_implementation.cpp — see live_implementation.h.
 #include "live_implementation.h"
 
+#include <charconv>
 #include <cstdlib>
 #include <fstream>
 
@@ -30,9 +31,9 @@ LiveOptions live_options_from_environment() {
   o.spec = env_or("VGC_FUZZ_IMPL", "");
   const std::string t = env_or("VGC_FUZZ_TIMEOUT", "");
   if (!t.empty()) {
-    char* end = nullptr;
-    const double v = std::strtod(t.c_str(), &end);
-    if (end != t.c_str() && *end == '\0' && v > 0) o.timeout_s = v;
+    double v = 0;  // the campaign writes it (--timeout, already checked); anything else keeps the default
+    const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), v);
+    if (ec == std::errc() && end == t.data() + t.size() && v > 0) o.timeout_s = v;
   }
   o.verse_bone_form = env_or("VGC_FUZZ_VERSE_BONE_FORM", "");
   o.restart = env_or("VGC_FUZZ_RESTART", "");
