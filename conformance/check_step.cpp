@@ -38,6 +38,24 @@ std::optional<FindingStatus> finding_status_named(std::string_view name) {
   return std::nullopt;
 }
 
+const char* finding_kind_name(FindingKind k) {
+  switch (k) {
+    case FindingKind::WrongAnswer: return "wrong-answer";
+    case FindingKind::HiddenState: return "hidden-state";
+    case FindingKind::ProtocolError: return "protocol-error";
+    case FindingKind::Timeout: return "timeout";
+    case FindingKind::Crash: return "crash";
+  }
+  return "wrong-answer";
+}
+
+std::optional<FindingKind> finding_kind_named(std::string_view name) {
+  for (FindingKind k : {FindingKind::WrongAnswer, FindingKind::HiddenState, FindingKind::ProtocolError,
+                        FindingKind::Timeout, FindingKind::Crash})
+    if (name == finding_kind_name(k)) return k;
+  return std::nullopt;
+}
+
 Finding call_failure(std::string_view clause, CallStatus s, const std::string& what, const std::string& detail) {
   Finding f;
   f.status = status_of(s);

@@ -178,53 +178,22 @@ bool note_reproduces_fresh(Implementation& sut, const Finding& note, const Progr
   return r.failure && r.failure->clause == note.clause;
 }
 
-const char* finding_kind_name(FindingKind k) {
-  switch (k) {
-    case FindingKind::WrongAnswer: return "wrong-answer";
-    case FindingKind::HiddenState: return "hidden-state";
-    case FindingKind::ProtocolError: return "protocol-error";
-    case FindingKind::Timeout: return "timeout";
-    case FindingKind::Crash: return "crash";
-  }
-  return "wrong-answer";
-}
-
-std::optional<FindingKind> finding_kind_named(std::string_view name) {
-  for (FindingKind k : {FindingKind::WrongAnswer, FindingKind::HiddenState, FindingKind::ProtocolError,
-                        FindingKind::Timeout, FindingKind::Crash})
-    if (name == finding_kind_name(k)) return k;
-  return std::nullopt;
-}
-
 bool kind_tells_differences_apart(const Finding& f) { return finding_kind_of(f) == FindingKind::HiddenState; }
 
 FindingKind finding_kind_of(const Finding& f) {
-  // A history finding is about the kind its message names (confirm_call_failure wrote it).
-  if (depends_on_history(f)) return finding_kind_named(call_failure_kind(f)).value_or(FindingKind::WrongAnswer);
+  if (f.history_kind) return *f.history_kind;  // the kind the history brought about
   if (f.status == FindingStatus::Crash) return FindingKind::Crash;
   if (f.status == FindingStatus::Timeout) return FindingKind::Timeout;
   if (is_call_failure(f)) return FindingKind::ProtocolError;
-  if (f.message.rfind(kLateViewPrefix, 0) == 0) return FindingKind::HiddenState;
+  if (f.late_view) return FindingKind::HiddenState;
   return FindingKind::WrongAnswer;
 }
 
-std::string finding_kind(const Finding& f) {
-  if (depends_on_history(f)) return call_failure_kind(f);
-  return finding_kind_name(finding_kind_of(f));
-}
+std::string finding_kind(const Finding& f) { return finding_kind_name(finding_kind_of(f)); }
 
 int finding_severity(const Finding& f) { return static_cast<int>(finding_kind_of(f)); }
 
-std::string call_failure_kind(const Finding& f) {
-  if (!depends_on_history(f)) return finding_kind(f);
-  std::string_view m = f.message;
-  m.remove_prefix(std::min(m.size(), std::string_view(kHistoryPrefix).size() + 2));  // ": "
-  return std::string(m.substr(0, m.find(' ')));
-}
-
-bool depends_on_history(const Finding& f) {
-  return f.message.rfind(kHistoryPrefix, 0) == 0;
-}
+bool depends_on_history(const Finding& f) { return f.history_kind.has_value(); }
 
 bool confirm_call_failure(Implementation& sut, PropertyFinding* pf, const std::vector<std::vector<Command>>& history,
                           Clock::time_point deadline, int max_attempts) {
@@ -262,16 +231,17 @@ bool confirm_call_failure(Implementation& sut, PropertyFinding* pf, const std::v
   // A protocol error is ACCEPT-1's whatever the history; a crash, a
   // time-out or a wrong answer that only a history brings about is the
   // implementation not standing up to that history: STABLE-1.
-  const std::string kind = finding_kind(pf->finding);
+  const FindingKind kind = finding_kind_of(pf->finding);
   Finding f;
   f.status = pf->finding.status;
-  f.clause = finding_kind_of(pf->finding) == FindingKind::ProtocolError ? "ACCEPT-1" : "STABLE-1";
+  f.clause = kind == FindingKind::ProtocolError ? "ACCEPT-1" : "STABLE-1";
+  f.history_kind = kind;
   f.message = fmt::format(
       "{}: {} after {} commands since the instance started, while applying a "
       "command of {} (not blamed on it: the case it ended, {} commands from a fresh node, does not fail a fresh "
       "instance); {}. As "
       "seen: {}",
-      kHistoryPrefix, kind, since_start, blamed, shrunk, how, pf->finding.message);
+      kHistoryPrefix, finding_kind_name(kind), since_start, blamed, shrunk, how, pf->finding.message);
   pf->finding = f;
   pf->program = Program{reproducer, request};
   pf->program.history_kind = kind;
@@ -279,14 +249,15 @@ bool confirm_call_failure(Implementation& sut, PropertyFinding* pf, const std::v
 }
 
 std::optional<Finding> blame_as_history(const Program& program, const Finding& seen, std::size_t failed_at) {
-  if (program.history_kind.empty() || finding_kind(seen) != program.history_kind) return std::nullopt;
+  if (!program.history_kind || finding_kind_of(seen) != *program.history_kind) return std::nullopt;
   Finding f;
   f.status = seen.status;
-  f.clause = finding_kind_named(program.history_kind) == FindingKind::ProtocolError ? "ACCEPT-1" : "STABLE-1";
+  f.clause = *program.history_kind == FindingKind::ProtocolError ? "ACCEPT-1" : "STABLE-1";
+  f.history_kind = program.history_kind;
   f.message = fmt::format(
       "{}: {} after {} commands from a fresh instance, on a command of {} (not blamed on it: this file "
       "reproduces a finding certify confirmed as depending on the history). As seen: {}",
-      kHistoryPrefix, program.history_kind, failed_at + 1, seen.clause, seen.message);
+      kHistoryPrefix, finding_kind_name(*program.history_kind), failed_at + 1, seen.clause, seen.message);
   return f;
 }
 

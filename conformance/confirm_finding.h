@@ -82,13 +82,11 @@ bool reproduces_fresh(Implementation& sut, const Finding& f, const Program& prog
 // confirmation compares: a history's reproducer must fail a fresh instance
 // with the same kind.
 std::string finding_kind(const Finding& f);
-// The same as a value, in order of severity (finding_severity), so that a
-// caller decides with a switch or a comparison, not by the printed word.
-enum class FindingKind : std::uint8_t { WrongAnswer, HiddenState, ProtocolError, Timeout, Crash };
+// The same as a value (finding.h FindingKind), so that a caller decides
+// with a switch or a comparison, not by the printed word: read from the
+// finding's status and the fields set where it was made (Finding::late_view,
+// Finding::history_kind), never from its message.
 FindingKind finding_kind_of(const Finding& f);
-const char* finding_kind_name(FindingKind k);  // "wrong-answer", "hidden-state", ...
-// The inverse (a Program's history_kind read back); nullopt for another word.
-std::optional<FindingKind> finding_kind_named(std::string_view name);
 
 // Whether findings of `f`'s kind are told apart by their difference
 // (Finding::difference): hidden state, where one clause can hide two
@@ -105,12 +103,8 @@ bool kind_tells_differences_apart(const Finding& f);
 // shows its worst finding (clause_status.h prefer_finding).
 int finding_severity(const Finding& f);
 
-// The same as finding_kind (the name the runner's callers used when only
-// call failures were confirmed).
-std::string call_failure_kind(const Finding& f);
-
 // Whether `f` is a finding that depends on the implementation's history
-// (confirm_call_failure made it).
+// (confirm_call_failure made it: Finding::history_kind is set).
 bool depends_on_history(const Finding& f);
 
 // Confirms the finding `pf` (any kind but NotJudged), found while

@@ -12,6 +12,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -31,6 +32,17 @@ const char* finding_status_name(FindingStatus s);  // "fail", "crash", "timeout"
 // The inverse of finding_status_name (a report.json or a signature line
 // read back); nullopt for any other word.
 std::optional<FindingStatus> finding_status_named(std::string_view name);
+
+// What kind of deviation a finding is, in order of severity
+// (confirm_finding.h finding_severity): a wrong verdict, reason or document;
+// hidden state (a party that starts watching late is sent something else
+// than those that watched all along and the model hold); a protocol error;
+// a time-out; a crash (a sanitizer report included).
+enum class FindingKind : std::uint8_t { WrongAnswer, HiddenState, ProtocolError, Timeout, Crash };
+const char* finding_kind_name(FindingKind k);  // "wrong-answer", "hidden-state", ...
+// The inverse (a program's "#! history" or a report.json read back);
+// nullopt for any other word.
+std::optional<FindingKind> finding_kind_named(std::string_view name);
 
 struct Finding {
   Finding() = default;
@@ -72,6 +84,15 @@ struct Finding {
   // is_tolerated), and the clause shows both (ClauseOutcome::
   // other_findings).
   std::string difference;
+  // Set where the finding is made, never read back from its message:
+  // late_view by the late subscriber's check (program_checker.h
+  // check_late_view: the finding is hidden state); history_kind by
+  // confirm_finding.h confirm_call_failure when the failure showed only
+  // after what the instance had been sent since it started (the finding is
+  // then STABLE-1's or ACCEPT-1's, and this is the kind of failure that
+  // history brought about).
+  bool late_view = false;
+  std::optional<FindingKind> history_kind;
 };
 
 }  // namespace vgc

@@ -43,10 +43,11 @@ struct Program {
   std::optional<CapabilityRequest> request;
   // Set when the program reproduces a finding that depends on the
   // implementation's history (confirm_finding.h): the kind of failure it
-  // brings about ("crash", "timeout", "protocol-error", "wrong-answer").
-  // `vgc replay` then blames what it shows as certify did: on STABLE-1
-  // (ACCEPT-1 for a protocol error), not on the command it came on.
-  std::string history_kind;
+  // brings about (crash, timeout, protocol error, wrong answer; written
+  // "#! history KIND" by finding_kind_name). `vgc replay` then blames what
+  // it shows as certify did: on STABLE-1 (ACCEPT-1 for a protocol error),
+  // not on the command it came on.
+  std::optional<FindingKind> history_kind;
   // Set when the program is a user's mesh as `vgc certify --mesh` judged it
   // ("#! mesh"): `vgc replay` then judges it as certify did (mesh_certification.h,
   // replay_mesh_program): a verdict per command and the snapshot once at the

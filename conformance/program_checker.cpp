@@ -341,6 +341,7 @@ std::optional<Localized> ProgramChecker::check_late_view(const std::vector<Comma
     Finding f;
     f.clause = std::string(rule_clause(Rule::Subscribe));
     f.rules = {Rule::Subscribe};
+    f.late_view = true;
     f.message = std::string(kLateViewPrefix) +
                 ": a session that subscribed to layer 0 at REAL32 and then at REAL64 before the case was sent `" +
                 wrong + "` during it, a REAL32 value after its REAL64 subscription: the host kept both subscriptions "
@@ -381,6 +382,7 @@ std::optional<Localized> ProgramChecker::check_late_view(const std::vector<Comma
   if (!l) l = bisect(sent, 0, sent.size());
   if (!l || !l->step.failure) return format_finding();
   Finding& f = *l->step.failure;
+  f.late_view = true;
   f.message = std::string(kLateViewPrefix) +
               ": a session that subscribed to the node and every layer (REAL32 and REAL64) after this command was "
               "sent another node than the session that watched it all along, which agreed with the model; " +

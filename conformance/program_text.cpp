@@ -45,7 +45,7 @@ std::string print_capability_directive(const CapabilityRequest& request) {
 
 std::string print_program(const Program& program) {
   std::string out = print_commands(program.commands);
-  if (!program.history_kind.empty()) out += "#! history " + program.history_kind + "\n";
+  if (program.history_kind) out += std::string("#! history ") + finding_kind_name(*program.history_kind) + "\n";
   if (program.mesh) out += "#! mesh\n";
   if (program.request) out += print_capability_directive(*program.request);
   return out;
@@ -73,14 +73,15 @@ bool placed_once(const char* name, bool seen, std::size_t line_number, std::size
 // implementation's history. Returns false with *error set on a malformed one.
 bool parse_history_directive(const std::vector<std::pair<std::string, std::size_t>>& t, std::string_view line,
                              std::size_t line_number, std::size_t last_command, Program* out, TextError* error) {
-  if (!placed_once("history", !out->history_kind.empty(), line_number, last_command, error)) return false;
-  static const char* const kinds[] = {"crash", "timeout", "protocol-error", "wrong-answer"};
-  if (t.size() != 2 || std::find(std::begin(kinds), std::end(kinds), t[1].first) == std::end(kinds)) {
+  if (!placed_once("history", out->history_kind.has_value(), line_number, last_command, error)) return false;
+  // Hidden state is no kind a history is confirmed for (confirm_finding.h is_call_failure and wrong answers).
+  const std::optional<FindingKind> kind = t.size() == 2 ? finding_kind_named(t[1].first) : std::nullopt;
+  if (!kind || *kind == FindingKind::HiddenState) {
     set_error(error, line_number, t.size() < 2 ? line.size() + 1 : t[1].second,
               "expected \"#! history KIND\" with KIND one of crash, timeout, protocol-error, wrong-answer");
     return false;
   }
-  out->history_kind = t[1].first;
+  out->history_kind = kind;
   return true;
 }
 
@@ -102,7 +103,7 @@ bool parse_program(std::string_view text, Program* out, TextError* error, std::v
                    std::size_t* directive_line) {
   out->commands.clear();
   out->request.reset();
-  out->history_kind.clear();
+  out->history_kind.reset();
   out->mesh = false;
   if (directive_line) *directive_line = 0;
   std::vector<std::size_t> command_lines;

@@ -189,7 +189,7 @@ bool confirm_before_shrinking(const Finding& f, const std::optional<CapabilityRe
   const Program program{c.trace, request};
   const std::vector<std::vector<Command>> history = c.recorder->history();
   const bool reproduced = case_fails_fresh(c, f, program);
-  if (!reproduced && c.history_kinds.count(finding_kind(f))) {
+  if (!reproduced && c.history_kinds.count(finding_kind_of(f))) {
     c.set_aside_case = true;  // the history-dependent failure again: already reported
     return false;
   }

@@ -123,10 +123,10 @@ struct CaseContext {
   // call failure happened (confirm_finding.h), the failing case last.
   HistoryRecorder* recorder = nullptr;
   std::vector<std::vector<Command>> failure_history;
-  // Kinds of call failure ("crash", "timeout", "protocol-error") the run
+  // Kinds of failure (a crash, a time-out, a protocol error, a wrong answer) the run
   // already found to depend on the implementation's history: another one
   // whose case does not fail a fresh instance is set aside, not shrunk.
-  std::set<std::string> history_kinds;
+  std::set<FindingKind> history_kinds;
   // The round's first call failure: whether its case failed a fresh
   // instance the same way, and that case (the fallback when shrinking, on
   // an instance with a history of its own, ends on a program that does not).

@@ -67,7 +67,7 @@ bool confirm_finding(PropertyFinding* pf, CaseContext& ctx, Clock::time_point de
                      const RunResult& run) {
   const auto limit = std::min(deadline, Clock::now() + std::chrono::seconds(60));
   if (confirm_call_failure(*ctx.recorder, pf, ctx.failure_history, limit)) return true;
-  ctx.history_kinds.insert(finding_kind(pf->finding));
+  ctx.history_kinds.insert(finding_kind_of(pf->finding));
   auto same = [pf](const PropertyFinding& f) {
     return f.finding.clause == pf->finding.clause && f.finding.status == pf->finding.status &&
            depends_on_history(f.finding);
@@ -107,7 +107,7 @@ void start_context(CaseContext& ctx, const PropertySpec& spec, Implementation& s
   ctx.recorder = dynamic_cast<HistoryRecorder*>(&sut);
   for (const auto& p : run->properties)  // history-dependent failures earlier properties found
     for (const auto& f : p.findings)
-      if (depends_on_history(f.finding)) ctx.history_kinds.insert(finding_kind(f.finding));
+      if (depends_on_history(f.finding)) ctx.history_kinds.insert(finding_kind_of(f.finding));
   ctx.deadline = deadline;
   // A baseline knows a clause's wrong answers; a crash, time-out or protocol
   // error in it is still a finding.

@@ -207,7 +207,9 @@ ClauseOutcome clause_from(const Clause& clause, const json& c) {
     for (const auto& line : c.value("counterexample_commands", json::array())) text += line.get<std::string>() + "\n";
     TextError e;
     parse_commands(text, &co.program.commands, &e);
-    co.program.history_kind = c.value("history_kind", std::string());
+    co.program.history_kind = finding_kind_named(c.value("history_kind", std::string()));
+    co.finding->history_kind = co.program.history_kind;
+    co.finding->late_view = !co.program.history_kind && c.value("kind", std::string()) == "hidden-state";
     if (c.contains("capability_check")) {
       const auto& q = c["capability_check"];
       CapabilityRequest r{q.value("capability", std::string()), q.value("variant", 1), std::nullopt};

@@ -5,6 +5,7 @@
 #include <filesystem>
 
 #include "command_text.h"
+#include "confirm_finding.h"  // finding_kind
 #include "finding_cause.h"
 #include "finding_picture.h"
 #include "report.h"
@@ -81,7 +82,8 @@ void add_finding_fields(json& c, const ClauseOutcome& co, const ReportContext& c
   for (const auto& cmd : co.program.commands) lines.push_back(print_command(cmd));
   c["counterexample_commands"] = lines;
   if (co.tolerated_from_start) c["tolerated_from_start"] = true;
-  if (!co.program.history_kind.empty()) c["history_kind"] = co.program.history_kind;
+  c["kind"] = finding_kind(*co.finding);  // read back by vgc merge: the finding's kind is no longer in its message alone
+  if (co.program.history_kind) c["history_kind"] = finding_kind_name(*co.program.history_kind);
   if (!co.program_origin.empty()) c["program_origin"] = co.program_origin;
   // What the implementation showed (report.html's picture is drawn from
   // it; `vgc merge` reads it back): the document or capability request,

@@ -18,7 +18,7 @@ TEST(ProgramText, DirectivesRoundTrip) {
   Program p;
   TextError error;
   ASSERT_TRUE(parse_program(kCommands, &p, &error)) << error.to_string();
-  p.history_kind = "timeout";
+  p.history_kind = FindingKind::Timeout;
   p.mesh = true;
   p.request = CapabilityRequest{"subdivision", 2, std::nullopt};
   const std::string text = print_program(p);
@@ -26,7 +26,8 @@ TEST(ProgramText, DirectivesRoundTrip) {
   Program back;
   ASSERT_TRUE(parse_program(text, &back, &error)) << error.to_string() << "\n" << text;
   EXPECT_EQ(back.commands.size(), 2u);
-  EXPECT_EQ(back.history_kind, "timeout");
+  EXPECT_EQ(back.history_kind, FindingKind::Timeout);
+  EXPECT_NE(text.find("#! history timeout\n"), std::string::npos) << text;
   EXPECT_TRUE(back.mesh);
   ASSERT_TRUE(back.request.has_value());
   EXPECT_EQ(back.request->capability, "subdivision");
@@ -34,7 +35,7 @@ TEST(ProgramText, DirectivesRoundTrip) {
   // A program without the directive is not a mesh (parse resets it).
   ASSERT_TRUE(parse_program(kCommands, &back, &error));
   EXPECT_FALSE(back.mesh);
-  EXPECT_TRUE(back.history_kind.empty());
+  EXPECT_FALSE(back.history_kind.has_value());
   EXPECT_FALSE(back.request.has_value());
 }
 

@@ -14,6 +14,7 @@
 #include <set>
 #include <sstream>
 
+#include "confirm_finding.h"
 #include "capability_test_util.h"
 #include "command_text.h"
 #include "exec_implementation.h"  // shell_quote
@@ -266,6 +267,51 @@ TEST(ReportHostSent, WhatTheHostSentBackIsShownBoundedAndReadBack) {
                   co.finding->host_sent == std::vector<std::string>{"bone_destroy 1", "layer_destroy 3"};
     }
   EXPECT_TRUE(read_back);
+}
+
+// A finding's kind is set where it is made (Finding::late_view,
+// Finding::history_kind), not read from its message: report.json says it
+// (`kind`, `history_kind`) and `vgc merge` reads both back, so a merged
+// run tolerates and groups as the unsharded one did, whatever the message.
+TEST(ReportFindingKind, TheKindIsWrittenAndReadBackNotTakenFromTheMessage) {
+  for (const bool history : {false, true}) {
+    RunResult run = faulty_run();
+    ClauseOutcome* failing = nullptr;
+    for (auto& co : run.clauses)
+      if (co.clause->id == kClause) failing = &co;
+    ASSERT_TRUE(failing && failing->finding);
+    failing->finding->message = "a message that names no kind";
+    if (history) {
+      failing->finding->history_kind = FindingKind::Timeout;
+      failing->program.history_kind = FindingKind::Timeout;
+    } else {
+      failing->finding->late_view = true;
+    }
+    const std::string kind = history ? "timeout" : "hidden-state";
+    EXPECT_EQ(finding_kind(*failing->finding), kind);
+    EXPECT_EQ(depends_on_history(*failing->finding), history);
+    TempDir tmp;
+    const Written w = write(tmp.path() / "r", run, "verse:127.0.0.1:4950", "2026-11-22T04:00:00Z");
+    ASSERT_TRUE(w.ok) << w.error;
+    const auto j = nlohmann::json::parse(read(w.dir / "report.json"));
+    for (const auto& c : j["clauses"])
+      if (c["id"] == kClause) {
+        EXPECT_EQ(c.value("kind", std::string()), kind);
+        EXPECT_EQ(c.contains("history_kind"), history);
+      }
+    MergedRun merged;
+    std::string error;
+    ASSERT_TRUE(merge_runs({w.dir.string()}, &merged, &error)) << error;
+    bool read_back = false;
+    for (const auto& co : merged.run.clauses)
+      if (co.clause->id == kClause && co.finding) {
+        read_back = true;
+        EXPECT_EQ(finding_kind(*co.finding), kind) << "history " << history;
+        EXPECT_EQ(depends_on_history(*co.finding), history);
+        EXPECT_EQ(co.finding->late_view, !history);
+      }
+    EXPECT_TRUE(read_back);
+  }
 }
 
 TEST_F(Report, CounterexamplesParseAndReplayToTheSameClause) {
