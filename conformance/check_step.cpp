@@ -60,6 +60,7 @@ Finding call_failure(std::string_view clause, CallStatus s, const std::string& w
   Finding f;
   f.status = status_of(s);
   f.clause = s == CallStatus::ProtocolError ? "ACCEPT-1" : std::string(clause);
+  f.protocol_error = s == CallStatus::ProtocolError;
   f.message = std::string(call_status_name(s)) + " while " + what + (detail.empty() ? "" : ": " + detail);
   return f;
 }

@@ -152,8 +152,7 @@ Answer HistoryRecorder::apply(const Command& c) {
 
 bool is_call_failure(const Finding& f) {
   if (f.status == FindingStatus::Crash || f.status == FindingStatus::Timeout) return true;
-  return f.status == FindingStatus::Fail && f.clause == "ACCEPT-1" &&
-         f.message.rfind(call_status_name(CallStatus::ProtocolError), 0) == 0;
+  return f.status == FindingStatus::Fail && f.protocol_error;
 }
 
 bool fails_fresh(Implementation& sut, const Finding& f, const Program& program) {

@@ -86,12 +86,15 @@ struct Finding {
   std::string difference;
   // Set where the finding is made, never read back from its message:
   // late_view by the late subscriber's check (program_checker.h
-  // check_late_view: the finding is hidden state); history_kind by
+  // check_late_view: the finding is hidden state); protocol_error by
+  // check_step.h call_failure (an answer outside the adapter contract,
+  // ACCEPT-1); history_kind by
   // confirm_finding.h confirm_call_failure when the failure showed only
   // after what the instance had been sent since it started (the finding is
   // then STABLE-1's or ACCEPT-1's, and this is the kind of failure that
   // history brought about).
   bool late_view = false;
+  bool protocol_error = false;
   std::optional<FindingKind> history_kind;
 };
 

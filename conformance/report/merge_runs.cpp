@@ -209,7 +209,9 @@ ClauseOutcome clause_from(const Clause& clause, const json& c) {
     parse_commands(text, &co.program.commands, &e);
     co.program.history_kind = finding_kind_named(c.value("history_kind", std::string()));
     co.finding->history_kind = co.program.history_kind;
-    co.finding->late_view = !co.program.history_kind && c.value("kind", std::string()) == "hidden-state";
+    const std::optional<FindingKind> kind = finding_kind_named(c.value("kind", std::string()));
+    co.finding->late_view = !co.program.history_kind && kind == FindingKind::HiddenState;
+    co.finding->protocol_error = !co.program.history_kind && kind == FindingKind::ProtocolError;
     if (c.contains("capability_check")) {
       const auto& q = c["capability_check"];
       CapabilityRequest r{q.value("capability", std::string()), q.value("variant", 1), std::nullopt};

@@ -274,7 +274,8 @@ TEST(ReportHostSent, WhatTheHostSentBackIsShownBoundedAndReadBack) {
 // (`kind`, `history_kind`) and `vgc merge` reads both back, so a merged
 // run tolerates and groups as the unsharded one did, whatever the message.
 TEST(ReportFindingKind, TheKindIsWrittenAndReadBackNotTakenFromTheMessage) {
-  for (const bool history : {false, true}) {
+  for (const int variant : {0, 1, 2}) {
+    const bool history = variant == 1;
     RunResult run = faulty_run();
     ClauseOutcome* failing = nullptr;
     for (auto& co : run.clauses)
@@ -284,10 +285,12 @@ TEST(ReportFindingKind, TheKindIsWrittenAndReadBackNotTakenFromTheMessage) {
     if (history) {
       failing->finding->history_kind = FindingKind::Timeout;
       failing->program.history_kind = FindingKind::Timeout;
-    } else {
+    } else if (variant == 0) {
       failing->finding->late_view = true;
+    } else {
+      failing->finding->protocol_error = true;
     }
-    const std::string kind = history ? "timeout" : "hidden-state";
+    const std::string kind = history ? "timeout" : variant == 0 ? "hidden-state" : "protocol-error";
     EXPECT_EQ(finding_kind(*failing->finding), kind);
     EXPECT_EQ(depends_on_history(*failing->finding), history);
     TempDir tmp;
@@ -306,9 +309,10 @@ TEST(ReportFindingKind, TheKindIsWrittenAndReadBackNotTakenFromTheMessage) {
     for (const auto& co : merged.run.clauses)
       if (co.clause->id == kClause && co.finding) {
         read_back = true;
-        EXPECT_EQ(finding_kind(*co.finding), kind) << "history " << history;
+        EXPECT_EQ(finding_kind(*co.finding), kind) << "variant " << variant;
         EXPECT_EQ(depends_on_history(*co.finding), history);
-        EXPECT_EQ(co.finding->late_view, !history);
+        EXPECT_EQ(co.finding->late_view, variant == 0);
+        EXPECT_EQ(co.finding->protocol_error, variant == 2);
       }
     EXPECT_TRUE(read_back);
   }
