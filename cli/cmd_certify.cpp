@@ -359,7 +359,15 @@ int run(const Options& o) {
   install_cancel_handlers();
   std::unique_ptr<Implementation> sut =
       open_impl_or_report("certify", o.impl);
-  if (!sut && !cancel_signal()) return 2;
+  if (!sut && !cancel_signal()) {
+    // Shards run side by side on one machine would start their hosts on
+    // one port: the second finds it in use (said above).
+    if (ro.shard_count > 1 && !o.impl.host_cmd.empty())
+      say(stderr, "vgc certify: with --shard {} and --host-cmd every shard starts its own host on the port of --impl: "
+                  "shards run side by side on one machine each need a port of their own (in --impl and in "
+                  "--host-cmd)\n", o.shard);
+    return 2;
+  }
   if (!sut)  // cancelled while it started: the report says that nothing was judged
     sut = std::make_unique<UnstartedImplementation>(
         o.impl.route.spec,

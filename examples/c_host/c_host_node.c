@@ -23,7 +23,14 @@
  * its elements in maps and has no slots, tags or branch for this; the node
  * has one per tag value (its reuse statistics): a fault that coverage of
  * this node, not of the reference, leads to (docs/fuzzing.md "Coverage of
- * the implementation").
+ * the implementation"). With C_HOST_FAULT_COMBINE_FLUSH, the node's
+ * write-combining buffer of vertex positions (a run of up to five writes in
+ * a row to one vertex) loses the write that finds it full and flushes it:
+ * the sixth write in a row to one vertex is not applied (VERTEX-SET-1). The
+ * reference has no buffer and no run: nothing of its own coverage grows
+ * along the run, while the node has a branch per run length 1..5 (its run
+ * statistics), so guidance by the node's coverage leads there step by step
+ * (docs/fuzzing.md "Does it pay? The C example host").
  */
 #include <math.h>
 #include <stdarg.h>
@@ -45,6 +52,7 @@ enum { VERTEX_STACK = 0, POLYGON_STACK = 1 };
 #define FLT_MAX_BITS 0x7F7FFFFFull
 #define DBL_MAX_BITS 0x7FEFFFFFFFFFFFFFull
 #define MAX_CELLS_PER_STACK (1u << 22) /* 4.9 */
+#define COMBINE_CAPACITY 5 /* writes in a row to one vertex the write-combining buffer holds */
 
 /* ---- small helpers ----------------------------------------------------- */
 
@@ -152,6 +160,17 @@ struct ch_node {
   crease_setting crease_vertex, crease_edge;
   bone* bones; /* ascending id */
   size_t bone_count, bone_capacity;
+  /* The write-combining buffer of vertex positions: a run of writes in a
+   * row to one vertex (combine_slot) is combined, combine_run of them so far
+   * (0: the buffer is empty); combine_at is the command that wrote last
+   * (commands counts the commands applied). Statistics: writes combined at
+   * each run length 1..COMBINE_CAPACITY (a case per length), flushes.
+   * (This example stores every write at once and only counts the runs, as
+   * a host that defers the store to the end of a run would count them.) */
+  uint64_t commands, combine_at;
+  uint32_t combine_slot;
+  unsigned combine_run;
+  uint32_t run1, run2, run3, run4, run5, flushes;
   char* text; /* the last document printed */
   size_t text_len, text_capacity;
 };
@@ -418,6 +437,37 @@ static uint64_t* new_element(ch_node* node, int sn, uint32_t id, const char** re
   return &base->slots[slot * components(base->type)];
 }
 
+/* Combines a write to the position in `slot` with the writes to it just
+ * before it (no other command between) and says whether it is applied. The
+ * buffer combines up to COMBINE_CAPACITY writes; the next write in the run
+ * finds it full, flushes it and starts the next run. With
+ * C_HOST_FAULT_COMBINE_FLUSH the flush loses the write that made it (the
+ * sixth write in a row to one vertex: the seeded fault). */
+static int combine_write(ch_node* node, uint32_t slot) {
+  if (node->combine_at + 1 != node->commands || node->combine_slot != slot) node->combine_run = 0;
+  node->combine_at = node->commands;
+  node->combine_slot = slot;
+  const unsigned run = ++node->combine_run;
+  if (run == 1)
+    node->run1++;
+  else if (run == 2)
+    node->run2 += 2;
+  else if (run == 3)
+    node->run3 += 3;
+  else if (run == 4)
+    node->run4 += 4;
+  else if (run == COMBINE_CAPACITY)
+    node->run5 += COMBINE_CAPACITY;
+  else { /* full: flushed; this write starts the next run */
+    node->combine_run = 0;
+    node->flushes++;
+#ifdef C_HOST_FAULT_COMBINE_FLUSH
+    return 0;
+#endif
+  }
+  return 1;
+}
+
 static const char* vertex_set_xyz(ch_node* node, uint64_t layer_id, uint64_t id, const uint64_t xyz[3]) {
   if (layer_id != 0) return write_slot(node, layer_id, id, VERTEX_XYZ, xyz);
   for (int k = 0; k < 3; ++k)
@@ -430,7 +480,10 @@ static const char* vertex_set_xyz(ch_node* node, uint64_t layer_id, uint64_t id,
   }
   uint64_t* position = element_slot(node, find_layer(node, 0), (uint32_t)id);
   const char* reason = NULL;
-  if (position == NULL) position = new_element(node, VERTEX_STACK, (uint32_t)id, &reason);
+  if (position == NULL)
+    position = new_element(node, VERTEX_STACK, (uint32_t)id, &reason);
+  else if (!combine_write(node, s->slot[find_element(s, (uint32_t)id, NULL)]))
+    return NULL;
   if (reason) return reason;
   memcpy(position, xyz, 3 * sizeof(uint64_t));
   return NULL;
@@ -542,6 +595,7 @@ static const char* crease_set(crease_setting* setting, const ch_command* c) {
 const char* ch_node_apply(ch_node* node, const ch_command* c) {
   const uint64_t* v = c->value;
   uint64_t widened[4];
+  node->commands++;
   switch (c->verb) {
     case CH_LAYER_CREATE: return layer_create(node, c);
     case CH_LAYER_DESTROY: return layer_destroy(node, v[0]);

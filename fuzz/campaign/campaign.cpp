@@ -243,6 +243,10 @@ std::string replay_options(const CampaignOptions& o) {
   return out;
 }
 
+// libFuzzer's exit status when the target stopped at a finding (its default
+// -error_exitcode).
+constexpr int kLibFuzzerFindingExit = 77;
+
 // Plain-mode rounds of a live implementation's campaign (see run_campaign):
 // while libFuzzer stopped at a finding and a second or more of --time
 // is left, it runs again on the same corpus with the next seed. Returns
@@ -255,7 +259,11 @@ ChildRun run_more_rounds(std::vector<std::string> argv, const std::vector<std::s
   using clock = std::chrono::steady_clock;
   for (unsigned round = 1; !rr.killed && rr.exit != 0; ++round) {
     const double left = o.time_s - std::chrono::duration<double>(clock::now() - t0).count();
-    if (left < 1 || p->execs == 0) break;  // no time left, or the round ran nothing (it could not start)
+    // No time left, or the round could not start: it ran nothing and did not
+    // stop at a finding. A round that stopped at a finding before its first
+    // progress line (an input of the corpus's first pass failing: a live
+    // host's failure that depends on its history) did run: go on.
+    if (left < 1 || (p->execs == 0 && rr.exit != kLibFuzzerFindingExit)) break;
     *execs_before += p->execs;
     p->execs = 0;
     for (std::string& a : argv) {
