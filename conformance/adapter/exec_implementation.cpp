@@ -458,7 +458,9 @@ Answer ExecImplementation::start() {
     const std::string version = rest.substr(0, sp);
     if (version == "1") {
       hello_name_ = sp == std::string::npos ? std::string() : bounded_text(std::string_view(rest).substr(sp + 1));
-      return Answer{CallStatus::Ok, true, {}, {}, false};
+      Answer hello;
+      hello.applied = true;
+      return hello;
     }
     fail(CallStatus::ProtocolError, "it speaks exec protocol version " + quote_line(version) +
                                         "; the suite speaks version 1 (answer to ?hello: " + quote_line(line) + ")");

@@ -12,7 +12,7 @@ constexpr std::size_t kPoolMirrorCells = 4096;
 }  // namespace
 
 void VerseNodePool::add(std::uint32_t node_id) {
-  Entry e{VerseNodeMirror(kPoolMirrorCells)};
+  Entry e{VerseNodeMirror(kPoolMirrorCells), false, false, false, false, {}};
   nodes_[node_id] = std::move(e);
 }
 
