@@ -141,19 +141,6 @@ Rule setting_rule(const Node& node, DerivedRule r) {
 
 }  // namespace
 
-std::string line_key(const std::string& line) {
-  const std::string kind = first_word(line);
-  std::size_t words = 2;
-  if (kind == "slot" || kind == "edge_crease") words = 3;
-  if (kind == "crease_vertex" || kind == "crease_edge") words = 1;
-  std::size_t pos = 0;
-  for (std::size_t w = 0; w < words; ++w) {
-    pos = line.find(' ', w == 0 ? 0 : pos + 1);
-    if (pos == std::string::npos) return line;
-  }
-  return line.substr(0, pos);
-}
-
 Blame blame_verdict(const Command& c, Reason expected, const RuleTrace& trace) {
   const std::string cmd = "`" + print_command(c) + "`";
   if (expected != Reason::Ok) {
@@ -382,6 +369,41 @@ const std::vector<std::string_view>& derived_only_clauses() {
     return out;
   }();
   return clauses;
+}
+
+bool slot_at_told_default(const Node& after, const DocumentDifference& d, const std::string& observed) {
+  const auto e = split_words(d.expected_line);
+  if (e.size() < 4 || e[0] != "slot" || d.observed_line.empty() || line_key(d.expected_line) != line_key(d.observed_line))
+    return false;
+  std::uint32_t lid = 0, element = 0;
+  if (!parse_uint(e[1], 16, &lid) || !parse_uint(e[2], 32, &element)) return false;
+  const Layer* layer = after.find_layer(static_cast<std::uint16_t>(lid));
+  if (!layer || lid < 2) return false;
+  const auto id = static_cast<std::uint16_t>(lid);
+  const auto default_line = [id, element](const Layer& l) {  // the line of a slot at `l`'s default
+    std::string line = snapshot_slot_line(id, l.type, element, default_slot(l));
+    if (!line.empty() && line.back() == '\n') line.pop_back();
+    return line;
+  };
+  if (d.expected_line != default_line(*layer)) return false;
+  // The layer line the late subscriber was shown: `layer ID "name" TYPE def_uint def_real subscription`.
+  const std::string head = "layer " + e[1] + " ";
+  for (const std::string& line : split_lines(observed)) {
+    if (line.rfind(head, 0) != 0) continue;
+    std::string name;
+    std::size_t used = 0, error_at = 0;
+    if (!parse_quoted(std::string_view(line).substr(head.size()), &name, &used, &error_at)) return false;
+    const auto w = split_words(line.substr(head.size() + used));
+    if (w.size() != 4) return false;
+    Layer told = *layer;
+    std::uint32_t def_uint = 0;
+    double def_real = 0;
+    if (w[1] != "-" && parse_uint(w[1], 32, &def_uint)) told.def_uint = def_uint;
+    if (w[2] != "-" && parse_f64(w[2], &def_real)) told.def_real = def_real;
+    const std::string shown = default_line(told);
+    return shown == d.observed_line && shown != d.expected_line;
+  }
+  return false;
 }
 
 }  // namespace vgc
