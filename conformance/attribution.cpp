@@ -295,18 +295,28 @@ std::optional<Blame> blame_subscription_dump(const Node& after, const DocumentDi
   };
   const double def = layer->def_real;
   bool differs_in_bits = false;
+  std::string held;  // the model's values that differ from the default in their bits, with both bit patterns
+  const auto hex = [](std::uint64_t v) {
+    static const char* const kDigits = "0123456789ABCDEF";
+    std::string out = "0x";
+    for (int shift = 60; shift >= 0; shift -= 4) out += kDigits[(v >> shift) & 0xF];
+    return out;
+  };
   for (std::size_t i = 3; i < e.size(); ++i) {
     double ev = 0, ov = 0;
     if (!parse_f64(e[i], &ev) || !parse_f64(o[i], &ov)) return std::nullopt;
     if (bits(ov) != bits(def) || !(ev == def)) return std::nullopt;  // shown the default; the model's value equals it
-    differs_in_bits = differs_in_bits || bits(ev) != bits(def);
+    if (bits(ev) == bits(def)) continue;
+    differs_in_bits = true;
+    if (held.empty()) held = format_f64(ev) + " (bits " + hex(bits(ev)) + ")";
   }
   if (!differs_in_bits) return std::nullopt;
   Blame b;
   b.rules = {Rule::Subscribe};
   b.clause = std::string(rule_clause(Rule::Subscribe));
-  b.explanation = "The model holds " + quoted(d.expected_line) + ", which equals the layer's default " +
-                  format_f64(def) + " as a number but not bit for bit; the newcomer was shown the default, so the "
+  b.explanation = "The newcomer was shown " + quoted(d.observed_line) + ": the layer's default " + format_f64(def) +
+                  " (bits " + hex(bits(def)) + ") where the model holds " + held + ", " + quoted(d.expected_line) +
+                  ", equal as numbers and not bit for bit; so the "
                   "host sent it nothing for that slot, as for a slot at the default, comparing by value. Every "
                   "watcher was sent the value the model holds: what a new subscriber is sent of a layer is the "
                   "subscription's. Blamed on " + rule_label(Rule::Subscribe) + ": a subscription to a layer is "

@@ -435,9 +435,13 @@ std::optional<Localized> ProgramChecker::localize_late(const std::vector<Command
   // a number is the subscription's, whichever write made it.
   if (const auto b = blame_subscription_dump(rebuild(static_cast<std::size_t>(l->index) + 1),
                                              DocumentDifference{f.expected_line, f.observed_line, "slot"})) {
-    const auto cut = f.message.find(". The model ");
-    if (cut != std::string::npos) f.message.erase(cut + 1);
-    f.message += " " + b->explanation;
+    // Said as what differs: the state both watchers hold did change (the
+    // late view compares a slot the host left out as the default).
+    const std::string sent_to_watchers =
+        f.host_sent.empty() ? std::string() : " (every session watching the layer was sent `" + f.host_sent.front() + "`)";
+    f.message = std::string(kLateViewPrefix) + ": after `" + print_command(sent[static_cast<std::size_t>(l->index)]) +
+                "`" + sent_to_watchers + ", a session that subscribed to the node and every layer then was sent no "
+                "value for that slot. " + b->explanation;
     f.clause = b->clause;
     f.rules = b->rules;
     f.difference = kDefaultByValue;
