@@ -141,19 +141,6 @@ Rule setting_rule(const Node& node, DerivedRule r) {
 
 }  // namespace
 
-std::string line_key(const std::string& line) {
-  const std::string kind = first_word(line);
-  std::size_t words = 2;
-  if (kind == "slot" || kind == "edge_crease") words = 3;
-  if (kind == "crease_vertex" || kind == "crease_edge") words = 1;
-  std::size_t pos = 0;
-  for (std::size_t w = 0; w < words; ++w) {
-    pos = line.find(' ', w == 0 ? 0 : pos + 1);
-    if (pos == std::string::npos) return line;
-  }
-  return line.substr(0, pos);
-}
-
 Blame blame_verdict(const Command& c, Reason expected, const RuleTrace& trace) {
   const std::string cmd = "`" + print_command(c) + "`";
   if (expected != Reason::Ok) {
@@ -308,18 +295,28 @@ std::optional<Blame> blame_subscription_dump(const Node& after, const DocumentDi
   };
   const double def = layer->def_real;
   bool differs_in_bits = false;
+  std::string held;  // the model's values that differ from the default in their bits, with both bit patterns
+  const auto hex = [](std::uint64_t v) {
+    static const char* const kDigits = "0123456789ABCDEF";
+    std::string out = "0x";
+    for (int shift = 60; shift >= 0; shift -= 4) out += kDigits[(v >> shift) & 0xF];
+    return out;
+  };
   for (std::size_t i = 3; i < e.size(); ++i) {
     double ev = 0, ov = 0;
     if (!parse_f64(e[i], &ev) || !parse_f64(o[i], &ov)) return std::nullopt;
     if (bits(ov) != bits(def) || !(ev == def)) return std::nullopt;  // shown the default; the model's value equals it
-    differs_in_bits = differs_in_bits || bits(ev) != bits(def);
+    if (bits(ev) == bits(def)) continue;
+    differs_in_bits = true;
+    if (held.empty()) held = format_f64(ev) + " (bits " + hex(bits(ev)) + ")";
   }
   if (!differs_in_bits) return std::nullopt;
   Blame b;
   b.rules = {Rule::Subscribe};
   b.clause = std::string(rule_clause(Rule::Subscribe));
-  b.explanation = "The model holds " + quoted(d.expected_line) + ", which equals the layer's default " +
-                  format_f64(def) + " as a number but not bit for bit; the newcomer was shown the default, so the "
+  b.explanation = "The newcomer was shown " + quoted(d.observed_line) + ": the layer's default " + format_f64(def) +
+                  " (bits " + hex(bits(def)) + ") where the model holds " + held + ", " + quoted(d.expected_line) +
+                  ", equal as numbers and not bit for bit; so the "
                   "host sent it nothing for that slot, as for a slot at the default, comparing by value. Every "
                   "watcher was sent the value the model holds: what a new subscriber is sent of a layer is the "
                   "subscription's. Blamed on " + rule_label(Rule::Subscribe) + ": a subscription to a layer is "
@@ -382,6 +379,41 @@ const std::vector<std::string_view>& derived_only_clauses() {
     return out;
   }();
   return clauses;
+}
+
+bool slot_at_told_default(const Node& after, const DocumentDifference& d, const std::string& observed) {
+  const auto e = split_words(d.expected_line);
+  if (e.size() < 4 || e[0] != "slot" || d.observed_line.empty() || line_key(d.expected_line) != line_key(d.observed_line))
+    return false;
+  std::uint32_t lid = 0, element = 0;
+  if (!parse_uint(e[1], 16, &lid) || !parse_uint(e[2], 32, &element)) return false;
+  const Layer* layer = after.find_layer(static_cast<std::uint16_t>(lid));
+  if (!layer || lid < 2) return false;
+  const auto id = static_cast<std::uint16_t>(lid);
+  const auto default_line = [id, element](const Layer& l) {  // the line of a slot at `l`'s default
+    std::string line = snapshot_slot_line(id, l.type, element, default_slot(l));
+    if (!line.empty() && line.back() == '\n') line.pop_back();
+    return line;
+  };
+  if (d.expected_line != default_line(*layer)) return false;
+  // The layer line the late subscriber was shown: `layer ID "name" TYPE def_uint def_real subscription`.
+  const std::string head = "layer " + e[1] + " ";
+  for (const std::string& line : split_lines(observed)) {
+    if (line.rfind(head, 0) != 0) continue;
+    std::string name;
+    std::size_t used = 0, error_at = 0;
+    if (!parse_quoted(std::string_view(line).substr(head.size()), &name, &used, &error_at)) return false;
+    const auto w = split_words(line.substr(head.size() + used));
+    if (w.size() != 4) return false;
+    Layer told = *layer;
+    std::uint32_t def_uint = 0;
+    double def_real = 0;
+    if (w[1] != "-" && parse_uint(w[1], 32, &def_uint)) told.def_uint = def_uint;
+    if (w[2] != "-" && parse_f64(w[2], &def_real)) told.def_real = def_real;
+    const std::string shown = default_line(told);
+    return shown == d.observed_line && shown != d.expected_line;
+  }
+  return false;
 }
 
 }  // namespace vgc

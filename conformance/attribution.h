@@ -111,8 +111,11 @@ std::string difference_shape(const Node& after, const DocumentDifference& d);
 // any other difference `d`.
 std::optional<Blame> blame_subscription_dump(const Node& after, const DocumentDifference& d);
 
-// The identity of a snapshot or derived line: its kind and the ids after
-// it ("slot 3 17", "edge_crease 4 2", "vertex 5", "crease_vertex").
-std::string line_key(const std::string& line);
+// A late subscriber shown, for a slot where the model `after` holds its
+// layer's default, that layer's default as the host told it (the layer
+// line of `observed`, the late view, with other defaults than the
+// model's): a host sends a newcomer no slot at the default, so the slot
+// is the layer line's difference, not one of its own.
+bool slot_at_told_default(const Node& after, const DocumentDifference& d, const std::string& observed);
 
 }  // namespace vgc

@@ -76,12 +76,12 @@ std::optional<Finding> reason_note(const Command& c, Reason expected, const Answ
 }
 
 StepResult check_step(const Node& before, const Command& c, Implementation& sut, Node* after,
-                      bool follow_choices) {
+                      bool follow_choices, const std::set<std::string>* masked) {
   StepResult result;
   *after = before;
   result.expected = after->apply(c, &result.rules);
   const Answer answer = sut.apply(c);
-  return judge_step(before, c, answer, std::move(result), sut, after, follow_choices);
+  return judge_step(before, c, answer, std::move(result), sut, after, follow_choices, masked);
 }
 
 namespace {
@@ -103,10 +103,15 @@ struct Judging {
   Document snap;            // the implementation's snapshot after c, once read
   bool applied = false;     // the implementation's verdict: reported, or read from its state
   std::string observed_answer;
+  const std::set<std::string>* masked = nullptr;  // line keys left out on both sides (check_step.h)
 
   // A route that cannot observe subscriptions (RouteLimits) compares the
-  // snapshot's subscription column as "-" on both sides.
-  std::string comparable(std::string t) const { return limits.subscriptions ? t : without_subscriptions(t); }
+  // snapshot's subscription column as "-" on both sides; masked lines are
+  // left out.
+  std::string comparable(std::string t) const {
+    if (masked) t = without_keys(t, *masked);
+    return limits.subscriptions ? t : without_subscriptions(t);
+  }
 };
 
 // No answer (crash, timeout), or one outside the contract (ACCEPT-1): the
@@ -304,8 +309,9 @@ void attach_host_sent(const Answer& answer, StepResult* result) {
 }  // namespace
 
 StepResult judge_step(const Node& before, const Command& c, const Answer& answer, StepResult result,
-                      Implementation& sut, Node* after, bool follow_choices) {
-  Judging j{before, c, answer, sut, after, follow_choices, std::move(result), print_command(c), {}, {}, false, {}};
+                      Implementation& sut, Node* after, bool follow_choices, const std::set<std::string>* masked) {
+  Judging j{before, c, answer, sut, after, follow_choices, std::move(result), print_command(c), {}, {}, false, {},
+            masked && !masked->empty() ? masked : nullptr};
   decide_step(j);
   attach_host_sent(answer, &j.result);
   return std::move(j.result);

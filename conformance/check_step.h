@@ -17,6 +17,7 @@
 #pragma once
 
 #include <optional>
+#include <set>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -87,8 +88,13 @@ Finding call_failure(std::string_view clause, CallStatus s, const std::string& w
 // not a failure. Only for a caller that starts the next step from *after
 // (otherwise the next step would diverge at another clause); by default a
 // different choice is a failure, as before.
+//
+// masked: line keys (document_diff.h line_key) left out of every snapshot
+// comparison on both sides, the verdict read from the state included: a
+// caller that localizes one difference of several (the late view,
+// program_checker.h) leaves out the lines of the others. nullptr: none.
 StepResult check_step(const Node& before, const Command& c, Implementation& sut, Node* after,
-                      bool follow_choices = false);
+                      bool follow_choices = false, const std::set<std::string>* masked = nullptr);
 
 // The REASON-1 note for a rejection the implementation reported with
 // another reason than the reference's `expected`; nullopt when the reasons
@@ -100,7 +106,8 @@ std::optional<Finding> reason_note(const Command& c, Reason expected, const Answ
 // reference's state after `c` (from `before`), `answer` what the
 // implementation answered to `c`. For a caller that applied `c` itself.
 StepResult judge_step(const Node& before, const Command& c, const Answer& answer, StepResult result,
-                      Implementation& sut, Node* after, bool follow_choices);
+                      Implementation& sut, Node* after, bool follow_choices,
+                      const std::set<std::string>* masked = nullptr);
 
 // Compares the implementation's documents with a fresh node's, with no
 // command involved (used after reset). nullopt when equal; a difference is

@@ -55,7 +55,22 @@ struct View {
   std::vector<std::string> vertex_uint_names, vertex_real_names, corner_uint_names, face_uint_names;
   std::vector<std::uint16_t> bones;
   std::string vertex_crease_layer, edge_crease_layer;  // the crease settings' names ("" for a constant)
+  // Live vertices and polygons with a value other than its layer's default
+  // in a layer of another type than the base layers' (not VERTEX_XYZ:
+  // a new vertex's position is written there anyway), sorted: what a
+  // delete, and the element made again at its id, must not keep
+  // (delete_written).
+  std::vector<std::uint32_t> written_vertices, written_polygons;
+  // VERTEX_REAL and POLYGON_FACE_REAL layers whose default is 0 or -0,
+  // each with whether it is -0 (signed_zero_write).
+  std::vector<std::pair<std::uint16_t, bool>> zero_default_vertex_reals, zero_default_face_reals;
 };
+
+// Whether `s` holds other values than a new slot of `layer` (bit for bit).
+bool off_default(const Layer& layer, const Slot& s) {
+  const Slot d = default_slot(layer);
+  return s.u != d.u || std::memcmp(s.r.data(), d.r.data(), sizeof s.r) != 0;
+}
 
 View view_of(const Node& m) {
   View v;
@@ -96,6 +111,20 @@ View view_of(const Node& m) {
     }
   }
   for (const auto& [id, b] : m.bones()) v.bones.push_back(id);
+  for (const auto& [id, l] : m.layers()) {
+    if (id >= 2 && l.def_real == 0.0 && l.type == LayerType::VertexReal)
+      v.zero_default_vertex_reals.emplace_back(id, std::signbit(l.def_real));
+    if (id >= 2 && l.def_real == 0.0 && l.type == LayerType::PolygonFaceReal)
+      v.zero_default_face_reals.emplace_back(id, std::signbit(l.def_real));
+    if (id < 2 || l.type == LayerType::VertexXyz) continue;
+    auto& written = is_vertex_layer_type(l.type) ? v.written_vertices : v.written_polygons;
+    for (const auto& [element, slot] : l.slots)
+      if (off_default(l, slot)) written.push_back(element);
+  }
+  for (auto* w : {&v.written_vertices, &v.written_polygons}) {
+    std::sort(w->begin(), w->end());
+    w->erase(std::unique(w->begin(), w->end()), w->end());
+  }
   v.vertex_crease_layer = m.vertex_crease().layer;
   v.edge_crease_layer = m.edge_crease().layer;
   return v;
@@ -600,6 +629,37 @@ Gen<Command> write_dead(const View& v) {
   return write_value_of(v, gen::elementOf(ready), true);
 }
 
+// Whether signed_zero_write has a layer and an element to write.
+bool signed_zero_ready(const View& v) {
+  return (!v.zero_default_vertex_reals.empty() && !v.vertices.empty()) ||
+         (!v.zero_default_face_reals.empty() && !v.polygons.empty());
+}
+
+// A write of the zero of the other sign than a layer's default 0 (or -0)
+// to a live vertex or polygon of a VERTEX_REAL or POLYGON_FACE_REAL layer
+// (signed_zero_ready): a value equal to the default as a number and not
+// bit for bit. A host that stores it must keep its sign, and one that
+// tells a new subscriber only the slots off their default must tell it
+// this one (r6 compares with `==` and leaves it out: LAYER-SUBSCRIBE-1,
+// docs/verse_wire.md section 11). Before, it came only as one of the
+// specials of any_real and any_float, to a layer whose default was 0 one
+// time in three.
+Gen<Command> signed_zero_write(const View& v) {
+  return gen::exec([pv = std::make_shared<const View>(v)]() -> Command {
+    const View& v = *pv;
+    const bool vertex =
+        !v.zero_default_vertex_reals.empty() && !v.vertices.empty() &&
+        (v.zero_default_face_reals.empty() || v.polygons.empty() || *uniform(0, 2) == 0);
+    const auto [layer, negative] = *gen::elementOf(vertex ? v.zero_default_vertex_reals : v.zero_default_face_reals);
+    const std::uint32_t id = *gen::elementOf(vertex ? v.vertices : v.polygons);
+    const double zero = negative ? 0.0 : -0.0;  // the other sign than the default's
+    if (*uniform(0, 2) == 0)
+      return vertex ? Command{cmd::VertexSetReal64{layer, id, zero}} : Command{cmd::PolygonSetFaceReal64{layer, id, zero}};
+    const float z32 = static_cast<float>(zero);
+    return vertex ? Command{cmd::VertexSetReal32{layer, id, z32}} : Command{cmd::PolygonSetFaceReal32{layer, id, z32}};
+  });
+}
+
 // A new vertex, at the lowest free id, at a finite position: how a mesh
 // grows (set_vertex mostly moves live vertices and tries the edges).
 Gen<Command> grow_vertex(const View& v) {
@@ -703,12 +763,17 @@ Gen<Command> recreate_dead(const View& v) {
 }
 
 // A delete of a live vertex or polygon that has values in a layer of
-// another type (value_step wrote them), so that recreate_dead follows.
+// another type (value_step wrote them: View::written_vertices, mostly),
+// so that recreate_dead follows.
 Gen<Command> delete_written(const View& v) {
-  const bool vertex_values =
-      !v.vertices.empty() && (!v.vertex_uint_layers.empty() || !v.vertex_real_layers.empty() || !v.vertex_xyz_layers.empty());
   if (v.vertices.empty() && v.polygons.empty()) return set_vertex(v);
-  return gen::exec([vs = v.vertices, ps = v.polygons, vertex_values]() -> Command {
+  const bool written = !v.written_vertices.empty() || !v.written_polygons.empty();
+  const auto& vs = written ? v.written_vertices : v.vertices;
+  const auto& ps = written ? v.written_polygons : v.polygons;
+  const bool vertex_values =
+      !vs.empty() &&
+      (written || !v.vertex_uint_layers.empty() || !v.vertex_real_layers.empty() || !v.vertex_xyz_layers.empty());
+  return gen::exec([vs, ps, vertex_values]() -> Command {
     if (ps.empty() || (vertex_values && *uniform(0, 2) == 0)) return cmd::VertexDelete{*gen::elementOf(vs)};
     return cmd::PolygonDelete{*gen::elementOf(ps)};
   });
@@ -928,15 +993,22 @@ Gen<Command> gen_command(const Node& model, Focus focus) {
       const bool faces = !v.face_u8_layers.empty() || !v.face_u32_layers.empty() || !v.face_real_layers.empty();
       return rc::gen::weightedOneOf<Command>(
           {W{1, L(create_layer)}, W{types == 0 ? 2u : 1u, L(create_value_layer)}, W{1, L(set_vertex)},
-           W{mesh ? 1u : 8u, L(build_polygon)}, W{20, L(value_step)},
+           W{mesh ? 1u : 8u, L(build_polygon)},
+           // (22, not 20: the share the two targeted steps below take)
+           W{22, L(value_step)},
            // a polygon delete once there are face layers, then writes to
            // the deleted (the share of value_step grows to match)
            W{mesh && faces ? 1u : 0u, L(delete_polygon)},
            W{has_gap(v.polygons) || has_gap(v.vertices) ? 5u : 0u, L(write_dead)},
            // a delete of a written element, then its re-creation at the
            // same id (whose slots hold the defaults again)
-           W{types > 0 && (!v.vertices.empty() || !v.polygons.empty()) ? 1u : 0u, L(delete_written)},
-           W{has_gap(v.vertices) || (has_gap(v.polygons) && v.vertices.size() >= 3) ? 4u : 0u, L(recreate_dead)}});
+           W{!v.written_vertices.empty() || !v.written_polygons.empty() ? 2u
+             : types > 0 && (!v.vertices.empty() || !v.polygons.empty()) ? 1u
+                                                                          : 0u,
+             L(delete_written)},
+           W{has_gap(v.vertices) || (has_gap(v.polygons) && v.vertices.size() >= 3) ? 4u : 0u, L(recreate_dead)},
+           // a value equal to its layer's default only as a number
+           W{signed_zero_ready(v) ? 2u : 0u, L(signed_zero_write)}});
     }
     case Focus::Ids:
       return rc::gen::weightedOneOf<Command>({W{3, L(create_layer)}, W{4, L(set_vertex)}, W{3, L(build_polygon)},

@@ -128,6 +128,47 @@ std::string without_subscriptions(const std::string& snapshot) {
   return out;
 }
 
+std::string line_key(const std::string& line) {
+  const std::string kind = first_word(line);
+  std::size_t words = 2;
+  if (kind == "slot" || kind == "edge_crease") words = 3;
+  if (kind == "crease_vertex" || kind == "crease_edge") words = 1;
+  std::size_t pos = 0;
+  for (std::size_t w = 0; w < words; ++w) {
+    pos = line.find(' ', w == 0 ? 0 : pos + 1);
+    if (pos == std::string::npos) return line;
+  }
+  return line.substr(0, pos);
+}
+
+std::string without_keys(const std::string& document, const std::set<std::string>& keys) {
+  if (keys.empty()) return document;
+  std::string out;
+  out.reserve(document.size());
+  for (const std::string& line : split_lines(document)) {
+    if (keys.count(line_key(line)) > 0) continue;
+    out += line;
+    out += '\n';
+  }
+  return out;
+}
+
+std::vector<DocumentDifference> all_differences(const std::string& expected, const std::string& observed,
+                                                std::size_t max) {
+  std::vector<DocumentDifference> out;
+  std::set<std::string> seen;
+  while (out.size() < max) {
+    auto d = diff_documents(without_keys(expected, seen), without_keys(observed, seen));
+    if (!d) break;
+    const std::size_t before = seen.size();
+    if (!d->expected_line.empty()) seen.insert(line_key(d->expected_line));
+    if (!d->observed_line.empty()) seen.insert(line_key(d->observed_line));
+    out.push_back(std::move(*d));
+    if (seen.size() == before) break;  // a line with no key of its own: nothing more to tell apart
+  }
+  return out;
+}
+
 std::string DocumentDifference::describe() const {
   if (observed_line.empty()) return "missing line: expected \"" + expected_line + "\"";
   if (expected_line.empty()) return "unexpected line: \"" + observed_line + "\"";

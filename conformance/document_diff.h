@@ -15,6 +15,7 @@
 #pragma once
 
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -40,6 +41,21 @@ std::optional<DocumentDifference> diff_documents(const std::string& expected, co
 // word) printed as "-": for a route that cannot observe subscriptions
 // (RouteLimits::subscriptions), both sides are compared so.
 std::string without_subscriptions(const std::string& snapshot);
+
+// The identity of a snapshot or derived line: its kind and the ids after
+// it ("slot 3 17", "edge_crease 4 2", "vertex 5", "crease_vertex").
+std::string line_key(const std::string& line);
+
+// `document` without its lines whose line_key is one of `keys`: for a
+// comparison that leaves out lines whose difference is already accounted
+// for (program_checker.h check_late_view), both sides are compared so.
+std::string without_keys(const std::string& document, const std::set<std::string>& keys);
+
+// Every difference of the two documents, in the reference's order, one per
+// line key (diff_documents' first, then the first among the lines of the
+// keys not yet reported, and so on), at most `max`.
+std::vector<DocumentDifference> all_differences(const std::string& expected, const std::string& observed,
+                                                std::size_t max);
 
 // Splits on '\n' (a trailing "\r" is dropped from each line).
 std::vector<std::string> split_lines(const std::string& text);

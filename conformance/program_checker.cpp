@@ -207,10 +207,11 @@ bool ProgramChecker::documents_agree(const Node& model, std::optional<Finding>* 
     *call = call_failure("STABLE-1", snap.status, "reading the snapshot", snap.detail);
     return false;
   }
-  const std::string expected = print_snapshot(model);
+  const std::string expected = without_keys(print_snapshot(model), masked_);
+  const std::string observed = without_keys(snap.text, masked_);
   const auto d = limits.subscriptions
-                     ? diff_documents(expected, snap.text)
-                     : diff_documents(without_subscriptions(expected), without_subscriptions(snap.text));
+                     ? diff_documents(expected, observed)
+                     : diff_documents(without_subscriptions(expected), without_subscriptions(observed));
   if (d) {
     *difference = "snapshot: " + d->describe();
     return false;
@@ -249,7 +250,7 @@ std::optional<Localized> ProgramChecker::bisect(const std::vector<Command>& sent
   if (!send_prefix(hi - 1)) return std::nullopt;
   const Node before = rebuild(hi - 1);
   Node after;
-  StepResult r = check_step(before, sent[hi - 1], sut_, &after, follow_choices_);
+  StepResult r = check_step(before, sent[hi - 1], sut_, &after, follow_choices_, &masked_);
   if (!r.failure) return std::nullopt;
   model_ = std::move(after);
   applied_.resize(hi);
@@ -267,7 +268,7 @@ std::optional<Localized> ProgramChecker::judge_at(const std::vector<Command>& se
   std::string difference;
   if (!documents_agree(before, &call, &difference)) return std::nullopt;
   Node after;
-  StepResult r = check_step(before, sent[index], sut_, &after, follow_choices_);
+  StepResult r = check_step(before, sent[index], sut_, &after, follow_choices_, &masked_);
   if (!r.failure) return std::nullopt;
   model_ = std::move(after);
   applied_.resize(index + 1);
@@ -318,8 +319,9 @@ std::optional<Localized> ProgramChecker::finish(const std::vector<Command>& sent
 
 namespace vgc {
 
-std::optional<Localized> ProgramChecker::check_late_view(const std::vector<Command>& sent,
-                                                         const std::function<bool(const std::string&)>& localize) {
+std::optional<Localized> ProgramChecker::check_late_view(
+    const std::vector<Command>& sent, const std::function<bool(const std::string&)>& localize,
+    const std::function<bool(const std::string&, const Localized&)>& goes_on) {
   late_shape_.clear();
   if (sent.empty() || sent.size() != applied_.size() || !sut_.offers_late_view()) return std::nullopt;
   struct LateView {  // on for this call only, however it returns
@@ -350,6 +352,7 @@ std::optional<Localized> ProgramChecker::check_late_view(const std::vector<Comma
     late_format_ = f;
   }
   const auto format_finding = [&]() -> std::optional<Localized> {
+    late_shape_.clear();
     if (!late_format_ || (localize && !localize("subscription both-formats"))) return std::nullopt;
     late_shape_ = "subscription both-formats";
     late_format_->difference = late_shape_;
@@ -360,27 +363,70 @@ std::optional<Localized> ProgramChecker::check_late_view(const std::vector<Comma
   };
   const RouteLimits limits = sut_.limits();
   const std::string expected = print_snapshot(model_);
-  const auto d = limits.subscriptions ? diff_documents(expected, late.text)
-                                      : diff_documents(without_subscriptions(expected), without_subscriptions(late.text));
-  if (!d) return format_finding();
-  late_shape_ = difference_shape(model_, *d);
-  // A slot the model removed with its element, shown again as it was (a
-  // deleted element's value back on an element created at its id), is
-  // another kind of difference than a value the model never held there,
-  // whichever rule wrote the model's line: a finding of its own.
-  const std::optional<std::size_t> stale = removed_slot_at(d->observed_line);
-  if (stale) late_shape_ += " (" + std::string(kRemovedSlotKept) + ")";
-  if (localize && !localize(late_shape_)) return format_finding();
+  // At most this many differences (one per line key) are told apart: each
+  // one is searched for a removed slot (removed_slot_at), and one of a new
+  // shape costs a localization.
+  constexpr std::size_t kMaxDifferences = 32;
+  const std::vector<DocumentDifference> diffs =
+      limits.subscriptions
+          ? all_differences(expected, late.text, kMaxDifferences)
+          : all_differences(without_subscriptions(expected), without_subscriptions(late.text), kMaxDifferences);
+  // The checker as it is now: localizing a difference moves it to the
+  // prefix that showed it; a difference gone on from puts it back.
+  const Node model = model_;
+  const std::vector<Command> applied = applied_, as_sent = as_sent_, sparse_sent = sent_;
+  const auto keys_of = [](const DocumentDifference& d) {
+    std::set<std::string> keys;
+    for (const std::string* line : {&d.expected_line, &d.observed_line})
+      if (!line->empty()) keys.insert(line_key(*line));
+    return keys;
+  };
+  for (std::size_t k = 0; k < diffs.size(); ++k) {
+    const DocumentDifference& d = diffs[k];
+    // A slot at the layer's default, shown at the default the host told
+    // the newcomer: that layer line's difference (left out while it is
+    // localized), not one of its own.
+    if (slot_at_told_default(model, d, late.text)) continue;
+    // A slot the model removed with its element, shown again as it was (a
+    // deleted element's value back on an element created at its id), is
+    // another kind of difference than a value the model never held there,
+    // whichever rule wrote the model's line: a finding of its own.
+    const std::optional<std::size_t> stale = removed_slot_at(d.observed_line);
+    std::string shape = difference_shape(model, d);
+    if (stale) shape += " (" + std::string(kRemovedSlotKept) + ")";
+    if (localize && !localize(shape)) continue;
+    // This difference alone: the lines of every other one left out.
+    masked_.clear();
+    for (std::size_t o = 0; o < diffs.size(); ++o)
+      if (o != k) masked_.merge(keys_of(diffs[o]));
+    for (const std::string& key : keys_of(d)) masked_.erase(key);
+    std::optional<Localized> l = localize_late(sent, d, stale);
+    masked_.clear();
+    if (!l) continue;
+    late_shape_ = shape;
+    if (!goes_on || !goes_on(shape, *l)) return l;
+    model_ = model;
+    applied_ = applied;
+    as_sent_ = as_sent;
+    sent_ = sparse_sent;
+  }
+  return format_finding();
+}
+
+std::optional<Localized> ProgramChecker::localize_late(const std::vector<Command>& sent, const DocumentDifference& d,
+                                                       std::optional<std::size_t> stale) {
   // Provenance first: the command that last wrote the model's line is
   // where a host that stored something else most likely began to differ.
   // Checked (the view agrees before it and differs after it); otherwise,
   // and for a line the model does not have, bisection.
+  const Node model = model_;
+  const std::string removed_by = stale && *stale < applied_.size() ? print_command(applied_[*stale]) : "";
   std::optional<Localized> l;
-  if (!d->expected_line.empty())
-    if (const auto w = line_written(model_, d->expected_line); w && w->step >= 1 && w->step <= sent.size())
+  if (!d.expected_line.empty())
+    if (const auto w = line_written(model, d.expected_line); w && w->step >= 1 && w->step <= sent.size())
       l = judge_at(sent, w->step - 1);
   if (!l) l = bisect(sent, 0, sent.size());
-  if (!l || !l->step.failure) return format_finding();
+  if (!l || !l->step.failure) return std::nullopt;
   Finding& f = *l->step.failure;
   f.late_view = true;
   f.message = std::string(kLateViewPrefix) +
@@ -391,16 +437,20 @@ std::optional<Localized> ProgramChecker::check_late_view(const std::vector<Comma
   // a number is the subscription's, whichever write made it.
   if (const auto b = blame_subscription_dump(rebuild(static_cast<std::size_t>(l->index) + 1),
                                              DocumentDifference{f.expected_line, f.observed_line, "slot"})) {
-    const auto cut = f.message.find(". The model ");
-    if (cut != std::string::npos) f.message.erase(cut + 1);
-    f.message += " " + b->explanation;
+    // Said as what differs: the state both watchers hold did change (the
+    // late view compares a slot the host left out as the default).
+    const std::string sent_to_watchers =
+        f.host_sent.empty() ? std::string() : " (every session watching the layer was sent `" + f.host_sent.front() + "`)";
+    f.message = std::string(kLateViewPrefix) + ": after `" + print_command(sent[static_cast<std::size_t>(l->index)]) +
+                "`" + sent_to_watchers + ", a session that subscribed to the node and every layer then was sent no "
+                "value for that slot. " + b->explanation;
     f.clause = b->clause;
     f.rules = b->rules;
     f.difference = kDefaultByValue;
   }
   if (stale) {
-    f.message += " The slot shown, `" + d->observed_line + "`, is one the model held until command " +
-                 std::to_string(*stale + 1) + " of the case (`" + print_command(applied_[*stale]) +
+    f.message += " The slot shown, `" + d.observed_line + "`, is one the model held until command " +
+                 std::to_string(*stale + 1) + " of the case (`" + removed_by +
                  "`) removed it: the implementation kept it, and gave it to the element made at its id.";
     f.difference = kRemovedSlotKept;
   }

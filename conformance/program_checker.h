@@ -24,11 +24,13 @@
 
 #include <functional>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
 #include "check_step.h"
 #include "command.h"
+#include "document_diff.h"
 #include "document_digest.h"
 #include "implementation.h"
 #include "node.h"
@@ -93,26 +95,31 @@ class ProgramChecker {
 
   // After the last step, on a route that shows what a party that starts
   // watching now would be sent (Implementation::offers_late_view: the
-  // Verse wire's late subscriber): that view against the model. A
-  // difference is localized by bisection with the late view on (a prefix
-  // of the program from a fresh node, the view read after it; first the
-  // command that last wrote the model's differing line, checked), and the
-  // first command whose prefix differs is judged by check_step on the late
-  // view, so it is blamed by provenance like any other; its message starts
-  // with kLateViewPrefix. `localize` (may be empty: always) is asked with
-  // the difference's shape (attribution.h difference_shape) first: false
-  // spares the bisection (a shape already localized to a tolerated clause)
-  // and nothing is returned. nullopt when the view agrees, the route has
-  // none, or the view could not be read (that is no finding: the route's
-  // own session, not the implementation).
-  std::optional<Localized> check_late_view(const std::vector<Command>& sent,
-                                           const std::function<bool(const std::string& shape)>& localize = {});
+  // Verse wire's late subscriber): that view against the model. Every
+  // difference is considered, one per line key in the reference's order
+  // (document_diff.h all_differences), each with its shape (attribution.h
+  // difference_shape, and kRemovedSlotKept for a slot the model removed
+  // with its element). `localize` (may be empty: always) is asked each
+  // shape first: false spares that difference (a shape already localized
+  // to a tolerated clause). A difference that is localized is localized
+  // alone, the lines of every other difference left out on both sides
+  // (check_step.h masked): by provenance (a prefix of the program from a
+  // fresh node, the view read after it; first the command that last wrote
+  // the model's differing line, checked), else by bisection, and the first
+  // command whose prefix differs is judged by check_step on the late view,
+  // so it is blamed by provenance like any other; its message starts with
+  // kLateViewPrefix. `goes_on` (may be empty: never) is given each
+  // localized difference with its shape: true means the caller tolerates it
+  // (or only collects it), and the next difference is considered with the
+  // checker as before; false returns it. nullopt when no difference is
+  // returned: the view agrees, the route has none, the view could not be
+  // read (that is no finding: the route's own session, not the
+  // implementation), or every difference was spared or gone on from.
+  std::optional<Localized> check_late_view(
+      const std::vector<Command>& sent, const std::function<bool(const std::string& shape)>& localize = {},
+      const std::function<bool(const std::string& shape, const Localized& l)>& goes_on = {});
   // The shape of the late view's last difference (empty: none seen).
   const std::string& late_shape() const { return late_shape_; }
-  // The last check_late_view's finding on a subscription kept in two
-  // formats (Implementation::late_view_wrong_format), whether or not it is
-  // the one returned: a replay shows both (ReplayResult::also_failed).
-  const std::optional<Finding>& late_format_finding() const { return late_format_; }
 
  private:
   Node rebuild(std::size_t commands) const;  // a fresh node with the first `commands` of applied_
@@ -147,6 +154,10 @@ class ProgramChecker {
   // it, sent to a fresh implementation, agrees with the model; nullopt
   // when the prefix does not agree or the command shows no difference.
   std::optional<Localized> judge_at(const std::vector<Command>& sent, std::size_t index);
+  // One difference `d` of the late view localized alone (check_late_view);
+  // `stale` says where the model removed its slot (removed_slot_at).
+  std::optional<Localized> localize_late(const std::vector<Command>& sent, const DocumentDifference& d,
+                                         std::optional<std::size_t> stale);
 
   Implementation& sut_;
   bool follow_choices_;
@@ -163,6 +174,9 @@ class ProgramChecker {
   std::vector<Command> as_sent_;    // full steps: the commands judged, as sent (judge_alone replays them)
   std::string late_shape_;
   std::optional<Finding> late_format_;
+  // Line keys every comparison leaves out on both sides while the late
+  // view localizes one of its differences (check_late_view); else empty.
+  std::set<std::string> masked_;
 };
 
 // How a finding of the late view (ProgramChecker::check_late_view) begins.

@@ -505,12 +505,12 @@ bool compare_whole_documents(CaseContext& c) {
 }
 
 // What a party that starts watching the node now is sent (the Verse wire's
-// late subscriber), against the model; a difference is localized and
+// late subscriber), against the model; every difference is localized and
 // blamed (program_checker.h check_late_view). The case's steps were all
 // judged, so a difference in a clause tolerated at that kind is noted, not
-// set aside; a shape of difference already localized to such a clause is
-// not localized again (each costs a bisection: reset and replay). False
-// ends the case.
+// set aside, and the next difference is looked at; a shape of difference
+// already localized to such a clause is not localized again (each costs a
+// bisection: reset and replay). False ends the case.
 bool check_late_view(CaseContext& c) {
   if (!case_still_judged(c)) return false;
   const auto localize = [&c](const std::string& shape) {
@@ -519,12 +519,20 @@ bool check_late_view(CaseContext& c) {
     const auto it = c.late_shapes.find(shape);
     return it == c.late_shapes.end() || !is_tolerated(c, it->second);
   };
-  auto l = c.checker->check_late_view(c.trace, localize);
+  const auto goes_on = [&c](const std::string& shape, const Localized& l) {
+    if (past_deadline()) return false;
+    const Finding& f = *l.step.failure;
+    if (!c.shrinking) c.late_shapes[shape] = f;
+    if (!is_tolerated(c, f)) return false;
+    note_tolerated(f);
+    return true;
+  };
+  auto l = c.checker->check_late_view(c.trace, localize, goes_on);
   if (!l || past_deadline()) return true;
   const Finding f = *l->step.failure;
   const std::string shape = c.checker->late_shape();
   if (!c.shrinking) c.late_shapes[shape] = f;
-  if (is_tolerated(c, f)) {
+  if (is_tolerated(c, f)) {  // the subscription kept in two formats (goes_on is not asked)
     note_tolerated(f);
     return true;
   }

@@ -2,6 +2,7 @@
 #include "replay_program.h"
 
 #include <algorithm>
+#include <set>
 
 #include "capability.h"
 #include "capability_run.h"
@@ -53,11 +54,25 @@ ReplayResult replay_program(const Program& program, Implementation& sut) {
     r.failed_at = l->index;
     return r;
   }
-  if (auto l = checker.check_late_view(program.commands)) {  // what a late subscriber is sent
-    r.failure = l->step.failure;
-    r.failed_at = l->index;
-    if (const auto& also = checker.late_format_finding(); also && also->clause != r.failure->clause)
-      r.also_failed.push_back(*also);
+  // What a late subscriber is sent: every difference of a shape of its
+  // own, in the reference's order (the first is the failure, the others
+  // also failed), then the subscription kept in two formats, so that a
+  // replay shows each finding certify showed, whichever clause it
+  // tolerated first.
+  std::set<std::string> shapes;
+  std::vector<Localized> late;
+  const auto one_per_shape = [&shapes](const std::string& shape) { return shapes.insert(shape).second; };
+  const auto collect = [&late](const std::string&, const Localized& l) {
+    late.push_back(l);
+    return true;
+  };
+  if (auto l = checker.check_late_view(program.commands, one_per_shape, collect)) late.push_back(std::move(*l));
+  if (!late.empty()) {
+    r.failure = late.front().step.failure;
+    r.failed_at = late.front().index;
+    for (std::size_t i = 1; i < late.size(); ++i)
+      if (late[i].step.failure->clause != r.failure->clause || late[i].step.failure->difference != r.failure->difference)
+        r.also_failed.push_back(*late[i].step.failure);
     return r;
   }
   const Node& model = checker.model();

@@ -28,6 +28,7 @@
 
 #include "confirm_finding.h"
 #include "node.h"
+#include "program_checker.h"
 #include "reference_wrapper.h"
 #include "report.h"
 #include "runner.h"
@@ -39,6 +40,10 @@ namespace {
 
 class HiddenSlotsHost final : public test::ReferenceWrapper {
  public:
+  // skew_defaults: the late subscriber is also told every layer's
+  // defaults one more than they are (HiddenDifferences.
+  // HiddenDifferencesBehindAnotherClausesAreFound).
+  explicit HiddenSlotsHost(bool skew_defaults = false) : skew_defaults_(skew_defaults) {}
   std::string name() const override { return "test:hidden-slots"; }
   Answer reset() override {
     late_ = Node();
@@ -70,12 +75,22 @@ class HiddenSlotsHost final : public test::ReferenceWrapper {
     return a;
   }
   Document snapshot() override {
-    return late_view_ ? Document{CallStatus::Ok, print_snapshot(late_), ""} : ReferenceWrapper::snapshot();
+    if (!late_view_) return ReferenceWrapper::snapshot();
+    Node sent = late_;
+    if (skew_defaults_)
+      for (const auto& [lid, layer] : sent.layers()) {
+        if (lid < 2) continue;
+        Layer& told = const_cast<Layer&>(layer);  // test-only: reach into the copy's storage
+        told.def_uint += 1;
+        told.def_real += 1;
+      }
+    return Document{CallStatus::Ok, print_snapshot(sent), ""};
   }
   bool offers_late_view() override { return true; }
   void use_late_view(bool on) override { late_view_ = on; }
 
  private:
+  bool skew_defaults_;
   Node late_;
   std::map<std::tuple<std::uint16_t, LayerType, std::uint32_t>, Slot> kept_;
   bool late_view_ = false;
@@ -153,6 +168,45 @@ TEST(HiddenDifferences, TwoHiddenBehavioursOfOneClauseAreEachAFinding) {
   }
 }
 
+// Issue 27: r6's late subscriber is told a VERTEX_XYZ layer's default as
+// 0 (LAYER-CREATE-1), and a layer line comes before every slot line, so
+// once that was found every case whose late view showed it showed nothing
+// else: at seeds 1 and 5 LAYER-DEFAULT-1's two hidden behaviours were
+// never found. Here every layer's defaults are told wrong, so every case
+// with a layer has such a line first. Every difference of the late view
+// is looked at (program_checker.h check_late_view), so both behaviours
+// are found behind it. Seen to fail with the late view cut to its first
+// difference (the code before): the kept slot was found at none of seeds
+// 1 to 3, the copied position not at seed 2.
+TEST(HiddenDifferences, HiddenDifferencesBehindAnotherClausesAreFound) {
+  for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+    HiddenSlotsHost host(true);
+    RunOptions o;
+    o.seed = seed;
+    o.cases = 200;
+    o.max_size = 50;
+    o.clause_glob = "LAYER-DEFAULT-1,LAYER-WRITE-1,LAYER-CREATE-1";
+    o.budget_seconds = 3600;
+    const RunResult run = run_certification(host, o);
+    bool copied = false, kept = false, create = false;
+    std::string seen;
+    for (const auto& co : run.clauses)
+      if (co.finding) seen += std::string(co.clause->id) + ": " + co.finding->message.substr(0, 300) + " | ";
+    for (const ClauseOutcome* co : findings_of(run, "LAYER-CREATE-1"))
+      create = create || finding_kind(*co->finding) == "hidden-state";
+    for (const ClauseOutcome* co : findings_of(run, "LAYER-DEFAULT-1")) {
+      const Finding& f = *co->finding;
+      EXPECT_EQ(finding_kind(f), "hidden-state") << f.message;
+      const bool from_deleted = f.difference == kRemovedSlotKept;
+      (from_deleted ? kept : copied) = true;
+    }
+    std::printf("seed %llu: %s\n", static_cast<unsigned long long>(seed), seen.c_str());
+    EXPECT_TRUE(create) << "seed " << seed << ": " << seen;
+    EXPECT_TRUE(copied) << "seed " << seed << ": " << seen;
+    EXPECT_TRUE(kept) << "seed " << seed << ": " << seen;
+  }
+}
+
 }  // namespace
 }  // namespace vgc
 
@@ -226,8 +280,14 @@ TEST(HiddenDifferences, ASignedZeroLeftOutOfASubscriptionIsTheSubscriptionsNotTh
       if (!co.finding) continue;
       seen += std::string(co.clause->id) + ": " + co.finding->message.substr(0, 600) + " | ";
       if (co.clause->id == "LAYER-SUBSCRIBE-1")
+        // The message says what differs, bit for bit (issue 27: it said
+        // "the state is unchanged" on the wire, where the late view shows
+        // the default before and after the write). Seen to fail before:
+        // no bit patterns in it.
         subscription = co.finding->message.find("comparing by value") != std::string::npos &&
-                       co.finding->message.find("late subscriber: ") == 0;
+                       co.finding->message.find("late subscriber: ") == 0 &&
+                       co.finding->message.find(" (bits 0x8000000000000000)") != std::string::npos &&
+                       co.finding->message.find(" (bits 0x0000000000000000)") != std::string::npos;
       else
         ADD_FAILURE() << "seed " << seed << ": " << co.clause->id << " " << co.finding->message;
     }
