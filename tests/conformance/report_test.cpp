@@ -219,6 +219,18 @@ TEST_F(Report, SummaryStartsWithTheVerdictAndShowsTheReplay) {
   EXPECT_NE(s.find("Replay: `" + replay + "`"), std::string::npos) << replay;
 }
 
+// kClause's finding as `vgc merge` reads the run in `dir` back; nullopt
+// (and a failure) when the merge fails or the clause has no finding.
+std::optional<Finding> merged_finding(const fs::path& dir) {
+  MergedRun merged;
+  std::string error;
+  EXPECT_TRUE(merge_runs({dir.string()}, &merged, &error)) << error;
+  for (const auto& co : merged.run.clauses)
+    if (co.clause->id == kClause && co.finding) return co.finding;
+  ADD_FAILURE() << "no " << kClause << " finding read back from " << dir;
+  return std::nullopt;
+}
+
 // Issue 29 item 7: what a host sent back after the last command (the
 // Verse wire, Finding::host_sent) is in summary.md, report.html and
 // report.json, bounded, and `vgc merge` reads it back; a finding from a
@@ -257,16 +269,11 @@ TEST(ReportHostSent, WhatTheHostSentBackIsShownBoundedAndReadBack) {
       EXPECT_EQ(c["host_sent_count"], 20);
     }
   EXPECT_TRUE(in_json);
-  MergedRun merged;
-  std::string error;
-  ASSERT_TRUE(merge_runs({w.dir.string()}, &merged, &error)) << error;
-  bool read_back = false;
-  for (const auto& co : merged.run.clauses)
-    if (co.clause->id == kClause && co.finding) {
-      read_back = co.finding->host_sent_seen && co.finding->host_sent_count == 20 &&
-                  co.finding->host_sent == std::vector<std::string>{"bone_destroy 1", "layer_destroy 3"};
-    }
-  EXPECT_TRUE(read_back);
+  const std::optional<Finding> back = merged_finding(w.dir);
+  ASSERT_TRUE(back);
+  EXPECT_TRUE(back->host_sent_seen);
+  EXPECT_EQ(back->host_sent_count, 20u);
+  EXPECT_EQ(back->host_sent, (std::vector<std::string>{"bone_destroy 1", "layer_destroy 3"}));
 }
 
 // A finding's kind is set where it is made (Finding::late_view,
@@ -302,19 +309,12 @@ TEST(ReportFindingKind, TheKindIsWrittenAndReadBackNotTakenFromTheMessage) {
         EXPECT_EQ(c.value("kind", std::string()), kind);
         EXPECT_EQ(c.contains("history_kind"), history);
       }
-    MergedRun merged;
-    std::string error;
-    ASSERT_TRUE(merge_runs({w.dir.string()}, &merged, &error)) << error;
-    bool read_back = false;
-    for (const auto& co : merged.run.clauses)
-      if (co.clause->id == kClause && co.finding) {
-        read_back = true;
-        EXPECT_EQ(finding_kind(*co.finding), kind) << "variant " << variant;
-        EXPECT_EQ(depends_on_history(*co.finding), history);
-        EXPECT_EQ(co.finding->late_view, variant == 0);
-        EXPECT_EQ(co.finding->protocol_error, variant == 2);
-      }
-    EXPECT_TRUE(read_back);
+    const std::optional<Finding> back = merged_finding(w.dir);
+    ASSERT_TRUE(back);
+    EXPECT_EQ(finding_kind(*back), kind) << "variant " << variant;
+    EXPECT_EQ(depends_on_history(*back), history);
+    EXPECT_EQ(back->late_view, variant == 0);
+    EXPECT_EQ(back->protocol_error, variant == 2);
   }
 }
 
