@@ -9,6 +9,7 @@
 #include <cstdlib>
 
 #include "confirm_finding.h"
+#include "default_run.h"
 #include "faulty_implementation.h"
 #include "implementation.h"
 #include "runner.h"
@@ -22,19 +23,6 @@ RunOptions kill_options() {
   o.seed = 1;
   o.cases = 100;
   o.budget_seconds = 3600;  // load must not cut a test short; CTest's TIMEOUT guards a hang
-  return o;
-}
-
-// A default `vgc certify` (200 cases, size 50) at `seed` of the clauses
-// `glob` selects, with no budget that load could cut short (CTest's
-// TIMEOUT guards a hang).
-RunOptions default_run(std::uint64_t seed, const std::string& glob = "*") {
-  RunOptions o;
-  o.seed = seed;
-  o.cases = 200;
-  o.max_size = 50;
-  o.clause_glob = glob;
-  o.budget_seconds = 3600;
   return o;
 }
 

@@ -27,6 +27,7 @@
 #include <tuple>
 
 #include "confirm_finding.h"
+#include "default_run.h"
 #include "node.h"
 #include "program_checker.h"
 #include "reference_wrapper.h"
@@ -114,13 +115,8 @@ std::vector<const ClauseOutcome*> findings_of(const RunResult& run, std::string_
 TEST(HiddenDifferences, TwoHiddenBehavioursOfOneClauseAreEachAFinding) {
   for (std::uint64_t seed = 1; seed <= 3; ++seed) {
     HiddenSlotsHost host;
-    RunOptions o;
-    o.seed = seed;
-    o.cases = 200;
-    o.max_size = 50;
-    o.clause_glob = "LAYER-DEFAULT-1,LAYER-WRITE-1";  // layers.stateful and values.stateful, which re-creates
-    o.budget_seconds = 3600;
-    const RunResult run = run_certification(host, o);
+    // layers.stateful and values.stateful, which re-creates
+    const RunResult run = run_certification(host, default_run(seed, "LAYER-DEFAULT-1,LAYER-WRITE-1"));
     bool copied = false, kept = false;
     std::string seen;
     for (const ClauseOutcome* co : findings_of(run, "LAYER-DEFAULT-1")) {
@@ -181,13 +177,7 @@ TEST(HiddenDifferences, TwoHiddenBehavioursOfOneClauseAreEachAFinding) {
 TEST(HiddenDifferences, HiddenDifferencesBehindAnotherClausesAreFound) {
   for (std::uint64_t seed = 1; seed <= 3; ++seed) {
     HiddenSlotsHost host(true);
-    RunOptions o;
-    o.seed = seed;
-    o.cases = 200;
-    o.max_size = 50;
-    o.clause_glob = "LAYER-DEFAULT-1,LAYER-WRITE-1,LAYER-CREATE-1";
-    o.budget_seconds = 3600;
-    const RunResult run = run_certification(host, o);
+    const RunResult run = run_certification(host, default_run(seed, "LAYER-DEFAULT-1,LAYER-WRITE-1,LAYER-CREATE-1"));
     bool copied = false, kept = false, create = false;
     std::string seen;
     for (const auto& co : run.clauses)
@@ -267,13 +257,7 @@ class DefaultByValueHost final : public test::ReferenceWrapper {
 TEST(HiddenDifferences, ASignedZeroLeftOutOfASubscriptionIsTheSubscriptionsNotTheWrites) {
   for (std::uint64_t seed = 1; seed <= 3; ++seed) {
     DefaultByValueHost host;
-    RunOptions o;
-    o.seed = seed;
-    o.cases = 200;
-    o.max_size = 50;
-    o.clause_glob = "REAL-*,LAYER-SUBSCRIBE-1";
-    o.budget_seconds = 3600;
-    const RunResult run = run_certification(host, o);
+    const RunResult run = run_certification(host, default_run(seed, "REAL-*,LAYER-SUBSCRIBE-1"));
     std::string seen;
     bool subscription = false;
     for (const auto& co : run.clauses) {
