@@ -43,6 +43,7 @@
 #include "runner.h"
 #include "verdict.h"
 #include "verse_implementation.h"
+#include "default_run.h"
 
 namespace vgc {
 namespace {
@@ -116,14 +117,7 @@ std::unique_ptr<Implementation> open_verse(const ServedHost& host, double timeou
   return sut;
 }
 
-RunOptions options(int cases) {
-  RunOptions o;
-  o.seed = 1;
-  o.cases = cases;
-  o.max_size = 50;
-  o.budget_seconds = 3600;  // load must not cut a test short; CTest's TIMEOUT guards a hang
-  return o;
-}
+RunOptions options(int cases) { return unhurried_run(1, cases, 50); }
 
 // The wire cannot tell a command from its alias (docs/spec_facts.md
 // section 4): what the host receives for `c` decodes as wire_canonical(c).

@@ -23,6 +23,7 @@
 #include "report.h"
 #include "runner.h"
 #include "verdict.h"
+#include "default_run.h"
 
 namespace vgc {
 namespace {
@@ -34,13 +35,8 @@ const std::vector<std::string> kAll = {"manifold", "subdivision", "normals", "lo
 const std::vector<const char*> kClauses = {"MESH-CLASSIFY-1", "SUBD-CATMARK-1", "NORMALS-SPLIT-1", "LOOP-TRIANGLE-1",
                                            "EDIT-HIERARCHY-1"};
 
-RunOptions capability_options() {
-  RunOptions o;
-  o.seed = 7;
-  o.cases = 60;  // 15 cases per capability property
-  o.budget_seconds = 3600;  // load must not cut a test short; CTest's TIMEOUT guards a hang
-  o.clause_glob = "MESH-CLASSIFY-1,SUBD-CATMARK-1,NORMALS-SPLIT-1,LOOP-TRIANGLE-1,EDIT-HIERARCHY-1";
-  return o;
+RunOptions capability_options() {  // 15 cases per capability property
+  return unhurried_run(7, 60, 40, "MESH-CLASSIFY-1,SUBD-CATMARK-1,NORMALS-SPLIT-1,LOOP-TRIANGLE-1,EDIT-HIERARCHY-1");
 }
 
 const ClauseOutcome* clause(const RunResult& run, std::string_view id) {

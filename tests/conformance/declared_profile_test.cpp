@@ -23,6 +23,7 @@
 #include "route_limit_clauses.h"
 #include "runner.h"
 #include "verdict.h"
+#include "default_run.h"
 
 namespace vgc {
 namespace {
@@ -121,14 +122,7 @@ std::unique_ptr<Implementation> open_node(const std::string& words) {
   return impl;
 }
 
-RunOptions bone_options() {
-  RunOptions o;
-  o.seed = 1;
-  o.cases = 30;
-  o.clause_glob = "BONE-*";
-  o.budget_seconds = 3600;  // load must not cut a test short; CTest's TIMEOUT guards a hang
-  return o;
-}
+RunOptions bone_options() { return unhurried_run(1, 30, 40, "BONE-*"); }
 
 const ClauseOutcome* clause_in(const RunResult& run, std::string_view id) {
   for (const auto& co : run.clauses)

@@ -21,6 +21,7 @@
 #include "runner.h"
 #include "verdict.h"
 #include "snapshot.h"
+#include "default_run.h"
 
 namespace vgc {
 namespace {
@@ -135,14 +136,7 @@ TEST(DoneAnswers, AChangeOnACommandTheReferenceRejectsIsTheRejectionClause) {
       << r.failure->message;
 }
 
-RunOptions options() {
-  RunOptions o;
-  o.seed = 3;
-  o.cases = 60;
-  o.max_size = 40;
-  o.budget_seconds = 3600;  // load must not cut a test short; CTest's TIMEOUT guards a hang
-  return o;
-}
+RunOptions options() { return unhurried_run(3, 60, 40); }
 
 TEST(DoneAnswers, TheReferenceBehindDoneAnswersCertifiesWithNoClauseFailed) {
   DoneAnswers sut;

@@ -18,13 +18,7 @@
 namespace vgc {
 namespace {
 
-RunOptions kill_options() {
-  RunOptions o;
-  o.seed = 1;
-  o.cases = 100;
-  o.budget_seconds = 3600;  // load must not cut a test short; CTest's TIMEOUT guards a hang
-  return o;
-}
+RunOptions kill_options() { return unhurried_run(1, 100); }
 
 // A run's findings as "CLAUSE(status) ..." (for the message), and whether
 // one of `clauses` is among them as a fail.
@@ -261,11 +255,8 @@ TEST(FaultKill, TheScalePropertyFailsANodeThatDropsIdsPastItsStorageBoundAtEvery
   ASSERT_GT(fault, 0);
   for (std::uint64_t seed = 1; seed <= 3; ++seed) {
     faults::FaultyImplementation impl(fault);
-    RunOptions o;
-    o.seed = seed;
-    o.budget_seconds = 3600;  // load must not cut a test short; CTest's TIMEOUT guards a hang
-    o.clause_glob = "VERTEX-SET-1";  // the properties that declare it, storage.scale among them
-    const RunResult run = run_certification(impl, o);
+    // VERTEX-SET-1: the properties that declare it, storage.scale among them
+    const RunResult run = run_certification(impl, unhurried_run(seed, 100, 40, "VERTEX-SET-1"));
     bool scale_ran = false;
     for (const auto& p : run.properties) {
       if (p.id != "storage.scale") continue;

@@ -17,6 +17,7 @@
 #include "rule_clauses.h"
 #include "runner.h"
 #include "verdict.h"
+#include "default_run.h"
 
 namespace vgc {
 namespace {
@@ -27,12 +28,7 @@ namespace {
 // finding in any other clause is still reported by the run (RunResult
 // lists every clause with a finding) and fails the test.
 RunOptions matrix_options(std::uint64_t seed, const std::string& glob) {
-  RunOptions o;
-  o.seed = seed;
-  o.cases = 100;
-  o.budget_seconds = 3600;  // load must not cut a test short; CTest's TIMEOUT guards a hang
-  o.clause_glob = glob;
-  return o;
+  return unhurried_run(seed, 100, 40, glob);
 }
 
 struct SeedOutcome {

@@ -24,6 +24,7 @@
 #include "gen/magnitude.h"
 #include "reference_implementation.h"
 #include "runner.h"
+#include "default_run.h"
 
 namespace vgc {
 namespace {
@@ -189,14 +190,7 @@ class CountingReference final : public Implementation {
 };
 
 // `vgc certify` with no options: seed 1, 200 cases, size 50, 300 s.
-RunOptions default_certify() {
-  RunOptions o;
-  o.seed = 1;
-  o.cases = 200;
-  o.max_size = 50;
-  o.budget_seconds = 3600;  // load must not cut a test short; CTest's TIMEOUT guards a hang
-  return o;
-}
+RunOptions default_certify() { return default_run(1); }
 
 const Reach& default_run_reach() {
   static const Reach reach = [] {

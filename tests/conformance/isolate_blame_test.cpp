@@ -21,6 +21,7 @@
 #include "isolate_blame.h"
 #include "reference_wrapper.h"
 #include "runner.h"
+#include "default_run.h"
 #include "../reference/test_util.h"  // test::C, one command from its text
 
 namespace vgc {
@@ -87,10 +88,7 @@ const ClauseOutcome* outcome(const RunResult& run, std::string_view id) {
 }
 
 RunResult certify(Implementation& impl, std::uint64_t seed) {
-  RunOptions o;
-  o.seed = seed;
-  o.budget_seconds = 3600;  // load must not cut a test short; CTest's TIMEOUT guards a hang
-  return run_certification(impl, o);
+  return run_certification(impl, unhurried_run(seed, 100));
 }
 
 // A 16-byte name with an unknown type byte, applied: both guards refuse it

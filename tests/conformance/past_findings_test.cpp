@@ -26,6 +26,7 @@
 #include "reference_wrapper.h"
 #include "runner.h"
 #include "verdict.h"
+#include "default_run.h"
 
 namespace vgc {
 namespace {
@@ -50,14 +51,7 @@ std::vector<int> faults_of(const std::vector<std::string>& names) {
   return out;
 }
 
-RunOptions defaults(std::uint64_t seed = 1) {
-  RunOptions o;  // as `vgc certify` runs by default
-  o.seed = seed;
-  o.cases = 200;
-  o.max_size = 50;
-  o.budget_seconds = 3600;  // load must not cut a test short; CTest's TIMEOUT guards a hang
-  return o;
-}
+RunOptions defaults(std::uint64_t seed = 1) { return default_run(seed); }
 
 const ClauseOutcome* clause_in(const RunResult& run, std::string_view id) {
   for (const auto& co : run.clauses)

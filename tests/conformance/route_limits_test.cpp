@@ -22,6 +22,7 @@
 #include "report.h"
 #include "runner.h"
 #include "verdict.h"
+#include "default_run.h"
 
 namespace vgc {
 namespace {
@@ -74,14 +75,7 @@ class WireLike : public test::ReferenceWrapper {
   bool drop_;
 };
 
-RunOptions options() {
-  RunOptions o;
-  o.seed = 5;
-  o.cases = 60;
-  o.max_size = 40;
-  o.budget_seconds = 3600;  // load must not cut a test short; CTest's TIMEOUT guards a hang
-  return o;
-}
+RunOptions options() { return unhurried_run(5, 60, 40); }
 
 const ClauseOutcome* clause_in(const RunResult& run, std::string_view id) {
   for (const auto& co : run.clauses)

@@ -15,18 +15,12 @@
 #include "reference_implementation.h"
 #include "runner.h"
 #include "verdict.h"
+#include "default_run.h"
 
 namespace vgc {
 namespace {
 
-RunOptions small(std::uint64_t seed = 11) {
-  RunOptions o;
-  o.seed = seed;
-  o.cases = 100;
-  o.max_size = 40;
-  o.budget_seconds = 3600;  // load must not cut a test short; CTest's TIMEOUT guards a hang
-  return o;
-}
+RunOptions small(std::uint64_t seed = 11) { return unhurried_run(seed, 100, 40); }
 
 int fault(std::string_view name) {
   const int f = faults::find_fault(name);
