@@ -64,6 +64,8 @@ struct View {
   // VERTEX_REAL and POLYGON_FACE_REAL layers whose default is 0 or -0,
   // each with whether it is -0 (signed_zero_write).
   std::vector<std::pair<std::uint16_t, bool>> zero_default_vertex_reals, zero_default_face_reals;
+  // Whether a POLYGON_FACE_UINT8 layer has a default above 255 (grown_uint8_layer).
+  bool wide_u8_default = false;
 };
 
 // Whether `s` holds other values than a new slot of `layer` (bit for bit).
@@ -102,7 +104,10 @@ View view_of(const Node& m) {
         v.corner_uint_names.push_back(l.name);
         break;
       case LayerType::PolygonCornerReal: v.corner_real_layers.push_back(id); break;
-      case LayerType::PolygonFaceUint8: v.face_u8_layers.push_back(id); break;
+      case LayerType::PolygonFaceUint8:
+        v.face_u8_layers.push_back(id);
+        v.wide_u8_default = v.wide_u8_default || l.def_uint > 255;
+        break;
       case LayerType::PolygonFaceUint32:
         v.face_u32_layers.push_back(id);
         v.face_uint_names.push_back(l.name);
@@ -715,6 +720,33 @@ bool polygons_sparse(const View& v) {
   return highest(v.polygons).value_or(0) > next + 8;
 }
 
+// A POLYGON_FACE_UINT8 layer, at the lowest free layer id under a name no
+// layer has, with a default above 255 (which a UINT8 slot cannot hold: a
+// new slot holds the default's low byte). Made after a polygon far past the
+// others (polygons_sparse), its slots are one per live polygon
+// (LAYER-STACK-1). A node that took the ids its storage grew by for live
+// polygons has slots for them too, and a node that tells a subscriber only
+// the slots that differ from the layer's default (r6: the default as 32
+// bits against the slot's 8) shows them to every new subscriber: the
+// watching session of the exec wrapper, which subscribes each new layer,
+// as well as the wire route's late subscriber. With a default of 255 or
+// less r6 keeps those slots to itself (docs/verse_wire.md section 12).
+Gen<Command> grown_uint8_layer(const View& v) {
+  std::uint16_t id = 2;
+  for (std::uint16_t l : v.layers)
+    if (l == id) ++id;
+  std::string name = "grown";
+  for (const char* candidate : {"grown", "grown_2", "grown_3", "grown_4"})
+    if (std::find(v.names.begin(), v.names.end(), candidate) == v.names.end()) {
+      name = candidate;
+      break;
+    }
+  return gen::exec([id, name]() -> Command {
+    const std::uint32_t def = *gen::elementOf(std::vector<std::uint32_t>{256u, 257u, 511u, 0x10000u});
+    return Command{cmd::LayerCreate{id, name, static_cast<std::uint8_t>(LayerType::PolygonFaceUint8), def, 0.0}};
+  });
+}
+
 // A polygon delete (either form), or a pick, after a polygon far past the
 // others (polygons_sparse): the delete names an id near the highest live
 // one, below or above it, that no polygon has; POLY-DELETE-1 refuses it.
@@ -725,8 +757,13 @@ Gen<Command> delete_unused_polygon(const View& v) {
   const std::uint32_t h = highest(v.polygons).value_or(0);
   std::vector<std::uint32_t> unused;
   const std::uint32_t lo = h > 40 ? h - 40 : 0;
-  for (std::uint32_t id = lo; id < h + 32; ++id)
-    if (!std::binary_search(v.polygons.begin(), v.polygons.end(), id)) unused.push_back(id);
+  // (in 64 bits: a magnitude id near 2^32 made h + 32 wrap, and the list
+  // empty; 0xFFFFFFFF is "pick one", not an id)
+  const std::uint64_t end = std::min<std::uint64_t>(std::uint64_t{h} + 32, kNone32);
+  for (std::uint64_t id = lo; id < end; ++id)
+    if (!std::binary_search(v.polygons.begin(), v.polygons.end(), static_cast<std::uint32_t>(id)))
+      unused.push_back(static_cast<std::uint32_t>(id));
+  if (unused.empty()) return set_polygon(v);
   return gen::exec([pv = std::make_shared<const View>(v), unused]() -> Command {
     if (*uniform(0, 4) == 0) {
       Command c = *set_polygon(*pv);
@@ -956,11 +993,18 @@ Gen<Command> gen_command(const Node& model, Focus focus) {
     case Focus::Polygons:
       return rc::gen::weightedOneOf<Command>({W{6, L(set_vertex)}, W{2, L(delete_vertex)}, W{7, L(build_polygon)},
                                           W{v.polygons.empty() ? 1u : 4u, L(delete_polygon)}, W{1, L(create_layer)},
-                                          W{v.polygons.empty() ? 0u : 3u, L(value_step)},
+                                          // (more once sparse: the share the grown-storage steps take)
+                                          W{v.polygons.empty() ? 0u : polygons_sparse(v) ? 7u : 4u, L(value_step)},
                                           W{has_gap(v.polygons) || has_gap(v.vertices) ? 2u : 0u, L(write_dead)},
                                           W{v.polygons.empty() ? 0u : 2u, L(non_manifold_polygon)},
-                                          W{v.vertices.size() >= 3 && !polygons_sparse(v) ? 1u : 0u, L(sparse_polygon)},
-                                          W{polygons_sparse(v) ? 3u : 0u, L(delete_unused_polygon)}});
+                                          W{v.vertices.size() >= 3 && !polygons_sparse(v) ? 2u : 0u, L(sparse_polygon)},
+                                          W{polygons_sparse(v) ? 4u : 0u, L(delete_unused_polygon)},
+                                          // after it, a layer that shows slots of grown ids to a
+                                          // new subscriber; with delete_unused_polygon, both
+                                          // shapes on every route (issue 27 item 4: before, the
+                                          // wire route and the exec wrapper each reached the
+                                          // behaviour through one clause, by chance, at seed 2)
+                                          W{polygons_sparse(v) && !v.wide_u8_default ? 4u : 0u, L(grown_uint8_layer)}});
     case Focus::Creases: {
       // A crease rule is seen only in a state with all of: polygons, a
       // crease layer, a setting naming it, and unequal values in it (equal

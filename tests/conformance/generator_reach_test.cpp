@@ -36,6 +36,7 @@ struct Reach {
   std::map<std::string, std::map<std::string, long>> classes;  // group -> class -> commands
   std::map<std::string, long> alias_layers;                    // where the vertex-delete alias was sent
   std::map<std::string, long> dead_writes;                     // writes to elements deleted in the case
+  long wide_u8_after_growth = 0;  // UINT8 layers with a default above 255 made with a polygon past 31 live
 };
 
 // The group of an unsigned field, by name and width: element ids (vertex,
@@ -175,6 +176,10 @@ class CountingReference final : public Implementation {
                                                                    : "a layer of another type";
       ++reach_->alias_layers[where];
     }
+    if (const auto* l = std::get_if<cmd::LayerCreate>(&c);
+        l && l->type == static_cast<std::uint8_t>(LayerType::PolygonFaceUint8) && l->def_uint > 255 &&
+        !n.polygons().empty() && n.polygons().rbegin()->first >= 32 && n.polygons().rbegin()->first != kNone32)
+      ++reach_->wide_u8_after_growth;
     if (auto e = written_element(c)) {
       if (e->first && deleted_vertices_.count(e->second) && !n.vertices().count(e->second))
         ++reach_->dead_writes["vertex writes"];
@@ -212,6 +217,7 @@ const Reach& default_run_reach() {
     }
     for (const auto& [where, n] : r.alias_layers) std::printf("vertex-delete alias on %s: %ld\n", where.c_str(), n);
     for (const auto& [what, n] : r.dead_writes) std::printf("%s to an element deleted in the case: %ld\n", what.c_str(), n);
+    std::printf("UINT8 layers with a default above 255 made after a polygon past 31: %ld\n", r.wide_u8_after_growth);
     return r;
   }();
   return reach;
@@ -263,6 +269,16 @@ TEST(GeneratorReach, WritesReachElementsDeletedEarlierInTheCase) {
   EXPECT_GE(count_of(r.dead_writes, "vertex writes"), 200);
   EXPECT_GE(count_of(r.dead_writes, "face writes"), 15);
   EXPECT_GE(count_of(r.dead_writes, "other polygon writes"), 200);
+}
+
+// A UINT8 layer whose default is above 255, made after a polygon past id
+// 31 (polygons.stateful's grown_uint8_layer), so that a node that took
+// the grown ids for live polygons tells a new subscriber their slots on
+// every route (LAYER-STACK-1). Before: 7 (create_layer's defaults of 300
+// and magnitude values, after a sparse polygon, by chance); now 60. Seen to
+// fail (7) with its weight at 0.
+TEST(GeneratorReach, AWideUint8LayerComesAfterPolygonStorageGrew) {
+  EXPECT_GE(default_run_reach().wide_u8_after_growth, 25);
 }
 
 }  // namespace
