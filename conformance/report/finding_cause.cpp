@@ -76,11 +76,24 @@ std::optional<std::uint32_t> named_polygon(const ClauseOutcome& co, const Node& 
 // polygon above the first chunk was: an id the implementation took for a
 // live polygon when its storage grew ("unused" key).
 bool unused_polygon_live(const ClauseOutcome& co) {
+  // A shrunk counterexample is short; one of storage.scale's (10^4 to 10^5
+  // commands, not shrunk) is not looked at: each step below may scan the
+  // node's polygons.
+  if (co.program.commands.size() > 2000) return false;
   Node model;
   std::set<std::uint32_t> ever;
   for (const Command& c : co.program.commands) {
+    const std::size_t before = model.polygons().size();
     model.apply(c);
-    for (const auto& [id, slot] : model.polygons()) ever.insert(id);
+    // Only a create on layer 1 makes a polygon live: its own id, or for a
+    // pick ("0xFFFFFFFF") the one id new to the node.
+    const auto* p = std::get_if<cmd::PolygonSetCornerUint32>(&c);
+    if (!p || p->layer_id != Node::kPolygonLayer || p->v[0] == kNone32) continue;
+    if (p->polygon_id != kNone32) {
+      if (model.polygons().count(p->polygon_id)) ever.insert(p->polygon_id);
+    } else if (model.polygons().size() > before) {
+      for (const auto& [id, slot] : model.polygons()) ever.insert(id);
+    }
   }
   if (ever.empty() || *ever.rbegin() < kFirstChunk) return false;
   const auto p = named_polygon(co, model);
