@@ -96,5 +96,41 @@ TEST(FindingCause, DroppedCommandsOfOneKindAreOneGroup) {
   EXPECT_EQ(groups[0].clauses.size(), 2u);
 }
 
+// r6's grown polygon storage as the two routes showed it at seed 2 (issue
+// 27 item 4): the exec wrapper's POLY-DELETE-1 (a delete of polygon 503,
+// which no command created, applied) and the wire's LAYER-STACK-1 (a slot
+// of polygon 33, which no command created, sent) are one cause; a delete
+// applied on a fresh node (no polygon past the first 32) is not of it.
+// Seen to fail: without the "unused" key the two stood alone.
+TEST(FindingCause, UnusedPolygonIdsTakenForLiveOnesAreOneGroup) {
+  const std::vector<Command> stack{cmd::VertexSetXyzReal32{0, kNone32, -4, -4, -4}, cmd::VertexSetXyzReal32{0, 1, -4, -4, -4},
+                                   cmd::VertexSetXyzReal32{0, 2, -4, -4, -4},
+                                   cmd::PolygonSetCornerUint32{1, 32, {0, 1, 2, kNone32}},
+                                   cmd::LayerCreate{2, "crease", 130, 256, 0}};
+  const std::vector<Command> del{cmd::VertexSetXyzReal32{0, 0, -4, -4, -4}, cmd::VertexSetXyzReal32{0, 1, -4, -4, -4},
+                                 cmd::VertexSetXyzReal32{0, 8, -4, -4, -4},
+                                 cmd::PolygonSetCornerUint32{1, 511, {0, 1, 8, kNone32}}, cmd::PolygonDelete{503}};
+  RunResult run;
+  ClauseOutcome s = outcome("LAYER-STACK-1", stack.back(), "after `x` (done), snapshot: unexpected line: \"slot 2 33 0\".");
+  s.program = Program(stack);
+  s.finding->observed_line = "slot 2 33 0";
+  ClauseOutcome d = outcome("POLY-DELETE-1", del.back(), "`polygon_delete 503`: expected rejected NO_SUCH_POLYGON, observed ok.");
+  d.program = Program(del);
+  run.clauses.push_back(s);
+  run.clauses.push_back(d);
+  auto groups = group_findings_by_cause(run);
+  ASSERT_EQ(groups.size(), 1u);
+  EXPECT_EQ(groups[0].clauses, (std::vector<std::string>{"LAYER-STACK-1", "POLY-DELETE-1"}));
+  EXPECT_NE(groups[0].cause.find("no command created"), std::string::npos) << groups[0].cause;
+  // A delete applied with no polygon past the first 32 is a missing check,
+  // not grown storage: LAYER-STACK-1 then stands alone.
+  run.clauses[1].program = Program({cmd::PolygonDelete{40}});
+  EXPECT_TRUE(group_findings_by_cause(run).empty());
+  // Nor is a slot line of a polygon that was live.
+  run.clauses[1].program = Program(del);
+  run.clauses[0].finding->observed_line = "slot 2 32 0";
+  EXPECT_TRUE(group_findings_by_cause(run).empty());
+}
+
 }  // namespace
 }  // namespace vgc

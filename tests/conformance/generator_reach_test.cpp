@@ -37,6 +37,8 @@ struct Reach {
   std::map<std::string, std::map<std::string, long>> classes;  // group -> class -> commands
   std::map<std::string, long> alias_layers;                    // where the vertex-delete alias was sent
   std::map<std::string, long> dead_writes;                     // writes to elements deleted in the case
+  long picks_past_32 = 0;         // polygon picks with polygons 0 to 32 all live (a fill's)
+  long wide_u8_after_growth = 0;  // UINT8 layers with a default above 255 made with a polygon past 31 live
 };
 
 // The group of an unsigned field, by name and width: element ids (vertex,
@@ -176,6 +178,16 @@ class CountingReference final : public Implementation {
                                                                    : "a layer of another type";
       ++reach_->alias_layers[where];
     }
+    if (const auto* p = std::get_if<cmd::PolygonSetCornerUint32>(&c);
+        p && p->layer_id == Node::kPolygonLayer && p->polygon_id == kNone32 && p->v[0] != kNone32) {
+      bool run = n.polygons().size() >= 33;
+      for (std::uint32_t id = 0; run && id <= 32; ++id) run = n.polygons().count(id) > 0;
+      reach_->picks_past_32 += run;
+    }
+    if (const auto* l = std::get_if<cmd::LayerCreate>(&c);
+        l && l->type == static_cast<std::uint8_t>(LayerType::PolygonFaceUint8) && l->def_uint > 255 &&
+        !n.polygons().empty() && n.polygons().rbegin()->first >= 32 && n.polygons().rbegin()->first != kNone32)
+      ++reach_->wide_u8_after_growth;
     if (auto e = written_element(c)) {
       if (e->first && deleted_vertices_.count(e->second) && !n.vertices().count(e->second))
         ++reach_->dead_writes["vertex writes"];
@@ -206,6 +218,8 @@ const Reach& default_run_reach() {
     }
     for (const auto& [where, n] : r.alias_layers) std::printf("vertex-delete alias on %s: %ld\n", where.c_str(), n);
     for (const auto& [what, n] : r.dead_writes) std::printf("%s to an element deleted in the case: %ld\n", what.c_str(), n);
+    std::printf("polygon picks with polygons 0 to 32 live: %ld\n", r.picks_past_32);
+    std::printf("UINT8 layers with a default above 255 made after a polygon past 31: %ld\n", r.wide_u8_after_growth);
     return r;
   }();
   return reach;
@@ -257,6 +271,25 @@ TEST(GeneratorReach, WritesReachElementsDeletedEarlierInTheCase) {
   EXPECT_GE(count_of(r.dead_writes, "vertex writes"), 200);
   EXPECT_GE(count_of(r.dead_writes, "face writes"), 15);
   EXPECT_GE(count_of(r.dead_writes, "other polygon writes"), 200);
+}
+
+// A fill (ids.stateful's fill_polygon): polygon picks once ids 0 to 32 are
+// all live, where a node that grows its polygon storage in chunks of 32 and
+// takes the grown ids for live polygons skips them (r6; VERTEX-ID-PICK-1).
+// Before: 0 (no step made more than a few polygons in a case); now 28.
+// Seen to fail (0) with the fill's weights at 0.
+TEST(GeneratorReach, PolygonPicksComeAfterAFillOfIdsZeroTo32) {
+  EXPECT_GE(default_run_reach().picks_past_32, 20);
+}
+
+// A UINT8 layer whose default is above 255, made after a polygon past id
+// 31 (polygons.stateful's grown_uint8_layer), so that a node that took
+// the grown ids for live polygons tells a new subscriber their slots on
+// every route (LAYER-STACK-1). Before: 7 (create_layer's defaults of 300
+// and magnitude values, after a sparse polygon, by chance); now 60. Seen to
+// fail (7) with its weight at 0.
+TEST(GeneratorReach, AWideUint8LayerComesAfterPolygonStorageGrew) {
+  EXPECT_GE(default_run_reach().wide_u8_after_growth, 25);
 }
 
 }  // namespace
