@@ -20,6 +20,7 @@ most A-only first. The records must come from one build of the
 implementation (same counters, same PC table).
 """
 import os
+import signal
 import subprocess
 import sys
 
@@ -45,6 +46,7 @@ def union(dirs):
 
 
 def main():
+    signal.signal(signal.SIGPIPE, signal.SIG_DFL)  # `| head` ends it quietly
     args = sys.argv[1:]
     files = None
     if args[:1] == ["--files"]:
