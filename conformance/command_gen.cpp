@@ -1017,6 +1017,47 @@ Gen<Command> bone_layer(const View&) {
   });
 }
 
+// `make`'s generator for the shared View, built only if drawn (gen::lazy).
+Gen<Command> lazily(const std::shared_ptr<const View>& shared, Gen<Command> (*make)(const View&)) {
+  return rc::gen::lazy([shared, make] { return make(*shared); });
+}
+
+// One step of ids.stateful (Focus::Ids). A fill (fill_polygon) once started
+// takes every step until more than 32 polygons are live, then 7 in 8
+// (fill_delete the rest), up to 36 polygons; the rest of the case draws as
+// any other (at 48, BONE-ID-PICK-1 was unchecked against r6 at seed 4: the
+// fills took the long cases' steps, and its few judged picks with them). A
+// case draws up to size + 1 commands and a fill needs 3 vertices and 34
+// picks, so it starts only in cases of size 36 or more (in a shorter one it
+// could not get past 32 and would take the steps of the other pick rules):
+// there, while the node has no polygon, new vertices (until 3) and then the
+// fill's first pick take most steps, so that the fill's counterexample
+// holds little else (a pick's difference is a choice note, kept as the
+// shortest case that showed it, not shrunk).
+Gen<Command> ids_step(const std::shared_ptr<const View>& shared) {
+  const View& v = *shared;
+  const auto L = [&shared](Gen<Command> (*make)(const View&)) { return lazily(shared, make); };
+  using W = std::pair<std::size_t, Gen<Command>>;
+  if (filling(v) && v.polygons.size() < 36)
+    return rc::gen::weightedOneOf<Command>(
+        {W{7, L(fill_polygon)}, W{v.polygons.size() > 32 ? 1u : 0u, L(fill_delete)}});
+  const auto ids = [&](std::size_t grow, std::size_t fill) {
+    // (pick_bone 4, not 2: the long cases the fills take held most of the
+    // bone picks judged against r6, whose named bone ids diverge early;
+    // BONE-ID-PICK-1 was judged 2 to 9 times a run before, and at seed 4
+    // not at all with the fills)
+    return rc::gen::weightedOneOf<Command>({W{3, L(create_layer)}, W{4, L(set_vertex)}, W{3, L(build_polygon)},
+                                            W{2, L(create_bone)}, W{4, L(pick_bone)}, W{1, L(bone_layer)},
+                                            W{2, L(delete_vertex)}, W{grow, L(grow_vertex)},
+                                            W{fill, L(fill_polygon)}});
+  };
+  if (!v.polygons.empty()) return ids(0, 0);
+  const bool three = v.vertices.size() >= 3;
+  return rc::gen::withSize([plain = ids(0, 0), fill = ids(three ? 0 : 60, three ? 60 : 0)](int size) {
+    return size >= 36 ? fill : plain;
+  });
+}
+
 }  // namespace
 
 Gen<Command> gen_command(const Node& model, Focus focus) {
@@ -1027,9 +1068,7 @@ Gen<Command> gen_command(const Node& model, Focus focus) {
   // the View, was most of a fuzz_property_* run (docs/fuzzing.md).
   const auto shared = std::make_shared<const View>(view_of(model));
   const View& v = *shared;
-  const auto L = [&shared](Gen<Command> (*make)(const View&)) -> Gen<Command> {
-    return rc::gen::lazy([shared, make] { return make(*shared); });
-  };
+  const auto L = [&shared](Gen<Command> (*make)(const View&)) { return lazily(shared, make); };
   using W = std::pair<std::size_t, Gen<Command>>;
   switch (focus) {
     case Focus::Layers:
@@ -1101,38 +1140,8 @@ Gen<Command> gen_command(const Node& model, Focus focus) {
            // a value equal to its layer's default only as a number
            W{signed_zero_ready(v) ? 2u : 0u, L(signed_zero_write)}});
     }
-    case Focus::Ids: {
-      // A fill (fill_polygon) once started takes every step until more
-      // than 32 polygons are live, then 7 in 8 (fill_delete the rest), up
-      // to 36 polygons; the rest of the case draws as any other (at 48,
-      // BONE-ID-PICK-1 was unchecked against r6 at seed 4: the fills took
-      // the long cases' steps, and its few judged picks with them). A case draws up to size + 1 commands and a fill
-      // needs 3 vertices and 34 picks, so it starts only in cases of size
-      // 36 or more (in a shorter one it could not get past 32 and would
-      // take the steps of the other pick rules): there, while the node has
-      // no polygon, new vertices (until 3) and then the fill's first pick
-      // take most steps, so that the fill's counterexample holds little
-      // else (a pick's difference is a choice note, kept as the shortest
-      // case that showed it, not shrunk).
-      if (filling(v) && v.polygons.size() < 36)
-        return rc::gen::weightedOneOf<Command>(
-            {W{7, L(fill_polygon)}, W{v.polygons.size() > 32 ? 1u : 0u, L(fill_delete)}});
-      const auto ids = [&](std::size_t grow, std::size_t fill) {
-        // (pick_bone 4, not 2: the long cases the fills take held most of
-        // the bone picks judged against r6, whose named bone ids diverge
-        // early; BONE-ID-PICK-1 was judged 2 to 9 times a run before, and
-        // at seed 4 not at all with the fills)
-        return rc::gen::weightedOneOf<Command>({W{3, L(create_layer)}, W{4, L(set_vertex)}, W{3, L(build_polygon)},
-                                                W{2, L(create_bone)}, W{4, L(pick_bone)}, W{1, L(bone_layer)},
-                                                W{2, L(delete_vertex)}, W{grow, L(grow_vertex)},
-                                                W{fill, L(fill_polygon)}});
-      };
-      if (!v.polygons.empty()) return ids(0, 0);
-      const bool three = v.vertices.size() >= 3;
-      return rc::gen::withSize([plain = ids(0, 0), fill = ids(three ? 0 : 60, three ? 60 : 0)](int size) {
-        return size >= 36 ? fill : plain;
-      });
-    }
+    case Focus::Ids:
+      return ids_step(shared);
     case Focus::Anything:
       break;
   }
