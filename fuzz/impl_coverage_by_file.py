@@ -53,6 +53,17 @@ def bits(hexmap, n):
     return out
 
 
+def merge_records(records):
+    """The counters any of `records` reached, and the record with the most
+    function entries (whose PC table names them)."""
+    n = max(r["counters"] for r in records)
+    reached = [False] * n
+    for r in records:
+        for i, b in enumerate(bits(r["reached"], r["counters"])):
+            reached[i] = reached[i] or b
+    return reached, max(records, key=lambda r: len(r["functions"]))
+
+
 def main():
     if len(sys.argv) < 2:
         print(__doc__, file=sys.stderr)
@@ -64,12 +75,8 @@ def main():
         print("impl_coverage_by_file: no record with function entries under %s/implementation_coverage" % run,
               file=sys.stderr)
         return 2
-    n = max(r["counters"] for r in records)
-    reached = [False] * n
-    for r in records:
-        for i, b in enumerate(bits(r["reached"], r["counters"])):
-            reached[i] = reached[i] or b
-    base = max(records, key=lambda r: len(r["functions"]))
+    reached, base = merge_records(records)
+    n = len(reached)
     modules, functions = base["modules"], sorted(base["functions"])
     # Name each entry's file: one llvm-symbolizer per module.
     files = {}

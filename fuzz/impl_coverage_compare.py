@@ -25,7 +25,7 @@ import subprocess
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from impl_coverage_by_file import bits, read_record  # noqa: E402
+from impl_coverage_by_file import merge_records, read_record  # noqa: E402
 import glob  # noqa: E402
 
 
@@ -36,13 +36,7 @@ def union(dirs):
     recs = [r for r in recs if r["counters"]]
     if not recs:
         return None, None
-    n = max(r["counters"] for r in recs)
-    reached = [False] * n
-    for r in recs:
-        for i, b in enumerate(bits(r["reached"], r["counters"])):
-            reached[i] = reached[i] or b
-    base = max(recs, key=lambda r: len(r["functions"]))
-    return reached, base
+    return merge_records(recs)
 
 
 def main():
